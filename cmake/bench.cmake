@@ -1,0 +1,10 @@
+# Google Benchmark binaries (`make bench`): figures are printed, never asserted.
+find_package(benchmark QUIET)
+if(benchmark_FOUND)
+  add_executable(bench_core test/bench/bench_core.cpp)
+  target_link_libraries(bench_core amigobot_tracking_core benchmark::benchmark)
+  target_compile_options(bench_core PRIVATE ${AMIGOBOT_WARNINGS})
+  set_target_properties(bench_core PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
+else()
+  message(WARNING "Google Benchmark not found: `make bench` will not build (apt-get install libbenchmark-dev)")
+endif()

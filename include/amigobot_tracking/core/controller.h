@@ -1,0 +1,96 @@
+// The paper's controller, eqs. (3)-(13), as one object with a `step` per control period.
+//
+// Start and envelope rule: T(|e|/rho) is undefined for |e| >= rho. When the target starts
+// farther than max_error_ratio * rho_0, rho(0) is set to |e(0)| / max_error_ratio (the
+// robot goes, and rho then decays at the prescribed rate); whenever a discrete step leaves
+// |e| >= max_error_ratio * rho, rho is widened the same way. Both events are reported in
+// the output flags, so tests can check they did not happen where the theory says so.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/core/diamond.h"
+#include "amigobot_tracking/core/estimator.h"
+#include "amigobot_tracking/core/performance.h"
+#include "amigobot_tracking/core/types.h"
+
+namespace amigobot_tracking {
+namespace core {
+
+// A measurement of the target position p_d taken at `stamp` [s].
+struct TargetSample {
+  double stamp = 0.0;
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+};
+
+// Which constraints shaped this step's command.
+struct ActiveConstraints {
+  bool saturated = false;         // u != u_d: the diamond clipped the command
+  bool avoiding = false;          // at least one obstacle within the detection distance
+  bool conflict = false;          // e_hat^T u_c < 0: avoidance opposes tracking
+  bool rho_relaxed = false;       // the adaptive term of (13) widened rho this step
+  bool envelope_widened = false;  // rho widened to keep |e|/rho <= max_error_ratio
+};
+
+struct ControllerOutput {
+  bool valid = false;             // false: inputs were not usable; u is zero
+  std::string error;              // why not valid
+  Twist2 u;                       // applied command sigma(u_d), always inside the diamond
+  Twist2 u_d;                     // desired command (11)
+  double t = 0.0;
+  double rho = 0.0;
+  Eigen::Vector2d e = Eigen::Vector2d::Zero();       // p_d - p_r
+  Eigen::Vector2d p_r = Eigen::Vector2d::Zero();     // offset point
+  Eigen::Vector2d p_d = Eigen::Vector2d::Zero();     // target position used
+  Eigen::Vector2d v_hat = Eigen::Vector2d::Zero();   // estimated target velocity
+  Eigen::Vector2d u_c = Eigen::Vector2d::Zero();     // repulsive term (10), before k_o
+  Eigen::Vector2d u_r = Eigen::Vector2d::Zero();     // offset-point velocity (9)
+  int detected_obstacles = 0;
+  double min_clearance = 0.0;     // of the effective disk around p_r [m]; +inf if none
+  ActiveConstraints active;
+};
+
+class PerformanceController {
+ public:
+  // The config must be valid (validate() empty); the constructor does not check it.
+  explicit PerformanceController(const ControllerConfig& config = ControllerConfig());
+
+  // One control step at time t [s] (monotonic). The target sample updates the estimator
+  // when its stamp is newer than the last one. Non-finite pose or target, or time going
+  // backwards, gives valid = false and a zero command.
+  ControllerOutput step(double t, const Pose2& pose, const TargetSample& target,
+                        const std::vector<Disk>& obstacles);
+
+  // Forget all state: the next step starts afresh (estimator, rho, start rule).
+  void reset();
+  // Swap the parameters between steps, keeping the state (rho is re-clamped to its rules).
+  void setConfig(const ControllerConfig& config);
+
+  const ControllerConfig& config() const { return config_; }
+  const VelocityEstimator& estimator() const { return estimator_; }
+  const DiamondSet& diamond() const { return diamond_; }
+  bool started() const { return started_; }
+  double rho() const { return rho_; }
+  std::uint64_t envelopeWidenings() const { return envelope_widenings_; }
+
+ private:
+  ControllerOutput invalid(double t, std::string why) const;
+
+  ControllerConfig config_;
+  DiamondSet diamond_;
+  PerformanceGains gains_;
+  VelocityEstimator estimator_;
+  bool started_ = false;
+  double last_t_ = 0.0;
+  double rho_ = 0.0;
+  double conflict_ = 0.0;  // second argument of the min in (13), from the last step
+  std::uint64_t envelope_widenings_ = 0;
+};
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,43 @@
+// Parameters of the tracking controller, SI units. Defaults are the paper's real-robot
+// experiment (Section 5.3) on an AmigoBot; values the paper leaves open are marked.
+#pragma once
+
+#include <string>
+
+#include "amigobot_tracking/core/estimator.h"
+
+namespace amigobot_tracking {
+namespace core {
+
+struct ControllerConfig {
+  // Robot.
+  double robot_radius = 0.18;  // R [m]: AmigoBot body radius (ARIA RobotRadius 180 mm).
+  double offset = 0.3;         // r [m]: distance of the controlled point ahead of the centre.
+  double v_max = 0.3;          // v_bar [m/s]: diamond half-width in v.
+  double w_max = 0.8;          // w_bar [rad/s]: diamond half-width in w.
+  // Control law (9).
+  double k_d = 0.15;           // [m/s] tracking gain on T(|e|/rho).
+  double k_o = 1.0;            // [-] gain of the repulsive term u_c.
+  double lambda = 0.5;         // [1/s] prescribed decay rate of rho.
+  double rho_inf = 0.1;        // [m] steady-state tracking bound.
+  double rho_0 = 1.0;          // [m] rho(0) (not given for the experiment: our choice).
+  // Adaptive law (13).
+  double k_r = 0.5;            // [-] relaxation gain.
+  // Avoidance (10).
+  double delta = 0.25;         // [m] detection distance beyond contact (not given for the
+                               // experiment; Table 1's 0.016 m is too short at 20 Hz).
+  bool body_safe = true;       // effective radius R + r, so the body (not only p_r) stays clear.
+  double min_margin = 1e-3;    // [m] floor of the distance to contact in (10): keeps u_c finite.
+  // Envelope: |e|/rho is kept at or below this ratio by widening rho (start far away,
+  // discretisation); T is undefined at 1.
+  double max_error_ratio = 0.95;
+  EstimatorConfig estimator;
+
+  // The radius used in (10): R, or R + r when body_safe.
+  double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
+  // Empty when valid, otherwise "field: reason" naming the first bad field.
+  std::string validate() const;
+};
+
+}  // namespace core
+}  // namespace amigobot_tracking

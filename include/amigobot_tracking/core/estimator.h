@@ -1,0 +1,117 @@
+// Robust velocity estimator (tracking differentiator) of the paper, eqs. (3)-(4).
+//
+// Discretisation: one backward-Euler (implicit) step per measurement, over the time since
+// the previous sample, written in the unbounded coordinate eta = atanh(xi). Each stage
+// solves, for its new eta,
+//     rho(t+h) * tanh(eta) + h * a * eta * cosh(eta)^2 = c,   c = input - state
+// (the left side is odd and strictly increasing in eta, so the root is unique for every
+// c and every h > 0) and then sets state = input - rho(t+h) * tanh(eta). The bound
+// |input - state| < rho(t+h) therefore holds by construction for any step size and any
+// input, and xi = tanh(eta) stays strictly inside (-1, 1) (|eta| is capped at 18, where
+// tanh is still below 1 in double precision). Backward Euler is L-stable, which the
+// stiff dynamics need (the paper uses ode15s): explicit schemes blow up at 10 Hz.
+// Convergence to the continuous solution is first order in h.
+//
+// Stage 1 tracks the sample chi with z1; its rate over the step, z1dot = (z1' - z1)/h,
+// is the input of stage 2, whose state z2 is the velocity estimate.
+//
+// Jumps: a sample farther than jump_threshold from the prediction chi_prev + z2 h (a SLAM
+// relocalisation) translates z1 by the jump instead of differentiating it, so the
+// velocity estimate does not spike; the jump is counted.
+// Late samples (stamp not after the last one) are ignored and counted.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace amigobot_tracking {
+namespace core {
+
+struct EstimatorConfig {
+  double a1 = 1.0;              // [1/s] stage-1 gain.
+  double a2 = 1.0;              // [1/s] stage-2 gain.
+  double lambda_o = 30.0;       // [1/s] decay rate of the estimator's bounds rho_oi(t).
+  double rho_o = 0.01;          // steady-state bound of both stages ([m], [m/s]).
+  double rho_o0 = 1.0;          // initial bound rho_oi(0) of both stages.
+  double jump_threshold = 0.5;  // [m] a sample this far from the prediction is a jump; 0 = off.
+
+  // Empty when valid, otherwise "field: reason" for the first bad field.
+  std::string validate() const;
+};
+
+// rho_o(t) = (rho_o(0) - rho_o) exp(-lambda_o t) + rho_o.
+double estimatorBound(const EstimatorConfig& config, double elapsed);
+
+// One implicit step of a stage: returns eta solving rho*tanh(eta) + k*eta*cosh(eta)^2 = c
+// with k = h * gain > 0. Pure; exposed for tests.
+double solveImplicitStage(double c, double rho, double k, double eta_guess);
+
+// Maximum |eta| used (tanh(18) < 1 in double precision).
+constexpr double kMaxEta = 18.0;
+
+// Estimator of one scalar signal and its derivative.
+class AxisEstimator {
+ public:
+  explicit AxisEstimator(const EstimatorConfig& config = EstimatorConfig());
+
+  // Starts at sample chi taken at time t: z1 = chi, z2 = velocity_guess.
+  void reset(double t, double chi, double velocity_guess = 0.0);
+  // Feeds one sample; returns false (and changes nothing) when it is not newer than the
+  // last one or not finite. The first sample resets the estimator.
+  bool update(double t, double chi);
+
+  bool initialized() const { return initialized_; }
+  double position() const { return z1_; }        // z1
+  double velocity() const { return z2_; }        // z2
+  double stage1Rate() const { return z1_rate_; } // z1dot over the last step
+  double xi1() const;
+  double xi2() const;
+  double lastStamp() const { return last_t_; }
+  double bound(double t) const { return estimatorBound(config_, t - t0_); }  // rho_o1 = rho_o2
+  std::uint64_t jumps() const { return jumps_; }
+  std::uint64_t rejectedSamples() const { return rejected_; }
+  const EstimatorConfig& config() const { return config_; }
+
+ private:
+  EstimatorConfig config_;
+  bool initialized_ = false;
+  double t0_ = 0.0;
+  double last_t_ = 0.0;
+  double last_chi_ = 0.0;
+  double z1_ = 0.0;
+  double z2_ = 0.0;
+  double z1_rate_ = 0.0;
+  double eta1_ = 0.0;
+  double eta2_ = 0.0;
+  std::uint64_t jumps_ = 0;
+  std::uint64_t rejected_ = 0;
+};
+
+// The 2-D wrapper: one AxisEstimator for x and one for y of the target position.
+class VelocityEstimator {
+ public:
+  explicit VelocityEstimator(const EstimatorConfig& config = EstimatorConfig());
+
+  void reset(double t, const Eigen::Vector2d& position,
+             const Eigen::Vector2d& velocity_guess = Eigen::Vector2d::Zero());
+  bool update(double t, const Eigen::Vector2d& position);
+
+  bool initialized() const { return x_.initialized(); }
+  Eigen::Vector2d position() const { return {x_.position(), y_.position()}; }
+  Eigen::Vector2d velocity() const { return {x_.velocity(), y_.velocity()}; }
+  double lastStamp() const { return x_.lastStamp(); }
+  const AxisEstimator& axisX() const { return x_; }
+  const AxisEstimator& axisY() const { return y_; }
+  std::uint64_t jumps() const { return x_.jumps() + y_.jumps(); }
+  std::uint64_t rejectedSamples() const { return rejected_; }
+
+ private:
+  AxisEstimator x_;
+  AxisEstimator y_;
+  std::uint64_t rejected_ = 0;
+};
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,62 @@
+// Reference trajectories p_d(t) with their exact velocity, for the simulator, the
+// reference publisher and tests.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace amigobot_tracking {
+namespace core {
+
+struct ReferenceState {
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m]
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  // [m/s]
+};
+
+class Reference {
+ public:
+  virtual ~Reference() = default;
+  virtual ReferenceState at(double t) const = 0;
+};
+
+// Rose curve of the paper's Section 5.2: x = A cos(k w t) cos(w t), y = A cos(k w t) sin(w t)
+// with w = 1 / time_scale [rad/s].
+class RoseReference : public Reference {
+ public:
+  RoseReference(double amplitude, double k, double time_scale);
+  ReferenceState at(double t) const override;
+
+ private:
+  double amplitude_, k_, rate_;
+};
+
+// Circle of given centre and radius, counter-clockwise, one turn per period [s],
+// starting at centre + (radius, 0).
+class CircleReference : public Reference {
+ public:
+  CircleReference(const Eigen::Vector2d& center, double radius, double period);
+  ReferenceState at(double t) const override;
+
+ private:
+  Eigen::Vector2d center_;
+  double radius_, rate_;
+};
+
+// Natural cubic spline through waypoints (2 or more), parametrised by time with knots
+// spaced by chord length over `duration`; holds the last point after the end.
+class SplineReference : public Reference {
+ public:
+  SplineReference(const std::vector<Eigen::Vector2d>& waypoints, double duration);
+  ReferenceState at(double t) const override;
+
+ private:
+  std::vector<double> knots_;
+  std::vector<Eigen::Vector2d> points_;
+  std::vector<Eigen::Vector2d> second_;  // second derivatives at the knots
+};
+
+}  // namespace core
+}  // namespace amigobot_tracking

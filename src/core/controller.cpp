@@ -1,0 +1,114 @@
+#include "amigobot_tracking/core/controller.h"
+
+#include <cmath>
+#include <utility>
+
+#include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/offset_point.h"
+
+namespace amigobot_tracking {
+namespace core {
+namespace {
+
+PerformanceGains gainsOf(const ControllerConfig& config) {
+  return {config.lambda, config.rho_inf, config.k_r};
+}
+
+}  // namespace
+
+PerformanceController::PerformanceController(const ControllerConfig& config)
+    : config_(config),
+      diamond_(config.v_max, config.w_max),
+      gains_(gainsOf(config)),
+      estimator_(config.estimator) {}
+
+void PerformanceController::reset() {
+  estimator_ = VelocityEstimator(config_.estimator);
+  started_ = false;
+  rho_ = 0.0;
+  conflict_ = 0.0;
+}
+
+void PerformanceController::setConfig(const ControllerConfig& config) {
+  const VelocityEstimator kept = estimator_;
+  config_ = config;
+  diamond_ = DiamondSet(config.v_max, config.w_max);
+  gains_ = gainsOf(config);
+  estimator_ = VelocityEstimator(config.estimator);
+  if (kept.initialized()) estimator_.reset(kept.lastStamp(), kept.position(), kept.velocity());
+}
+
+ControllerOutput PerformanceController::invalid(double t, std::string why) const {
+  ControllerOutput out;
+  out.t = t;
+  out.rho = rho_;
+  out.error = std::move(why);
+  return out;
+}
+
+ControllerOutput PerformanceController::step(double t, const Pose2& pose, const TargetSample& target,
+                                             const std::vector<Disk>& obstacles) {
+  if (!std::isfinite(t)) return invalid(t, "time is not finite");
+  if (!pose.isFinite()) return invalid(t, "robot pose is not finite");
+  if (!std::isfinite(target.stamp) || !target.position.allFinite()) return invalid(t, "target is not finite");
+  if (started_ && t < last_t_) return invalid(t, "time went backwards");
+
+  if (!estimator_.initialized() || target.stamp > estimator_.lastStamp()) {
+    estimator_.update(target.stamp, target.position);
+  }
+
+  ControllerOutput out;
+  out.valid = true;
+  out.t = t;
+  out.p_r = offsetPoint(pose, config_.offset);
+  out.p_d = target.position;
+  out.e = out.p_d - out.p_r;
+  out.v_hat = estimator_.velocity();
+  const double error_norm = out.e.norm();
+
+  // rho: start rule, then (13) over the elapsed time with the last step's conflict.
+  if (!started_) {
+    started_ = true;
+    rho_ = config_.rho_0;
+  } else if (t > last_t_) {
+    rho_ = rhoStep(gains_, rho_, conflict_, t - last_t_);
+    out.active.rho_relaxed = conflict_ < 0.0;
+  }
+  last_t_ = t;
+  if (error_norm >= config_.max_error_ratio * rho_) {
+    rho_ = error_norm / config_.max_error_ratio;
+    out.active.envelope_widened = true;
+    ++envelope_widenings_;
+  }
+  out.rho = rho_;
+
+  const double ratio = error_norm / rho_;
+  const double t_ratio = transformT(ratio);
+  const Eigen::Vector2d e_hat = error_norm > 1e-12 ? Eigen::Vector2d(out.e / error_norm) : Eigen::Vector2d::Zero();
+
+  const Eigen::Vector2d heading(std::cos(pose.theta), std::sin(pose.theta));
+  const AvoidanceResult avoidance =
+      repulsiveTerm(out.p_r, obstacles, config_.effectiveRadius(), config_.delta, heading, config_.min_margin);
+  out.u_c = avoidance.u_c;
+  out.detected_obstacles = avoidance.detected;
+  out.min_clearance = avoidance.min_clearance;
+  out.active.avoiding = avoidance.detected > 0;
+
+  // (9): u_r = k_d T e_hat + v_hat + lambda (rho - rho_inf) e / rho + k_o u_c.
+  out.u_r = config_.k_d * t_ratio * e_hat + out.v_hat + config_.lambda * (rho_ - config_.rho_inf) * out.e / rho_ +
+            config_.k_o * out.u_c;
+  out.u_d = offsetVelocityToTwist(out.u_r, pose.theta, config_.offset);  // (11)
+  const auto saturated = diamond_.saturate(out.u_d);                     // (12)
+  if (!saturated) return invalid(t, "desired command is not finite");
+  out.u = *saturated;
+
+  const double alignment = e_hat.dot(out.u_c);
+  const double clipping = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega);
+  out.active.saturated = clipping > 0.0;
+  out.active.conflict = alignment < 0.0;
+  conflict_ = t_ratio * alignment - clipping;
+  return out;
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,134 @@
+#include "amigobot_tracking/core/estimator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace amigobot_tracking {
+namespace core {
+namespace {
+
+bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
+
+}  // namespace
+
+std::string EstimatorConfig::validate() const {
+  std::ostringstream err;
+  if (!positiveFinite(a1)) err << "a1 must be > 0, got " << a1;
+  else if (!positiveFinite(a2)) err << "a2 must be > 0, got " << a2;
+  else if (!positiveFinite(lambda_o)) err << "lambda_o must be > 0, got " << lambda_o;
+  else if (!positiveFinite(rho_o)) err << "rho_o must be > 0, got " << rho_o;
+  else if (!std::isfinite(rho_o0) || rho_o0 < rho_o)
+    err << "rho_o0 must be >= rho_o = " << rho_o << ", got " << rho_o0;
+  else if (!std::isfinite(jump_threshold) || jump_threshold < 0.0)
+    err << "estimator jump_threshold must be >= 0 (0 = off), got " << jump_threshold;
+  return err.str();
+}
+
+double estimatorBound(const EstimatorConfig& config, double elapsed) {
+  return (config.rho_o0 - config.rho_o) * std::exp(-config.lambda_o * std::max(0.0, elapsed)) +
+         config.rho_o;
+}
+
+double solveImplicitStage(double c, double rho, double k, double eta_guess) {
+  if (c == 0.0) return 0.0;
+  // g is odd: solve g(eta) = |c| on eta >= 0 and restore the sign.
+  const double sign = c > 0.0 ? 1.0 : -1.0;
+  const double target = std::abs(c);
+  struct Eval {
+    double g, dg;
+  };
+  auto eval = [&](double eta) {
+    const double e2 = std::exp(2.0 * eta);
+    const double inv_e2 = 1.0 / e2;
+    const double cosh2 = 0.25 * (e2 + 2.0 + inv_e2);
+    return Eval{rho * (e2 - 1.0) / (e2 + 1.0) + k * eta * cosh2 - target,
+                rho / cosh2 + k * (cosh2 + eta * 0.5 * (e2 - inv_e2))};
+  };
+  // Bracket: k*eta <= g(eta) gives eta <= c/k; cosh^2 >= e^(2 eta)/4 gives
+  // eta <= ln(4c/k)/2 whenever eta >= 1. Past kMaxEta the root is capped.
+  double lo = 0.0;
+  double hi = std::min(target / k, std::max(1.0, 0.5 * std::log(4.0 * target / k)));
+  if (hi >= kMaxEta) {
+    if (eval(kMaxEta).g <= 0.0) return sign * kMaxEta;
+    hi = kMaxEta;
+  }
+  double eta = std::clamp(sign * eta_guess, lo, hi);
+  for (int iter = 0; iter < 60; ++iter) {
+    const Eval v = eval(eta);
+    if (v.g > 0.0) hi = eta; else lo = eta;
+    double next = eta - v.g / v.dg;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect.
+    const bool converged = std::abs(next - eta) <= 1e-13 * (1.0 + eta) || hi - lo <= 1e-15;
+    eta = next;
+    if (converged) break;
+  }
+  return sign * eta;
+}
+
+AxisEstimator::AxisEstimator(const EstimatorConfig& config) : config_(config) {}
+
+void AxisEstimator::reset(double t, double chi, double velocity_guess) {
+  initialized_ = true;
+  t0_ = last_t_ = t;
+  z1_ = last_chi_ = chi;
+  z2_ = velocity_guess;
+  z1_rate_ = velocity_guess;
+  eta1_ = eta2_ = 0.0;
+}
+
+bool AxisEstimator::update(double t, double chi) {
+  if (!std::isfinite(t) || !std::isfinite(chi)) {
+    ++rejected_;
+    return false;
+  }
+  if (!initialized_) {
+    reset(t, chi);
+    return true;
+  }
+  const double h = t - last_t_;
+  if (!(h > 0.0)) {
+    ++rejected_;
+    return false;
+  }
+  const double rho = bound(t);
+  const double predicted = last_chi_ + z2_ * h;
+  if (config_.jump_threshold > 0.0 && std::abs(chi - predicted) > config_.jump_threshold) {
+    z1_ += chi - predicted;  // relocalisation: move with the jump (error kept), do not differentiate it
+    ++jumps_;
+  }
+  last_chi_ = chi;
+  // Stage 1: z1 follows chi.
+  eta1_ = solveImplicitStage(chi - z1_, rho, h * config_.a1, eta1_);
+  const double z1_next = chi - rho * std::tanh(eta1_);
+  z1_rate_ = (z1_next - z1_) / h;
+  z1_ = z1_next;
+  // Stage 2: z2 follows z1's rate.
+  eta2_ = solveImplicitStage(z1_rate_ - z2_, rho, h * config_.a2, eta2_);
+  z2_ = z1_rate_ - rho * std::tanh(eta2_);
+  last_t_ = t;
+  return true;
+}
+
+double AxisEstimator::xi1() const { return std::tanh(eta1_); }
+double AxisEstimator::xi2() const { return std::tanh(eta2_); }
+
+VelocityEstimator::VelocityEstimator(const EstimatorConfig& config) : x_(config), y_(config) {}
+
+void VelocityEstimator::reset(double t, const Eigen::Vector2d& position, const Eigen::Vector2d& velocity_guess) {
+  x_.reset(t, position.x(), velocity_guess.x());
+  y_.reset(t, position.y(), velocity_guess.y());
+}
+
+bool VelocityEstimator::update(double t, const Eigen::Vector2d& position) {
+  if (!std::isfinite(t) || !position.allFinite() || (x_.initialized() && !(t > x_.lastStamp()))) {
+    ++rejected_;  // reject the sample as a whole so both axes stay in step
+    return false;
+  }
+  const bool ok_x = x_.update(t, position.x());
+  const bool ok_y = y_.update(t, position.y());
+  return ok_x && ok_y;
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking
