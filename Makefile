@@ -26,8 +26,9 @@ build: deps $(WS)/src/amigobot_tracking
 test: build
 	rm -rf $(RESULTS)
 	$(CATKIN) tests
-	-$(CATKIN) run_tests
-	@$(ROOT)/scripts/count_test_results.py $(RESULTS)
+	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.
+	$(CATKIN) run_tests -k; echo $$? > $(WS)/build/run_tests.rc
+	@$(ROOT)/scripts/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
 
 demo: build
 	$(WS)/devel/lib/amigobot_tracking/closed_loop_demo

@@ -17,3 +17,13 @@ amigobot_add_unit_test(test_controller_config test/unit/test_controller_config.c
 target_link_libraries(test_controller_config amigobot_tracking_core)
 amigobot_add_unit_test(test_closed_loop test/unit/test_closed_loop.cpp)
 target_link_libraries(test_closed_loop amigobot_tracking_core)
+
+# A command run as one JUnit test case (scripts/junit_check.py writes the XML the counter reads).
+# catkin's runner takes the command as one string.
+function(amigobot_add_check name)
+  string(REPLACE ";" " " command "${ARGN}")
+  catkin_run_tests_target("check" ${name} "check-${name}.xml"
+    COMMAND "/usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/junit_check.py --name ${name} --xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/check-${name}.xml -- ${command}")
+endfunction()
+
+amigobot_add_check(urdf_parses check_urdf ${PROJECT_SOURCE_DIR}/urdf/amigobot.urdf)

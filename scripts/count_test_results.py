@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Counts test cases in JUnit XML files and prints one line `N passed, N failed`.
 
-Usage: count_test_results.py RESULTS_DIR
-Exits 1 when any test failed or errored, or when no test ran at all.
+Usage: count_test_results.py RESULTS_DIR [--runner-exit CODE]
+A non-zero CODE (the test runner itself failed, e.g. a test target did not start) counts as
+one more failure. Exits 1 when any test failed or errored, or when no test ran at all.
 """
 import glob
 import os
@@ -33,9 +34,17 @@ def count(results_dir):
 
 
 def main():
-    if len(sys.argv) != 2:
+    args = sys.argv[1:]
+    runner_exit = 0
+    if len(args) == 3 and args[1] == "--runner-exit":
+        runner_exit = int(args[2])
+        args = args[:1]
+    if len(args) != 1:
         sys.exit(__doc__)
-    passed, failed, skipped = count(sys.argv[1])
+    passed, failed, skipped = count(args[0])
+    if runner_exit:
+        print(f"FAILED: the test runner exited with {runner_exit}: a test did not run (see the log above)")
+        failed += 1
     line = f"{passed} passed, {failed} failed"
     if skipped:
         line += f", {skipped} skipped"
