@@ -27,3 +27,5 @@ function(amigobot_add_check name)
 endfunction()
 
 amigobot_add_check(urdf_parses check_urdf ${PROJECT_SOURCE_DIR}/urdf/amigobot.urdf)
+amigobot_add_unit_test(test_beyond_paper test/unit/test_beyond_paper.cpp)
+target_link_libraries(test_beyond_paper amigobot_tracking_core)

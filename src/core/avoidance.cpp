@@ -6,25 +6,97 @@
 
 namespace amigobot_tracking {
 namespace core {
+namespace {
+
+// One obstacle as seen from p_r: the outward vector (floored away from zero), its distance
+// and the margin to contact.
+struct Relative {
+  Eigen::Vector2d away;  // p_r - centre
+  double distance;
+  double margin;         // distance - contact, floored at min_margin
+  double clearance;      // distance - contact, unfloored
+};
+
+Relative relativeTo(const Eigen::Vector2d& p_r, const Disk& obstacle, double robot_radius,
+                    const Eigen::Vector2d& heading_hint, double min_margin) {
+  Relative rel{p_r - obstacle.center, 0.0, 0.0, 0.0};
+  rel.distance = rel.away.norm();
+  const double contact = robot_radius + obstacle.radius;
+  rel.clearance = rel.distance - contact;
+  if (rel.distance < 1e-9) {  // on the centre: any direction is as good; back off
+    rel.away = -heading_hint.normalized() * 1e-9;
+    rel.distance = 1e-9;
+  }
+  rel.margin = std::max(rel.clearance, min_margin);
+  return rel;
+}
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// (10), and with `moving` the obstacle-velocity extension (see avoidance.h).
+AvoidanceResult accumulateRepulsion(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
+                                    double robot_radius, double delta, double horizon, bool moving,
+                                    const Eigen::Vector2d& heading_hint, double min_margin) {
+  AvoidanceResult result;
+  result.min_clearance = std::numeric_limits<double>::infinity();
+  for (const Disk& obstacle : obstacles) {
+    const Relative rel = relativeTo(p_r, obstacle, robot_radius, heading_hint, min_margin);
+    result.min_clearance = std::min(result.min_clearance, rel.clearance);
+    const Eigen::Vector2d normal = rel.away / rel.distance;
+    const double approach = moving ? std::max(0.0, obstacle.velocity.dot(normal)) : 0.0;
+    const double band = delta + approach * horizon;
+    if (rel.clearance > band) continue;
+    ++result.detected;
+    result.u_c += (1.0 / rel.margin - 1.0 / band) * rel.away;
+    if (moving) result.u_c += approach * normal;
+  }
+  return result;
+}
+
+}  // namespace
 
 AvoidanceResult repulsiveTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
                               double robot_radius, double delta, const Eigen::Vector2d& heading_hint,
                               double min_margin) {
-  AvoidanceResult result;
-  result.min_clearance = std::numeric_limits<double>::infinity();
+  return accumulateRepulsion(p_r, obstacles, robot_radius, delta, 0.0, false, heading_hint, min_margin);
+}
+
+AvoidanceResult movingRepulsiveTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
+                                    double robot_radius, double delta, double horizon,
+                                    const Eigen::Vector2d& heading_hint, double min_margin) {
+  return accumulateRepulsion(p_r, obstacles, robot_radius, delta, horizon, true, heading_hint, min_margin);
+}
+
+TangentialResult tangentialTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
+                                double robot_radius, double delta, const Eigen::Vector2d& e_hat,
+                                int previous_side, double hysteresis, double min_margin) {
+  struct Opposing {
+    Eigen::Vector2d normal;
+    double weight;  // w_j |u_cj|
+  };
+  std::vector<Opposing> opposing;
+  double weighted_sine = 0.0, total_weight = 0.0;
   for (const Disk& obstacle : obstacles) {
-    Eigen::Vector2d away = p_r - obstacle.center;
-    double distance = away.norm();
-    const double contact = robot_radius + obstacle.radius;
-    result.min_clearance = std::min(result.min_clearance, distance - contact);
-    if (distance > delta + contact) continue;
-    ++result.detected;
-    if (distance < 1e-9) {  // on the centre: any direction is as good; back off
-      away = -heading_hint.normalized() * 1e-9;
-      distance = 1e-9;
-    }
-    const double margin = std::max(distance - contact, min_margin);
-    result.u_c += (1.0 / margin - 1.0 / delta) * away;
+    const Relative rel = relativeTo(p_r, obstacle, robot_radius, -e_hat, min_margin);
+    if (rel.clearance > delta) continue;
+    const Eigen::Vector2d normal = rel.away / rel.distance;
+    const double opposition = std::max(0.0, -e_hat.dot(normal));
+    if (opposition <= 0.0) continue;
+    const double weight = opposition * (1.0 / rel.margin - 1.0 / delta) * rel.distance;
+    opposing.push_back({normal, weight});
+    weighted_sine += weight * cross(normal, e_hat);  // > 0: the target lies counter-clockwise
+    total_weight += weight;
+  }
+  TangentialResult result;
+  if (opposing.empty() || !(total_weight > 0.0)) return result;  // no conflict: released
+  const double sine = weighted_sine / total_weight;
+  if (previous_side != 0 && !(sine * previous_side < -hysteresis)) {
+    result.side = previous_side;
+  } else {
+    result.side = sine < 0.0 ? -1 : 1;  // exactly symmetric: counter-clockwise
+  }
+  for (const Opposing& o : opposing) {
+    result.u_t += o.weight * result.side * Eigen::Vector2d(-o.normal.y(), o.normal.x());
   }
   return result;
 }

@@ -5,6 +5,7 @@
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/unicycle.h"
 
 namespace amigobot_tracking {
 namespace core {
@@ -27,6 +28,8 @@ void PerformanceController::reset() {
   started_ = false;
   rho_ = 0.0;
   conflict_ = 0.0;
+  passing_side_ = 0;
+  last_u_ = Twist2();
 }
 
 void PerformanceController::setConfig(const ControllerConfig& config) {
@@ -38,7 +41,8 @@ void PerformanceController::setConfig(const ControllerConfig& config) {
   if (kept.initialized()) estimator_.reset(kept.lastStamp(), kept.position(), kept.velocity());
 }
 
-ControllerOutput PerformanceController::invalid(double t, std::string why) const {
+ControllerOutput PerformanceController::invalid(double t, std::string why) {
+  last_u_ = Twist2();  // the caller commands zero
   ControllerOutput out;
   out.t = t;
   out.rho = rho_;
@@ -48,8 +52,13 @@ ControllerOutput PerformanceController::invalid(double t, std::string why) const
 
 ControllerOutput PerformanceController::step(double t, const Pose2& pose, const TargetSample& target,
                                              const std::vector<Disk>& obstacles) {
+  return stepStamped(t, PoseSample{t, pose}, target, obstacles);
+}
+
+ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& robot, const TargetSample& target,
+                                                    const std::vector<Disk>& obstacles) {
   if (!std::isfinite(t)) return invalid(t, "time is not finite");
-  if (!pose.isFinite()) return invalid(t, "robot pose is not finite");
+  if (!robot.pose.isFinite() || !std::isfinite(robot.stamp)) return invalid(t, "robot pose is not finite");
   if (!std::isfinite(target.stamp) || !target.position.allFinite()) return invalid(t, "target is not finite");
   if (started_ && t < last_t_) return invalid(t, "time went backwards");
 
@@ -57,11 +66,17 @@ ControllerOutput PerformanceController::step(double t, const Pose2& pose, const 
     estimator_.update(target.stamp, target.position);
   }
 
+  // Measurement ages, extrapolated over at most max_prediction seconds.
+  auto age = [&](double stamp) { return std::clamp(t - stamp, 0.0, config_.max_prediction); };
+  const Pose2 pose = config_.compensate_pose_age ? integrateUnicycle(robot.pose, last_u_, age(robot.stamp))
+                                                 : robot.pose;
+
   ControllerOutput out;
   out.valid = true;
   out.t = t;
   out.p_r = offsetPoint(pose, config_.offset);
   out.p_d = target.position;
+  if (config_.predict_target) out.p_d += estimator_.velocity() * age(target.stamp);
   out.e = out.p_d - out.p_r;
   out.v_hat = estimator_.velocity();
   const double error_norm = out.e.norm();
@@ -87,20 +102,32 @@ ControllerOutput PerformanceController::step(double t, const Pose2& pose, const 
   const Eigen::Vector2d e_hat = error_norm > 1e-12 ? Eigen::Vector2d(out.e / error_norm) : Eigen::Vector2d::Zero();
 
   const Eigen::Vector2d heading(std::cos(pose.theta), std::sin(pose.theta));
+  const double radius = config_.effectiveRadius();
   const AvoidanceResult avoidance =
-      repulsiveTerm(out.p_r, obstacles, config_.effectiveRadius(), config_.delta, heading, config_.min_margin);
+      config_.moving_obstacles
+          ? movingRepulsiveTerm(out.p_r, obstacles, radius, config_.delta, config_.obstacle_horizon, heading,
+                                config_.min_margin)
+          : repulsiveTerm(out.p_r, obstacles, radius, config_.delta, heading, config_.min_margin);
   out.u_c = avoidance.u_c;
+  if (config_.tangential_avoidance) {
+    const TangentialResult tangential = tangentialTerm(out.p_r, obstacles, radius, config_.delta, e_hat,
+                                                       passing_side_, config_.tangential_hysteresis,
+                                                       config_.min_margin);
+    passing_side_ = tangential.side;
+    out.u_t = config_.k_t * tangential.u_t;
+  }
   out.detected_obstacles = avoidance.detected;
   out.min_clearance = avoidance.min_clearance;
   out.active.avoiding = avoidance.detected > 0;
 
   // (9): u_r = k_d T e_hat + v_hat + lambda (rho - rho_inf) e / rho + k_o u_c.
   out.u_r = config_.k_d * t_ratio * e_hat + out.v_hat + config_.lambda * (rho_ - config_.rho_inf) * out.e / rho_ +
-            config_.k_o * out.u_c;
+            config_.k_o * (out.u_c + out.u_t);
   out.u_d = offsetVelocityToTwist(out.u_r, pose.theta, config_.offset);  // (11)
   const auto saturated = diamond_.saturate(out.u_d);                     // (12)
   if (!saturated) return invalid(t, "desired command is not finite");
   out.u = *saturated;
+  last_u_ = out.u;
 
   const double alignment = e_hat.dot(out.u_c);
   const double clipping = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega);

@@ -32,6 +32,14 @@ std::string ControllerConfig::validate() const {
     err << "max_error_ratio must be in (0, 1), got " << max_error_ratio;
   } else if (min_margin >= delta) {
     err << "min_margin must be < delta = " << delta << ", got " << min_margin;
+  } else if (!(std::isfinite(k_t) && k_t >= 0.0)) {
+    err << "k_t must be a finite number >= 0, got " << k_t;
+  } else if (!(tangential_hysteresis >= 0.0 && tangential_hysteresis < 1.0)) {
+    err << "tangential_hysteresis must be in [0, 1), got " << tangential_hysteresis;
+  } else if (!(std::isfinite(obstacle_horizon) && obstacle_horizon >= 0.0)) {
+    err << "obstacle_horizon must be a finite number >= 0, got " << obstacle_horizon;
+  } else if (!(std::isfinite(max_prediction) && max_prediction >= 0.0)) {
+    err << "max_prediction must be a finite number >= 0, got " << max_prediction;
   } else {
     return estimator.validate();
   }

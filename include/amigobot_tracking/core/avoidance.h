@@ -27,6 +27,35 @@ AvoidanceResult repulsiveTerm(const Eigen::Vector2d& p_r, const std::vector<Disk
                               double robot_radius, double delta, const Eigen::Vector2d& heading_hint,
                               double min_margin = 1e-4);
 
+// Moving obstacles (beyond the paper). With a_j = max(0, v_j . n_j) the speed at which
+// obstacle j approaches p_r along n_j = (p_r - p_j)/|p_r - p_j|, the term for j becomes
+//     [1/(d_j) - 1/delta_j] (p_r - p_j) + a_j n_j,   delta_j = delta + a_j * horizon,
+// detected when d_j <= delta_j (d_j = distance to contact). Why: in the obstacle's frame
+// the distance changes at n_j^T (p_r' - v_j); the feed-forward a_j n_j (with k_o = 1)
+// cancels the approach, so the static barrier argument of (10) holds again, and the
+// longer detection band starts the push `horizon` seconds of approach earlier. Static
+// obstacles (v_j = 0) give exactly (10).
+AvoidanceResult movingRepulsiveTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
+                                    double robot_radius, double delta, double horizon,
+                                    const Eigen::Vector2d& heading_hint, double min_margin = 1e-4);
+
+// Tangential escape (beyond the paper): the radial term (10) and the attraction can cancel
+// on the line through a disk's centre (a saddle). For each detected obstacle j that opposes
+// tracking (w_j = max(0, -e_hat . n_j) > 0) this adds w_j |u_cj| along the tangent
+// side * perp(n_j), perpendicular to n_j, so it never pushes into the obstacle and leaves
+// the radial barrier and its clearance guarantee untouched; it is zero without conflict.
+// side (+1 = counter-clockwise around the obstacle, -1 = clockwise) is the one that turns
+// toward the target; it is latched (`previous_side`) and only switches when the weighted
+// sine of the angle between -n and e_hat exceeds `hysteresis` on the other side, so an
+// exactly symmetric case does not chatter. 0 = no conflict (released).
+struct TangentialResult {
+  Eigen::Vector2d u_t = Eigen::Vector2d::Zero();
+  int side = 0;
+};
+TangentialResult tangentialTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
+                                double robot_radius, double delta, const Eigen::Vector2d& e_hat,
+                                int previous_side, double hysteresis = 0.2, double min_margin = 1e-4);
+
 // Distance from a disk (centre, radius) to the nearest obstacle surface [m]; +inf if none.
 double clearance(const Eigen::Vector2d& center, double radius, const std::vector<Disk>& obstacles);
 

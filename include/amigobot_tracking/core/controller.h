@@ -28,6 +28,12 @@ struct TargetSample {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
 };
 
+// A measurement of the robot pose taken at `stamp` [s].
+struct PoseSample {
+  double stamp = 0.0;
+  Pose2 pose;
+};
+
 // Which constraints shaped this step's command.
 struct ActiveConstraints {
   bool saturated = false;         // u != u_d: the diamond clipped the command
@@ -49,6 +55,7 @@ struct ControllerOutput {
   Eigen::Vector2d p_d = Eigen::Vector2d::Zero();     // target position used
   Eigen::Vector2d v_hat = Eigen::Vector2d::Zero();   // estimated target velocity
   Eigen::Vector2d u_c = Eigen::Vector2d::Zero();     // repulsive term (10), before k_o
+  Eigen::Vector2d u_t = Eigen::Vector2d::Zero();     // tangential escape term, before k_o (extension)
   Eigen::Vector2d u_r = Eigen::Vector2d::Zero();     // offset-point velocity (9)
   int detected_obstacles = 0;
   double min_clearance = 0.0;     // of the effective disk around p_r [m]; +inf if none
@@ -65,6 +72,9 @@ class PerformanceController {
   // backwards, gives valid = false and a zero command.
   ControllerOutput step(double t, const Pose2& pose, const TargetSample& target,
                         const std::vector<Disk>& obstacles);
+  // The same with the pose's own stamp (used when compensate_pose_age is on).
+  ControllerOutput stepStamped(double t, const PoseSample& robot, const TargetSample& target,
+                               const std::vector<Disk>& obstacles);
 
   // Forget all state: the next step starts afresh (estimator, rho, start rule).
   void reset();
@@ -79,7 +89,7 @@ class PerformanceController {
   std::uint64_t envelopeWidenings() const { return envelope_widenings_; }
 
  private:
-  ControllerOutput invalid(double t, std::string why) const;
+  ControllerOutput invalid(double t, std::string why);
 
   ControllerConfig config_;
   DiamondSet diamond_;
@@ -89,6 +99,8 @@ class PerformanceController {
   double last_t_ = 0.0;
   double rho_ = 0.0;
   double conflict_ = 0.0;  // second argument of the min in (13), from the last step
+  int passing_side_ = 0;   // latched side of the tangential term (0 = released)
+  Twist2 last_u_;          // last applied command, for pose-age compensation
   std::uint64_t envelope_widenings_ = 0;
 };
 

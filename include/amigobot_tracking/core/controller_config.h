@@ -33,6 +33,16 @@ struct ControllerConfig {
   double max_error_ratio = 0.95;
   EstimatorConfig estimator;
 
+  // Beyond the paper: each switch off reproduces the paper exactly.
+  bool tangential_avoidance = false;   // escape the saddle behind a disk (avoidance.h)
+  double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c
+  double tangential_hysteresis = 0.2;  // [-] sine margin before the passing side may switch
+  bool moving_obstacles = false;       // use obstacle velocities in (10) (avoidance.h)
+  double obstacle_horizon = 1.0;       // [s] detection band grows by approach speed * horizon
+  bool predict_target = false;         // p_d = latest sample + v_hat * (t - sample stamp)
+  bool compensate_pose_age = false;    // move the pose forward by the last command over its age
+  double max_prediction = 0.5;         // [s] ages beyond this are not extrapolated further
+
   // The radius used in (10): R, or R + r when body_safe.
   double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
   // Empty when valid, otherwise "field: reason" naming the first bad field.

@@ -24,10 +24,12 @@ struct Twist2 {
   bool isFinite() const;
 };
 
-// A disk obstacle in the global frame: centre [m] and radius [m].
+// A disk obstacle in the global frame: centre [m], radius [m] and, when known, its
+// velocity [m/s] (zero for static obstacles).
 struct Disk {
   Eigen::Vector2d center = Eigen::Vector2d::Zero();
   double radius = 0.0;
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
 };
 
 // Wraps an angle to (-pi, pi].
