@@ -1,0 +1,98 @@
+// Association of laser obstacles across scans and their velocities (issue 8).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "amigobot_tracking/core/obstacle_tracker.h"
+
+using namespace amigobot_tracking::core;
+
+namespace {
+
+const TrackedObstacle* nearest(const ObstacleTracker& tracker, const Eigen::Vector2d& p) {
+  const TrackedObstacle* best = nullptr;
+  for (const auto& t : tracker.tracks()) {
+    if (!best || (t.disk.center - p).norm() < (best->disk.center - p).norm()) best = &t;
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST(ObstacleTracker, ConstantVelocityIsEstimatedAndIdKept) {
+  ObstacleTracker tracker;
+  const Eigen::Vector2d v(0.4, -0.2);
+  std::uint32_t id = 0;
+  for (int k = 0; k < 40; ++k) {  // 10 Hz scans
+    const double t = 0.1 * k;
+    tracker.update(t, {{Eigen::Vector2d(1.0, 2.0) + v * t, 0.2}});
+    ASSERT_EQ(tracker.tracks().size(), 1u);
+    if (k == 0) id = tracker.tracks()[0].id;
+    EXPECT_EQ(tracker.tracks()[0].id, id);
+  }
+  const std::vector<Disk> obstacles = tracker.obstaclesAt(3.9);
+  EXPECT_LT((obstacles[0].velocity - v).norm(), 1e-3);
+  EXPECT_NEAR(obstacles[0].radius, 0.2, 1e-12);
+}
+
+TEST(ObstacleTracker, StaticClutterStaysStatic) {
+  ObstacleTracker tracker;
+  std::mt19937 rng(4);
+  std::normal_distribution<double> jitter(0.0, 0.01);
+  for (int k = 0; k < 50; ++k) {
+    tracker.update(0.1 * k, {{{2.0 + jitter(rng), jitter(rng)}, 0.15}, {{0.0, 1.0 + jitter(rng)}, 0.15}});
+  }
+  ASSERT_EQ(tracker.tracks().size(), 2u);
+  for (const Disk& d : tracker.obstaclesAt(4.9)) EXPECT_EQ(d.velocity, Eigen::Vector2d::Zero());
+}
+
+TEST(ObstacleTracker, CrossingObstaclesKeepTheirIdsAndAreNotMerged) {
+  // Two people crossing in an X at 1 m/s, with a scan where their blobs merge into one.
+  ObstacleTracker tracker;
+  auto a = [](double t) { return Eigen::Vector2d(-2.0 + t, -2.0 + t); };
+  auto b = [](double t) { return Eigen::Vector2d(-2.0 + t, 2.0 - t); };
+  std::map<std::uint32_t, char> label;
+  for (int k = 0; k <= 40; ++k) {
+    const double t = 0.1 * k;
+    if (k == 20) {
+      tracker.update(t, {{a(t), 0.3}});  // merged: one blob at the crossing point
+    } else {
+      tracker.update(t, {{a(t), 0.2}, {b(t), 0.2}});
+    }
+    if (k == 5) {
+      label[nearest(tracker, a(t))->id] = 'a';
+      label[nearest(tracker, b(t))->id] = 'b';
+      ASSERT_EQ(label.size(), 2u);
+    }
+    if (k > 5 && k != 20) {
+      EXPECT_EQ(label[nearest(tracker, a(t))->id], 'a') << "t=" << t;
+      EXPECT_EQ(label[nearest(tracker, b(t))->id], 'b') << "t=" << t;
+    }
+  }
+  EXPECT_EQ(tracker.tracks().size(), 2u);
+}
+
+TEST(ObstacleTracker, UnseenTracksAreForgottenAndTimeJumpsReset) {
+  ObstacleTracker tracker;
+  tracker.update(0.0, {{{1.0, 1.0}, 0.2}});
+  tracker.update(0.3, {});
+  EXPECT_EQ(tracker.tracks().size(), 1u);  // coasting
+  tracker.update(0.7, {});
+  EXPECT_TRUE(tracker.tracks().empty());
+  tracker.update(1.0, {{{1.0, 1.0}, 0.2}});
+  tracker.update(0.5, {{{3.0, 1.0}, 0.2}});  // back in time: start afresh
+  ASSERT_EQ(tracker.tracks().size(), 1u);
+  EXPECT_EQ(tracker.tracks()[0].hits, 1);
+}
+
+TEST(ObstacleTracker, ValidateNamesTheBadField) {
+  ObstacleTrackerConfig c;
+  EXPECT_EQ(c.validate(), "");
+  c.velocity_gain = 2.0;
+  EXPECT_EQ(c.validate().rfind("velocity_gain", 0), 0u);
+  c = ObstacleTrackerConfig();
+  c.min_hits = 0;
+  EXPECT_EQ(c.validate().rfind("min_hits", 0), 0u);
+}
