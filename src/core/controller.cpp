@@ -33,12 +33,15 @@ void PerformanceController::reset() {
 }
 
 void PerformanceController::setConfig(const ControllerConfig& config) {
-  const VelocityEstimator kept = estimator_;
+  if (!(config.estimator == config_.estimator)) {
+    // New estimator gains: restart it from its current estimate (its bounds restart wide).
+    const VelocityEstimator kept = estimator_;
+    estimator_ = VelocityEstimator(config.estimator);
+    if (kept.initialized()) estimator_.reset(kept.lastStamp(), kept.position(), kept.velocity());
+  }
   config_ = config;
   diamond_ = DiamondSet(config.v_max, config.w_max);
   gains_ = gainsOf(config);
-  estimator_ = VelocityEstimator(config.estimator);
-  if (kept.initialized()) estimator_.reset(kept.lastStamp(), kept.position(), kept.velocity());
 }
 
 ControllerOutput PerformanceController::invalid(double t, std::string why) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "amigobot_tracking/core/closed_loop.h"
+#include "amigobot_tracking/core/unicycle.h"
 
 using namespace amigobot_tracking::core;
 
@@ -172,4 +173,28 @@ TEST(ClosedLoop, NonFiniteInputsGiveAZeroCommand) {
   out = controller.step(0.05, {0.0, 0.0, 0.0}, {0.1, {1.0, 0.0}}, {});
   EXPECT_FALSE(out.valid);
   EXPECT_NE(out.error.find("backwards"), std::string::npos);
+}
+
+TEST(ClosedLoop, SetConfigBetweenStepsKeepsTheStateAndAppliesNewLimits) {
+  ControllerConfig config = table1();
+  PerformanceController controller(config);
+  const CircleReference circle({0.0, 0.0}, 2.0, 20.0);
+  Pose2 pose{2.0, -0.5, M_PI / 2};
+  ControllerOutput out;
+  for (int k = 0; k < 2000; ++k) {
+    const double t = 1e-3 * k;
+    out = controller.step(t, pose, {t, circle.at(t).position}, {});
+    pose = integrateUnicycle(pose, out.u, 1e-3);
+  }
+  const double rho_before = controller.rho();
+  const Eigen::Vector2d velocity_before = controller.estimator().velocity();
+  config.v_max = 0.2;
+  config.w_max = 0.5;
+  config.k_d = 1.0;
+  controller.setConfig(config);
+  EXPECT_EQ(controller.rho(), rho_before);
+  EXPECT_EQ(controller.estimator().velocity(), velocity_before);
+  out = controller.step(2.0, pose, {2.0, circle.at(2.0).position}, {});
+  EXPECT_TRUE(DiamondSet(0.2, 0.5).contains(out.u));
+  EXPECT_GT(out.rho, 0.0);
 }

@@ -37,6 +37,11 @@ struct EstimatorConfig {
   double rho_o0 = 1.0;          // initial bound rho_oi(0) of both stages.
   double jump_threshold = 0.5;  // [m] a sample this far from the prediction is a jump; 0 = off.
 
+  bool operator==(const EstimatorConfig& o) const {
+    return a1 == o.a1 && a2 == o.a2 && lambda_o == o.lambda_o && rho_o == o.rho_o && rho_o0 == o.rho_o0 &&
+           jump_threshold == o.jump_threshold;
+  }
+
   // Empty when valid, otherwise "field: reason" for the first bad field.
   std::string validate() const;
 };
