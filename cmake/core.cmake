@@ -11,6 +11,7 @@ add_library(amigobot_tracking_core
   src/core/reference.cpp
   src/core/closed_loop.cpp
   src/core/obstacle_tracker.cpp
+  src/core/raycast.cpp
 )
 target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
