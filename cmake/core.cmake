@@ -10,6 +10,11 @@ add_library(amigobot_tracking_core
   src/core/unicycle.cpp
   src/core/reference.cpp
   src/core/closed_loop.cpp
+  src/core/metrics.cpp
+  src/core/step_size.cpp
+  src/core/target_sensor.cpp
+  src/core/baseline_controller.cpp
+  src/core/baseline_estimators.cpp
 )
 target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)

@@ -63,7 +63,7 @@ ControllerOutput PerformanceController::step(double t, const Pose2& pose, const 
   out.p_r = offsetPoint(pose, config_.offset);
   out.p_d = target.position;
   out.e = out.p_d - out.p_r;
-  out.v_hat = estimator_.velocity();
+  out.v_hat = target.has_velocity ? target.velocity : estimator_.velocity();
   const double error_norm = out.e.norm();
 
   // rho: start rule, then (13) over the elapsed time with the last step's conflict.
@@ -106,7 +106,8 @@ ControllerOutput PerformanceController::step(double t, const Pose2& pose, const 
   const double clipping = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega);
   out.active.saturated = clipping > 0.0;
   out.active.conflict = alignment < 0.0;
-  conflict_ = t_ratio * alignment - clipping;
+  // The fixed-rho baseline never relaxes: (13) without its adaptive term.
+  conflict_ = config_.adaptive_rho ? t_ratio * alignment - clipping : 0.0;
   return out;
 }
 
