@@ -17,3 +17,13 @@ amigobot_add_unit_test(test_controller_config test/unit/test_controller_config.c
 target_link_libraries(test_controller_config amigobot_tracking_core)
 amigobot_add_unit_test(test_closed_loop test/unit/test_closed_loop.cpp)
 target_link_libraries(test_closed_loop amigobot_tracking_core)
+
+# Offline simulator (issue 3): metrics and step rule, scenario parser, short closed-loop runs.
+amigobot_add_unit_test(test_metrics test/unit/test_metrics.cpp)
+target_link_libraries(test_metrics amigobot_tracking_core)
+amigobot_add_unit_test(test_sim_scenario test/unit/test_sim_scenario.cpp)
+target_link_libraries(test_sim_scenario amigobot_tracking_sim)
+target_compile_definitions(test_sim_scenario PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+amigobot_add_unit_test(test_sim_closed_loop test/unit/test_sim_closed_loop.cpp)
+target_link_libraries(test_sim_closed_loop amigobot_tracking_sim)
+target_compile_definitions(test_sim_closed_loop PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -51,16 +51,34 @@ std::unique_ptr<TargetVelocityFilter> makeFilter(const ClosedLoopSetup& setup) {
   return nullptr;
 }
 
-// Distance from the offset point to the nearest detection band and from the body to
-// contact, whichever is smaller (+inf without obstacles).
-double distanceToTrouble(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p, const ControllerConfig& c,
-                         const std::vector<Disk>& obstacles) {
-  double d = std::numeric_limits<double>::infinity();
-  for (const Disk& o : obstacles) {
-    d = std::min(d, (p_r - o.center).norm() - (c.effectiveRadius() + o.radius + c.delta));
-    d = std::min(d, (p - o.center).norm() - (c.robot_radius + o.radius));
+// Where the robot stands relative to the obstacles, for the step choice.
+StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const ControllerConfig& c,
+                          const std::vector<Disk>& obstacles, const std::vector<Eigen::Vector2d>& velocities,
+                          double max_speed) {
+  StepSituation s;
+  s.max_speed = max_speed;
+  s.error_ratio = out.rho > 0.0 ? out.e.norm() / out.rho : 0.0;
+  s.distance = std::numeric_limits<double>::infinity();
+  s.margin = std::numeric_limits<double>::infinity();
+  const Eigen::Vector2d p_r_velocity = twistToOffsetVelocity(out.u, pose.theta, c.offset);
+  for (size_t j = 0; j < obstacles.size(); ++j) {
+    const Disk& o = obstacles[j];
+    const Eigen::Vector2d away = out.p_r - o.center;
+    const double distance = away.norm(), contact = c.effectiveRadius() + o.radius;
+    s.distance = std::min(s.distance, (pose.position() - o.center).norm() - (c.robot_radius + o.radius));
+    if (distance > contact + c.delta) {
+      s.distance = std::min(s.distance, distance - contact - c.delta);
+      continue;
+    }
+    s.in_band = true;
+    const Eigen::Vector2d relative = p_r_velocity - (velocities.empty() ? Eigen::Vector2d::Zero() : velocities[j]);
+    const double approach = distance > 1e-12 ? -relative.dot(away) / distance : relative.norm();
+    if (distance - contact < s.margin) {
+      s.margin = distance - contact;
+      s.approach_speed = std::max(0.0, approach);
+    }
   }
-  return d;
+  return s;
 }
 
 }  // namespace
@@ -105,7 +123,10 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
   sensor_config.sample_period = setup.sample_period;
   TargetSensor sensor(sensor_config, reference);
   const ControllerConfig& config = setup.controller;
-  const StepPolicy policy{setup.control_period, std::max(setup.control_period, setup.max_step)};
+  StepPolicy policy = setup.step_policy;
+  policy.min_step = setup.control_period;
+  policy.max_step = std::max(setup.control_period, setup.max_step);
+  const bool land_on_samples = setup.sample_period >= policy.max_step;
   const bool fixed_step = policy.max_step <= policy.min_step;
   double max_obstacle_speed = 0.0;
   for (const Eigen::Vector2d& v : setup.obstacle_velocities) max_obstacle_speed = std::max(max_obstacle_speed, v.norm());
@@ -119,14 +140,13 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
   const auto fixed_steps = static_cast<std::uint64_t>(std::llround(setup.duration / setup.control_period));
   double t = 0.0;
   double last_filter_stamp = -std::numeric_limits<double>::infinity();
-  for (std::uint64_t k = 0;; ++k) {
-    // Fixed step: t = k h exactly (no drift). Variable step: t accumulates.
-    if (fixed_step) t = static_cast<double>(k) * setup.control_period;
-    const bool last = fixed_step ? k >= fixed_steps : t >= setup.duration - 1e-9;
+  auto moveObstacles = [&](double at) {
     for (size_t j = 0; j < setup.obstacle_velocities.size(); ++j)
-      obstacles[j].center = setup.obstacles[j].center + setup.obstacle_velocities[j] * t;
-    const ReferenceState ref = reference.at(t);
-    TargetSample sample = sensor.at(t);
+      obstacles[j].center = setup.obstacles[j].center + setup.obstacle_velocities[j] * at;
+  };
+  // The newest target sample at time `at`, with the baseline filter's velocity when one is used.
+  auto measure = [&](double at) {
+    TargetSample sample = sensor.at(at);
     if (filter) {
       if (sample.stamp > last_filter_stamp) {
         filter->update(sample.stamp, sample.position);
@@ -135,6 +155,15 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       sample.has_velocity = true;
       sample.velocity = filter->velocity();
     }
+    return sample;
+  };
+  for (std::uint64_t k = 0;; ++k) {
+    // Fixed step: t = k h exactly (no drift). Variable step: t accumulates.
+    if (fixed_step) t = static_cast<double>(k) * setup.control_period;
+    const bool last = fixed_step ? k >= fixed_steps : t >= setup.duration - 1e-9;
+    moveObstacles(t);
+    const ReferenceState ref = reference.at(t);
+    const TargetSample sample = measure(t);
     const ControllerOutput out = law.step(t, pose, sample, obstacles);
 
     double h = 0.0;
@@ -142,16 +171,13 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       if (fixed_step) {
         h = setup.control_period;
       } else {
-        const StepSituation situation{distanceToTrouble(out.p_r, pose.position(), config, obstacles), max_speed,
-                                      out.rho > 0.0 ? out.e.norm() / out.rho : 0.0};
-        h = chooseStep(policy, situation);
-        // Land on the next sample delivery and on the end.
+        h = chooseStep(policy, situationOf(out, pose, config, obstacles, setup.obstacle_velocities, max_speed));
+        // Land on the next sample delivery (when samples are sparser than steps) and on the end.
         const double delivery = sensor.nextDelivery(t);
-        if (delivery - t > 1e-9) h = std::min(h, delivery - t);
+        if (land_on_samples && delivery - t > 1e-9) h = std::min(h, delivery - t);
         h = std::min(h, setup.duration - t);
       }
     }
-
     ClosedLoopStep step;
     step.t = t;
     step.h = h;

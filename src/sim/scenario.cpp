@@ -233,6 +233,12 @@ void parseSimulation(Section s, Scenario& scenario) {
   if (scenario.log_period < 0.0) fail(s.file(), s.node()["log_period"], s.key("log_period"), "must be >= 0");
   if (setup.max_step < 0.0) fail(s.file(), s.node()["max_step"], s.key("max_step"), "must be >= 0 (0 = fixed step)");
   setup.sensor.seed = static_cast<std::uint64_t>(s.number("seed", 1.0));
+  core::StepPolicy& policy = setup.step_policy;
+  policy.comfortable_ratio = s.number("comfortable_ratio", policy.comfortable_ratio);
+  policy.tight_ratio = s.number("tight_ratio", policy.tight_ratio);
+  policy.band_fraction = positive(s, "band_fraction", s.number("band_fraction", policy.band_fraction));
+  if (!(policy.comfortable_ratio >= 0.0 && policy.comfortable_ratio < policy.tight_ratio))
+    fail(s.file(), s.node()["comfortable_ratio"], s.key("comfortable_ratio"), "must be >= 0 and < tight_ratio");
   scenario.name = s.text("name", scenario.name);
   s.finish();
 }

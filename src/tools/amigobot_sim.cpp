@@ -169,6 +169,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (plot) {
+    std::fflush(stdout);  // our lines before the plotter's
     const int rc = runPlot(out + "/trajectory.csv");
     if (rc != 0) {
       std::fprintf(stderr, "amigobot_sim: plotting failed (exit %d); the CSV and JSON are written. Re-plot with\n"

@@ -48,7 +48,9 @@ struct ClosedLoopSetup {
   double duration = 10.0;        // [s]
   double control_period = 1e-3;  // [s] controller and integration step (the fine step)
   double max_step = 0.0;         // [s] > control_period: variable step up to this (step_size.h)
-  double sample_period = 0.0;    // [s] target sampling; 0 = every control step
+  double sample_period = 0.0;    // [s] target sampling; 0 = every control step. Steps land on
+                                 // sample deliveries when sample_period >= max_step.
+  StepPolicy step_policy;        // thresholds of the variable step (its min/max come from above)
   TargetSensorConfig sensor;     // noise, delay, jumps (its sample_period is replaced by the one above)
   ControlLaw law = ControlLaw::kPaper;
   VelocitySource velocity_source = VelocitySource::kPaperEstimator;
