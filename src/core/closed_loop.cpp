@@ -53,30 +53,16 @@ std::unique_ptr<TargetVelocityFilter> makeFilter(const ClosedLoopSetup& setup) {
 
 // Where the robot stands relative to the obstacles, for the step choice.
 StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const ControllerConfig& c,
-                          const std::vector<Disk>& obstacles, const std::vector<Eigen::Vector2d>& velocities,
-                          double max_speed) {
+                          const std::vector<Disk>& obstacles, double max_speed) {
   StepSituation s;
   s.max_speed = max_speed;
   s.error_ratio = out.rho > 0.0 ? out.e.norm() / out.rho : 0.0;
   s.distance = std::numeric_limits<double>::infinity();
-  s.margin = std::numeric_limits<double>::infinity();
-  const Eigen::Vector2d p_r_velocity = twistToOffsetVelocity(out.u, pose.theta, c.offset);
-  for (size_t j = 0; j < obstacles.size(); ++j) {
-    const Disk& o = obstacles[j];
-    const Eigen::Vector2d away = out.p_r - o.center;
-    const double distance = away.norm(), contact = c.effectiveRadius() + o.radius;
-    s.distance = std::min(s.distance, (pose.position() - o.center).norm() - (c.robot_radius + o.radius));
-    if (distance > contact + c.delta) {
-      s.distance = std::min(s.distance, distance - contact - c.delta);
-      continue;
-    }
-    s.in_band = true;
-    const Eigen::Vector2d relative = p_r_velocity - (velocities.empty() ? Eigen::Vector2d::Zero() : velocities[j]);
-    const double approach = distance > 1e-12 ? -relative.dot(away) / distance : relative.norm();
-    if (distance - contact < s.margin) {
-      s.margin = distance - contact;
-      s.approach_speed = std::max(0.0, approach);
-    }
+  for (const Disk& o : obstacles) {
+    const double band = (out.p_r - o.center).norm() - (c.effectiveRadius() + o.radius + c.delta);
+    s.in_band = s.in_band || band <= 0.0;
+    s.distance = std::min({s.distance, std::max(band, 0.0),
+                           (pose.position() - o.center).norm() - (c.robot_radius + o.radius)});
   }
   return s;
 }
@@ -171,7 +157,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       if (fixed_step) {
         h = setup.control_period;
       } else {
-        h = chooseStep(policy, situationOf(out, pose, config, obstacles, setup.obstacle_velocities, max_speed));
+        h = chooseStep(policy, situationOf(out, pose, config, obstacles, max_speed));
         // Land on the next sample delivery (when samples are sparser than steps) and on the end.
         const double delivery = sensor.nextDelivery(t);
         if (land_on_samples && delivery - t > 1e-9) h = std::min(h, delivery - t);

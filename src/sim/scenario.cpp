@@ -236,7 +236,6 @@ void parseSimulation(Section s, Scenario& scenario) {
   core::StepPolicy& policy = setup.step_policy;
   policy.comfortable_ratio = s.number("comfortable_ratio", policy.comfortable_ratio);
   policy.tight_ratio = s.number("tight_ratio", policy.tight_ratio);
-  policy.band_fraction = positive(s, "band_fraction", s.number("band_fraction", policy.band_fraction));
   if (!(policy.comfortable_ratio >= 0.0 && policy.comfortable_ratio < policy.tight_ratio))
     fail(s.file(), s.node()["comfortable_ratio"], s.key("comfortable_ratio"), "must be >= 0 and < tight_ratio");
   scenario.name = s.text("name", scenario.name);

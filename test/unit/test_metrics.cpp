@@ -136,16 +136,12 @@ TEST(StepSize, ShrinksWithTheErrorRatio) {
   EXPECT_DOUBLE_EQ(chooseStep(policy, s), 1e-3);
 }
 
-TEST(StepSize, InsideABandClosingInIsLimitedButSlidingIsNot) {
-  const StepPolicy policy{1e-3, 2e-2};  // band_fraction 0.2
+TEST(StepSize, FineStepInsideABand) {
+  const StepPolicy policy{1e-3, 2e-2};
   StepSituation s;
   s.distance = std::numeric_limits<double>::infinity();
   s.in_band = true;
-  s.margin = 0.01;
-  s.approach_speed = 0.5;  // 0.2 * 0.01 / 0.5 = 4 ms
-  EXPECT_NEAR(chooseStep(policy, s), 4e-3, 1e-15);
-  s.approach_speed = 0.0;
-  EXPECT_DOUBLE_EQ(chooseStep(policy, s), 2e-2);
+  EXPECT_DOUBLE_EQ(chooseStep(policy, s), 1e-3);
 }
 
 TEST(StepSize, FixedWhenMaxIsNotAboveMin) {

@@ -7,6 +7,7 @@
 
 #include "amigobot_tracking/core/baseline_estimators.h"
 #include "amigobot_tracking/core/target_sensor.h"
+#include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"
 
@@ -136,4 +137,41 @@ TEST(BaselineEstimators, KalmanConvergesOnARamp) {
   for (int k = 0; k <= 300; ++k) filter.update(0.01 * k, Eigen::Vector2d(1.0, -3.0 * 0.01 * k));
   EXPECT_NEAR(filter.velocity().x(), 0.0, 1e-3);
   EXPECT_NEAR(filter.velocity().y(), -3.0, 1e-2);
+}
+
+// The safety finding of docs/results.md: the paper's radius guards p_r only.
+TEST(SimClosedLoop, PaperRadiusLetsTheBodyTouchAndBodySafeKeepsItClear) {
+  sim::Scenario paper = shipped("paper_5_1", 14.0);
+  paper.setup.controller.body_safe = false;
+  sim::Scenario safe = paper;
+  safe.setup.controller.body_safe = true;
+  const core::RunMetrics a = sim::runScenario(paper, false).summary.metrics;
+  const core::RunMetrics b = sim::runScenario(safe, false).summary.metrics;
+  EXPECT_GT(a.min_clearance_offset, 0.0);  // what the paper guarantees holds
+  EXPECT_GT(a.body_collisions, 0u);        // and still the body touches
+  EXPECT_GT(b.min_clearance_body, 0.0);
+  EXPECT_EQ(b.body_collisions, 0u);
+}
+
+TEST(MonteCarlo, VariantsAreReproducibleAndStartInsideRho) {
+  const sim::Scenario base = shipped("paper_5_2_rose", 1.0);
+  sim::MonteCarloOptions options;
+  options.seed = 3;
+  const sim::Scenario a = sim::randomVariant(base, options, 4), b = sim::randomVariant(base, options, 4);
+  const sim::Scenario c = sim::randomVariant(base, options, 5);
+  EXPECT_EQ(a.setup.initial_pose.x, b.setup.initial_pose.x);
+  EXPECT_EQ(a.setup.obstacles[0].center, b.setup.obstacles[0].center);
+  EXPECT_NE(a.setup.initial_pose.x, c.setup.initial_pose.x);
+  EXPECT_NO_THROW(sim::checkScenario(a));
+  EXPECT_LT((a.setup.obstacles[0].center - base.setup.obstacles[0].center).norm(), options.obstacle_shift + 1e-12);
+}
+
+TEST(MonteCarlo, SummaryCountsEveryRun) {
+  sim::MonteCarloOptions options;
+  options.runs = 3;
+  const std::string json = sim::runMonteCarlo(shipped("paper_5_2_rose", 0.5), options);
+  EXPECT_NE(json.find("\"runs\": 3"), std::string::npos);
+  EXPECT_NE(json.find("\"index\": 2"), std::string::npos);
+  EXPECT_EQ(json.find("\"index\": 3"), std::string::npos);
+  EXPECT_NE(json.find("\"worst_min_clearance_body\""), std::string::npos);
 }

@@ -7,8 +7,7 @@
 // width delta: near obstacles the loop falls back to the fine step. The step also shrinks
 // linearly from max_step at |e|/rho <= comfortable_ratio to min_step at tight_ratio, so the
 // performance bound is resolved finely whenever it is close to active. Inside a detection
-// band, where (10) is stiff (1/margin), a step moves the offset point towards the obstacle
-// by at most band_fraction of its margin to contact.
+// band, where (10) is stiff (1/margin), only the fine step is used.
 #pragma once
 
 namespace amigobot_tracking {
@@ -19,7 +18,6 @@ struct StepPolicy {
   double max_step = 1e-3;          // [s] the longest step; == min_step: fixed step
   double comfortable_ratio = 0.5;  // |e|/rho at or below which max_step is allowed
   double tight_ratio = 0.9;        // |e|/rho at or above which only min_step is
-  double band_fraction = 0.2;      // inside a band: approach at most this share of the margin
 };
 
 struct StepSituation {
@@ -27,9 +25,7 @@ struct StepSituation {
                              // contact (+inf: none)
   double max_speed = 0.0;    // [m/s] bound on the closing speed
   double error_ratio = 0.0;  // |e|/rho (0 when the law has no rho)
-  double margin = 0.0;       // [m] inside a detection band: distance of p_r's disk to contact
-  double approach_speed = 0.0;  // [m/s] inside a band: speed of p_r towards that obstacle
-  bool in_band = false;
+  bool in_band = false;      // the offset point is inside a detection band
 };
 
 // In [min_step, max_step]; pure.
