@@ -232,7 +232,10 @@ void parseSimulation(Section s, Scenario& scenario) {
   scenario.log_period = s.number("log_period", 0.0);
   if (scenario.log_period < 0.0) fail(s.file(), s.node()["log_period"], s.key("log_period"), "must be >= 0");
   if (setup.max_step < 0.0) fail(s.file(), s.node()["max_step"], s.key("max_step"), "must be >= 0 (0 = fixed step)");
-  setup.sensor.seed = static_cast<std::uint64_t>(s.number("seed", 1.0));
+  const double seed = s.number("seed", 1.0);
+  if (!(seed >= 0.0 && seed <= 9.0e15 && seed == std::floor(seed)))
+    fail(s.file(), s.node()["seed"], s.key("seed"), "must be a whole number >= 0");
+  setup.sensor.seed = static_cast<std::uint64_t>(seed);
   core::StepPolicy& policy = setup.step_policy;
   policy.comfortable_ratio = s.number("comfortable_ratio", policy.comfortable_ratio);
   policy.tight_ratio = s.number("tight_ratio", policy.tight_ratio);

@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -37,6 +38,7 @@ const char* kUsage =
     "  --log-period S                           CSV row spacing [s]; 0 = every step (simulation.log_period)\n"
     "  --no-plot                                write CSV and JSON only\n"
     "  --monte-carlo N --seed S                 N randomised variants; writes DIR/monte_carlo.json\n"
+    "  --seed S                                 noise seed of a single run (simulation.seed)\n"
     "  --benchmark N                            run N times without output; print the real-time factor\n";
 
 int usage(const std::string& why) {
@@ -49,6 +51,15 @@ double toNumber(const std::string& flag, const std::string& text) {
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v)) throw sim::ScenarioError(flag + ": not a number: '" + text + "'");
   return v;
+}
+
+// A whole number in [lo, hi] (counts and seeds).
+long long toWhole(const std::string& flag, const std::string& text, double lo, double hi) {
+  const double v = toNumber(flag, text);
+  if (v != std::floor(v) || v < lo || v > hi)
+    throw sim::ScenarioError(flag + ": expected a whole number in [" + std::to_string(static_cast<long long>(lo)) + ", " +
+                             std::to_string(static_cast<long long>(hi)) + "], got '" + text + "'");
+  return static_cast<long long>(v);
 }
 
 int runPlot(const std::string& csv) {
@@ -98,8 +109,16 @@ int main(int argc, char** argv) {
   try {
     scenario = sim::loadScenario(opt["--scenario"]);
     core::ClosedLoopSetup& setup = scenario.setup;
-    if (opt.count("--variant")) setup.law = sim::parseControlLaw(opt["--variant"]);
-    if (opt.count("--estimator")) setup.velocity_source = sim::parseVelocitySource(opt["--estimator"]);
+    try {
+      if (opt.count("--variant")) setup.law = sim::parseControlLaw(opt["--variant"]);
+    } catch (const std::invalid_argument& e) {
+      throw sim::ScenarioError(std::string("--variant: ") + e.what());
+    }
+    try {
+      if (opt.count("--estimator")) setup.velocity_source = sim::parseVelocitySource(opt["--estimator"]);
+    } catch (const std::invalid_argument& e) {
+      throw sim::ScenarioError(std::string("--estimator: ") + e.what());
+    }
     if (opt.count("--body-safe")) {
       const std::string v = opt["--body-safe"];
       if (v != "true" && v != "false") throw sim::ScenarioError("--body-safe: expected true or false, got '" + v + "'");
@@ -108,10 +127,12 @@ int main(int argc, char** argv) {
     if (opt.count("--max-step")) setup.max_step = toNumber("--max-step", opt["--max-step"]);
     if (opt.count("--control-period")) setup.control_period = toNumber("--control-period", opt["--control-period"]);
     if (opt.count("--log-period")) scenario.log_period = toNumber("--log-period", opt["--log-period"]);
-    if (opt.count("--monte-carlo")) monte_carlo = static_cast<int>(toNumber("--monte-carlo", opt["--monte-carlo"]));
-    if (opt.count("--seed")) seed = static_cast<std::uint64_t>(toNumber("--seed", opt["--seed"]));
-    if (opt.count("--benchmark")) benchmark = static_cast<int>(toNumber("--benchmark", opt["--benchmark"]));
-    if (monte_carlo < 0 || benchmark < 0) throw sim::ScenarioError("--monte-carlo and --benchmark need N >= 1");
+    if (opt.count("--monte-carlo")) monte_carlo = static_cast<int>(toWhole("--monte-carlo", opt["--monte-carlo"], 1, 1e6));
+    if (opt.count("--benchmark")) benchmark = static_cast<int>(toWhole("--benchmark", opt["--benchmark"], 1, 1e6));
+    if (opt.count("--seed")) {
+      seed = static_cast<std::uint64_t>(toWhole("--seed", opt["--seed"], 0, 9e15));
+      setup.sensor.seed = seed;  // a single run: the noise seed; Monte Carlo: the base of every variant
+    }
     sim::checkScenario(scenario);  // again, with the overrides
   } catch (const std::exception& e) {
     std::fprintf(stderr, "amigobot_sim: %s\n", e.what());
