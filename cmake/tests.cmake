@@ -27,3 +27,5 @@ target_compile_definitions(test_sim_scenario PRIVATE AMIGOBOT_SOURCE_DIR="${PROJ
 amigobot_add_unit_test(test_sim_closed_loop test/unit/test_sim_closed_loop.cpp)
 target_link_libraries(test_sim_closed_loop amigobot_tracking_sim)
 target_compile_definitions(test_sim_closed_loop PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+amigobot_add_unit_test(test_baselines test/unit/test_baselines.cpp)
+target_link_libraries(test_baselines amigobot_tracking_core)
