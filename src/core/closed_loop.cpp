@@ -171,7 +171,8 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     step.reference = ref;
     step.sample = sample;
     step.output = out;
-    step.clearance_offset = clearance(offsetPoint(pose, config.offset), config.robot_radius, obstacles);
+    step.clearance_offset =
+        clearance(out.valid ? out.p_r : offsetPoint(pose, config.offset), config.robot_radius, obstacles);
     step.clearance_body = clearance(pose.position(), config.robot_radius, obstacles);
     step.obstacles = &obstacles;
 
