@@ -174,10 +174,12 @@ int main(int argc, char** argv) {
     sim::writeTrajectoryCsv(out + "/trajectory.csv", result.rows);
     sim::writeText(out + "/metrics.json", sim::metricsJson(scenario, result));
     const core::RunMetrics& m = result.summary.metrics;
-    std::printf("%s [%s, estimator %s, body_safe %s]: ASE %.5f AAE %.5f TEC %.4f max|e|/rho %.3f\n",
+    char ratio[32] = "- (no rho)";
+    if (scenario.setup.law != core::ControlLaw::kProportional) std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
+    std::printf("%s [%s, estimator %s, body_safe %s]: ASE %.5f AAE %.5f TEC %.4f max|e|/rho %s\n",
                 scenario.name.c_str(), sim::toString(scenario.setup.law).c_str(),
                 sim::toString(scenario.setup.velocity_source).c_str(),
-                scenario.setup.controller.body_safe ? "true" : "false", m.ase, m.aae, m.tec, m.max_e_over_rho);
+                scenario.setup.controller.body_safe ? "true" : "false", m.ase, m.aae, m.tec, ratio);
     std::printf("  clearance offset %.4f m, body %.4f m; collisions offset %llu, body %llu; diamond violations %llu; "
                 "NaN %llu\n",
                 m.min_clearance_offset, m.min_clearance_body, static_cast<unsigned long long>(m.offset_collisions),
