@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "amigobot_tracking/core/baseline_estimators.h"
@@ -174,4 +177,38 @@ TEST(MonteCarlo, SummaryCountsEveryRun) {
   EXPECT_NE(json.find("\"index\": 2"), std::string::npos);
   EXPECT_EQ(json.find("\"index\": 3"), std::string::npos);
   EXPECT_NE(json.find("\"worst_min_clearance_body\""), std::string::npos);
+}
+
+TEST(SimOutput, MetricsJsonHasEveryKeyTheIssueLists) {
+  sim::Scenario s = shipped("paper_5_2_rose", 0.2);
+  s.setup.obstacles.clear();  // clearances are then infinite: written as null
+  const std::string json = sim::metricsJson(s, sim::runScenario(s, false));
+  EXPECT_NE(json.find("\"min_clearance_body\": null"), std::string::npos);
+  for (const char* key : {"ase", "aae", "tec", "max_e_over_rho", "min_clearance_offset", "min_clearance_body",
+                          "body_collisions", "offset_collisions", "diamond_violations", "nan_count", "final_error",
+                          "sim_time_s", "wall_time_s", "realtime_factor", "obstacles", "v_max", "w_max"}) {
+    EXPECT_NE(json.find(std::string("\"") + key + "\": "), std::string::npos) << key;
+  }
+  for (const char* bad : {": inf", ": -inf", ": nan", ": -nan"}) EXPECT_EQ(json.find(bad), std::string::npos) << bad;
+}
+
+TEST(SimOutput, CsvHasTheHeaderAndOneLinePerRowAndNamesAnUnwritablePath) {
+  const sim::Scenario s = shipped("paper_5_2_rose", 0.05);
+  const sim::RunResult r = sim::runScenario(s, true);
+  const std::string path = ::testing::TempDir() + "/sim_output_test.csv";
+  sim::writeTrajectoryCsv(path, r.rows);
+  std::ifstream in(path);
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header.rfind("t,x,y,theta,", 0), 0u);
+  size_t lines = 0;
+  while (std::getline(in, line)) ++lines;
+  EXPECT_EQ(lines, r.rows.size());
+  try {
+    sim::writeTrajectoryCsv("/nonexistent-dir/x.csv", r.rows);
+    ADD_FAILURE() << "wrote into a missing folder";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/x.csv"), std::string::npos);
+  }
+  EXPECT_EQ(sim::jsonNumber(std::numeric_limits<double>::infinity()), "null");
 }
