@@ -11,7 +11,7 @@ CATKIN := catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUIL
 SETUP := source $(WS)/devel/setup.bash
 RESULTS := $(WS)/build/test_results
 
-.PHONY: deps build test demo bench clean
+.PHONY: deps build test demo bench clean sim reproduce
 
 deps:
 	@$(ROOT)/scripts/install_deps.sh
@@ -36,6 +36,18 @@ demo: build
 bench: build
 	$(CATKIN) bench_core
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 50
+	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 20 --max-step 0
+
+# Offline simulator: make sim SCENARIO=config/scenarios/paper_5_1.yaml OUT=out/paper_5_1 [ARGS="--variant fixed_rho"]
+SCENARIO ?= config/scenarios/paper_5_2_rose.yaml
+OUT ?= out/$(basename $(notdir $(SCENARIO)))
+sim: build
+	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(SCENARIO) --out $(OUT) $(ARGS)
+
+# The paper's Section 5 and the baselines: writes docs/results.md and docs/figures/.
+reproduce: build
+	$(ROOT)/scripts/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
 
 clean:
 	rm -rf $(WS)

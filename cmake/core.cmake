@@ -12,6 +12,11 @@ add_library(amigobot_tracking_core
   src/core/closed_loop.cpp
   src/core/obstacle_tracker.cpp
   src/core/raycast.cpp
+  src/core/metrics.cpp
+  src/core/step_size.cpp
+  src/core/target_sensor.cpp
+  src/core/baseline_controller.cpp
+  src/core/baseline_estimators.cpp
 )
 target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)

@@ -3,44 +3,210 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <sstream>
 
 #include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/baseline_controller.h"
+#include "amigobot_tracking/core/baseline_estimators.h"
+#include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/core/unicycle.h"
 
 namespace amigobot_tracking {
 namespace core {
+namespace {
+
+// The selected law behind one step() call.
+class Law {
+ public:
+  explicit Law(const ClosedLoopSetup& setup) {
+    if (setup.law == ControlLaw::kProportional) {
+      proportional_ = std::make_unique<ProportionalController>(setup.controller, setup.baseline.k_p);
+    } else {
+      ControllerConfig config = setup.controller;
+      config.adaptive_rho = setup.law == ControlLaw::kPaper && config.adaptive_rho;
+      paper_ = std::make_unique<PerformanceController>(config);
+    }
+  }
+  ControllerOutput step(double t, const Pose2& pose, const TargetSample& sample, const std::vector<Disk>& obstacles) {
+    return paper_ ? paper_->step(t, pose, sample, obstacles) : proportional_->step(t, pose, sample, obstacles);
+  }
+  const DiamondSet& diamond() const { return paper_ ? paper_->diamond() : proportional_->diamond(); }
+
+ private:
+  std::unique_ptr<PerformanceController> paper_;
+  std::unique_ptr<ProportionalController> proportional_;
+};
+
+std::unique_ptr<TargetVelocityFilter> makeFilter(const ClosedLoopSetup& setup) {
+  switch (setup.velocity_source) {
+    case VelocitySource::kFiniteDifference:
+      return std::make_unique<FiniteDifferenceFilter>(setup.baseline.lowpass_tau);
+    case VelocitySource::kKalman:
+      return std::make_unique<ConstantVelocityKalman>(setup.baseline.kalman_accel_std,
+                                                      setup.baseline.kalman_measurement_std);
+    case VelocitySource::kPaperEstimator:
+      break;
+  }
+  return nullptr;
+}
+
+// Where the robot stands relative to the obstacles, for the step choice.
+StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const ControllerConfig& c,
+                          const std::vector<Disk>& obstacles, double max_speed) {
+  StepSituation s;
+  s.max_speed = max_speed;
+  s.error_ratio = out.rho > 0.0 ? out.e.norm() / out.rho : 0.0;
+  s.distance = std::numeric_limits<double>::infinity();
+  for (const Disk& o : obstacles) {
+    const double band = (out.p_r - o.center).norm() - (c.effectiveRadius() + o.radius + c.delta);
+    s.in_band = s.in_band || band <= 0.0;
+    s.distance = std::min({s.distance, std::max(band, 0.0),
+                           (pose.position() - o.center).norm() - (c.robot_radius + o.radius)});
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string validateSetup(const ClosedLoopSetup& setup) {
+  std::ostringstream err;
+  const std::string controller = setup.controller.validate();
+  if (!controller.empty()) return controller;
+  const std::string sensor = setup.sensor.validate();
+  if (!sensor.empty()) return sensor;
+  if (!setup.initial_pose.isFinite()) err << "initial_pose must be finite";
+  else if (!(std::isfinite(setup.duration) && setup.duration > 0.0)) err << "duration must be > 0, got " << setup.duration;
+  else if (!(std::isfinite(setup.control_period) && setup.control_period > 0.0))
+    err << "control_period must be > 0, got " << setup.control_period;
+  else if (!std::isfinite(setup.max_step) || setup.max_step < 0.0)
+    err << "max_step must be >= 0 (0 = fixed step), got " << setup.max_step;
+  else if (!std::isfinite(setup.sample_period) || setup.sample_period < 0.0)
+    err << "sample_period must be >= 0, got " << setup.sample_period;
+  else if (!setup.obstacle_velocities.empty() && setup.obstacle_velocities.size() != setup.obstacles.size())
+    err << "obstacle_velocities must be empty or one per obstacle";
+  else if (!(setup.baseline.k_p > 0.0 && std::isfinite(setup.baseline.k_p))) err << "k_p must be > 0";
+  else if (!(setup.baseline.lowpass_tau > 0.0 && std::isfinite(setup.baseline.lowpass_tau)))
+    err << "lowpass_tau must be > 0";
+  else if (!(setup.baseline.kalman_accel_std > 0.0 && std::isfinite(setup.baseline.kalman_accel_std)))
+    err << "kalman_accel_std must be > 0";
+  else if (!(setup.baseline.kalman_measurement_std > 0.0 && std::isfinite(setup.baseline.kalman_measurement_std)))
+    err << "kalman_measurement_std must be > 0";
+  else
+    for (const Disk& o : setup.obstacles)
+      if (!o.center.allFinite() || !(o.radius > 0.0 && std::isfinite(o.radius))) {
+        err << "obstacles: every obstacle needs a finite centre and a radius > 0";
+        break;
+      }
+  return err.str();
+}
 
 ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& reference,
                                 const ClosedLoopObserver& observer) {
-  PerformanceController controller(setup.controller);
+  Law law(setup);
+  std::unique_ptr<TargetVelocityFilter> filter = makeFilter(setup);
+  TargetSensorConfig sensor_config = setup.sensor;
+  sensor_config.sample_period = setup.sample_period;
+  TargetSensor sensor(sensor_config, reference);
+  const ControllerConfig& config = setup.controller;
+  StepPolicy policy = setup.step_policy;
+  policy.min_step = setup.control_period;
+  policy.max_step = std::max(setup.control_period, setup.max_step);
+  const bool land_on_samples = setup.sample_period >= policy.max_step;
+  const bool fixed_step = policy.max_step <= policy.min_step;
+  double max_obstacle_speed = 0.0;
+  for (const Eigen::Vector2d& v : setup.obstacle_velocities) max_obstacle_speed = std::max(max_obstacle_speed, v.norm());
+  const double max_speed = std::max(config.v_max, config.offset * config.w_max) + max_obstacle_speed;
+
   ClosedLoopSummary summary;
   summary.min_clearance_offset = summary.min_clearance_body = std::numeric_limits<double>::infinity();
+  MetricsAccumulator metrics;
   Pose2 pose = setup.initial_pose;
-  TargetSample sample;
-  double next_sample_t = 0.0;
-  const auto steps = static_cast<std::uint64_t>(std::llround(setup.duration / setup.control_period));
-  const double body_radius = setup.controller.robot_radius;
-  for (std::uint64_t k = 0; k <= steps; ++k) {
-    const double t = static_cast<double>(k) * setup.control_period;
-    const ReferenceState ref = reference.at(t);
-    if (t + 1e-12 >= next_sample_t) {
-      sample = {t, ref.position};
-      next_sample_t += setup.sample_period > 0.0 ? setup.sample_period : setup.control_period;
+  std::vector<Disk> obstacles = setup.obstacles;
+  const auto fixed_steps = static_cast<std::uint64_t>(std::llround(setup.duration / setup.control_period));
+  double t = 0.0;
+  double last_filter_stamp = -std::numeric_limits<double>::infinity();
+  auto moveObstacles = [&](double at) {
+    for (size_t j = 0; j < setup.obstacle_velocities.size(); ++j)
+      obstacles[j].center = setup.obstacles[j].center + setup.obstacle_velocities[j] * at;
+  };
+  // The newest target sample at time `at`, with the baseline filter's velocity when one is used.
+  auto measure = [&](double at) {
+    TargetSample sample = sensor.at(at);
+    if (filter) {
+      if (sample.stamp > last_filter_stamp) {
+        filter->update(sample.stamp, sample.position);
+        last_filter_stamp = sample.stamp;
+      }
+      sample.has_velocity = true;
+      sample.velocity = filter->velocity();
     }
-    const ControllerOutput out = controller.step(t, pose, sample, setup.obstacles);
+    return sample;
+  };
+  for (std::uint64_t k = 0;; ++k) {
+    // Fixed step: t = k h exactly (no drift). Variable step: t accumulates.
+    if (fixed_step) t = static_cast<double>(k) * setup.control_period;
+    const bool last = fixed_step ? k >= fixed_steps : t >= setup.duration - 1e-9;
+    moveObstacles(t);
+    const ReferenceState ref = reference.at(t);
+    const TargetSample sample = measure(t);
+    const ControllerOutput out = law.step(t, pose, sample, obstacles);
+
+    double h = 0.0;
+    if (!last) {
+      if (fixed_step) {
+        h = setup.control_period;
+      } else {
+        h = chooseStep(policy, situationOf(out, pose, config, obstacles, max_speed));
+        // Land on the next sample delivery (when samples are sparser than steps) and on the end.
+        const double delivery = sensor.nextDelivery(t);
+        if (land_on_samples && delivery - t > 1e-9) h = std::min(h, delivery - t);
+        h = std::min(h, setup.duration - t);
+      }
+    }
+    ClosedLoopStep step;
+    step.t = t;
+    step.h = h;
+    step.pose = pose;
+    step.reference = ref;
+    step.sample = sample;
+    step.output = out;
+    step.clearance_offset =
+        clearance(out.valid ? out.p_r : offsetPoint(pose, config.offset), config.robot_radius, obstacles);
+    step.clearance_body = clearance(pose.position(), config.robot_radius, obstacles);
+    step.obstacles = &obstacles;
+
     ++summary.steps;
     if (!out.valid) ++summary.invalid_steps;
-    summary.max_error_ratio = std::max(summary.max_error_ratio, out.e.norm() / out.rho);
+    if (out.rho > 0.0) summary.max_error_ratio = std::max(summary.max_error_ratio, out.e.norm() / out.rho);
     summary.final_error = out.e.norm();
     summary.min_clearance_offset = std::min(summary.min_clearance_offset, out.min_clearance);
-    summary.min_clearance_body =
-        std::min(summary.min_clearance_body, clearance(pose.position(), body_radius, setup.obstacles));
-    if (!controller.diamond().contains(out.u, 1e-9)) ++summary.diamond_violations;
+    summary.min_clearance_body = std::min(summary.min_clearance_body, step.clearance_body);
+    if (!law.diamond().contains(out.u, kDiamondTolerance)) ++summary.diamond_violations;
     if (out.active.envelope_widened) ++summary.envelope_widenings;
     if (out.active.saturated) ++summary.saturated_steps;
-    if (observer) observer({t, pose, ref, out});
-    if (k < steps) pose = integrateUnicycle(pose, out.u, setup.control_period);
+
+    MetricSample m;
+    m.h = h;
+    m.e = out.e;
+    m.rho = out.rho;
+    m.u = out.u;
+    m.diamond_norm = law.diamond().normalizedNorm(out.u);
+    m.clearance_offset = step.clearance_offset;
+    m.clearance_body = step.clearance_body;
+    m.velocity_error = ref.velocity - out.v_hat;
+    m.estimator_settled = t >= setup.estimator_settle_time;
+    m.valid = out.valid;
+    m.saturated = out.active.saturated;
+    m.envelope_widened = out.active.envelope_widened;
+    metrics.add(m);
+
+    if (observer) observer(step);
+    if (last) break;
+    pose = integrateUnicycle(pose, out.u, h);
+    if (!fixed_step) t += h;
   }
+  summary.metrics = metrics.result();
   return summary;
 }
 

@@ -81,7 +81,7 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   out.p_d = target.position;
   if (config_.predict_target) out.p_d += estimator_.velocity() * age(target.stamp);
   out.e = out.p_d - out.p_r;
-  out.v_hat = estimator_.velocity();
+  out.v_hat = target.has_velocity ? target.velocity : estimator_.velocity();
   const double error_norm = out.e.norm();
 
   // rho: start rule, then (13) over the elapsed time with the last step's conflict.
@@ -136,7 +136,8 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   const double clipping = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega);
   out.active.saturated = clipping > 0.0;
   out.active.conflict = alignment < 0.0;
-  conflict_ = t_ratio * alignment - clipping;
+  // The fixed-rho baseline never relaxes: (13) without its adaptive term.
+  conflict_ = config_.adaptive_rho ? t_ratio * alignment - clipping : 0.0;
   return out;
 }
 

@@ -1,5 +1,6 @@
-// Offline closed loop: the controller driving an ideal unicycle after a reference, with
-// the target sampled at a chosen period. Shared by tests, the demo, the benchmark and the
+// Offline closed loop: a control law driving an ideal unicycle after a reference, the
+// target seen through a sampled, noisy, delayed sensor, among static or moving disks.
+// Fixed or variable step (step_size.h). Shared by tests, the demo, the benchmarks and the
 // offline simulator.
 #pragma once
 
@@ -8,27 +9,66 @@
 #include <vector>
 
 #include "amigobot_tracking/core/controller.h"
+#include "amigobot_tracking/core/metrics.h"
 #include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/step_size.h"
+#include "amigobot_tracking/core/target_sensor.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
 namespace core {
 
+// Which control law closes the loop.
+enum class ControlLaw {
+  kPaper,         // eqs. (9)-(13)
+  kFixedRho,      // (9)-(12) with rho following the prescribed decay only (no adaptation)
+  kProportional,  // feedback linearisation + k_p e + the same u_c and saturation (baseline_controller.h)
+};
+
+// Where the v_hat of the law comes from.
+enum class VelocitySource {
+  kPaperEstimator,    // eqs. (3)-(4)
+  kFiniteDifference,  // finite differences + first-order low-pass (baseline_estimators.h)
+  kKalman,            // constant-velocity Kalman filter
+};
+
+struct BaselineParams {
+  double k_p = 30.0;             // [1/s] gain of kProportional
+  double lowpass_tau = 0.05;     // [s] time constant of kFiniteDifference
+  double kalman_accel_std = 10.0;       // [m/s^2] process noise of kKalman
+  double kalman_measurement_std = 0.01; // [m] measurement noise of kKalman (> 0)
+};
+
 struct ClosedLoopSetup {
   ControllerConfig controller;
   Pose2 initial_pose;
   std::vector<Disk> obstacles;
+  // Obstacle velocities [m/s], one per obstacle (centre(t) = centre + velocity t); empty: static.
+  std::vector<Eigen::Vector2d> obstacle_velocities;
   double duration = 10.0;        // [s]
-  double control_period = 1e-3;  // [s] controller step and integration step
-  double sample_period = 0.0;    // [s] target sampling; 0 = every control step
+  double control_period = 1e-3;  // [s] controller and integration step (the fine step)
+  double max_step = 0.0;         // [s] > control_period: variable step up to this (step_size.h)
+  double sample_period = 0.0;    // [s] target sampling; 0 = every control step. Steps land on
+                                 // sample deliveries when sample_period >= max_step.
+  StepPolicy step_policy;        // thresholds of the variable step (its min/max come from above)
+  TargetSensorConfig sensor;     // noise, delay, jumps (its sample_period is replaced by the one above)
+  ControlLaw law = ControlLaw::kPaper;
+  VelocitySource velocity_source = VelocitySource::kPaperEstimator;
+  BaselineParams baseline;
+  double estimator_settle_time = 0.5;  // [s] estimator errors after this count as "settled"
 };
 
 // What an observer sees at every step: the state before the command is applied.
 struct ClosedLoopStep {
   double t = 0.0;
+  double h = 0.0;                  // [s] how long the command is held (0 at the last step)
   Pose2 pose;
-  ReferenceState reference;
+  ReferenceState reference;        // the true target
+  TargetSample sample;             // what the controller was given
   ControllerOutput output;
+  double clearance_offset = 0.0;   // disk of radius R around p_r to the nearest obstacle [m]
+  double clearance_body = 0.0;     // disk of radius R around the centre p [m]
+  const std::vector<Disk>* obstacles = nullptr;  // where the obstacles are at t
 };
 
 struct ClosedLoopSummary {
@@ -41,10 +81,15 @@ struct ClosedLoopSummary {
   std::uint64_t invalid_steps = 0;   // NaN or unusable inputs
   std::uint64_t envelope_widenings = 0;
   std::uint64_t saturated_steps = 0;
+  RunMetrics metrics;                // metrics.h (its offset clearance uses R, not R + r)
 };
 
 using ClosedLoopObserver = std::function<void(const ClosedLoopStep&)>;
 
+// Setup errors ("field: reason"), checked before anything runs; empty when valid.
+std::string validateSetup(const ClosedLoopSetup& setup);
+
+// The setup must be valid (validateSetup empty).
 ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& reference,
                                 const ClosedLoopObserver& observer = {});
 

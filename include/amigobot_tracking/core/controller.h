@@ -26,6 +26,10 @@ namespace core {
 struct TargetSample {
   double stamp = 0.0;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  // Optional target velocity from elsewhere (another estimator, the target's odometry):
+  // when has_velocity, it replaces the estimator's v_hat in (9); the estimator still runs.
+  bool has_velocity = false;
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
 };
 
 // A measurement of the robot pose taken at `stamp` [s].

@@ -23,6 +23,8 @@ struct ControllerConfig {
   double rho_0 = 1.0;          // [m] rho(0) (not given for the experiment: our choice).
   // Adaptive law (13).
   double k_r = 0.5;            // [-] relaxation gain.
+  bool adaptive_rho = true;    // false: the fixed-rho baseline, rho follows the prescribed
+                               // decay only (the relaxation term of (13) is dropped).
   // Avoidance (10).
   double delta = 0.25;         // [m] detection distance beyond contact (not given for the
                                // experiment; Table 1's 0.016 m is too short at 20 Hz).

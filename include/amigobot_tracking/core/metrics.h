@@ -1,0 +1,78 @@
+// Figures of merit of one closed-loop run, accumulated step by step.
+//
+// Every step contributes over the time h its command is held (zero-order hold: the state
+// is sampled at t_k and the command u_k acts on [t_k, t_k + h_k)), so the averages are
+// left Riemann sums of the continuous-time integrals and do not depend on whether the
+// step is fixed or variable:
+//   ASE = (1/T) sum h_k |e_k|^2          [m^2]   average squared tracking error
+//   AAE = (1/T) sum h_k |e_k|            [m]     average absolute tracking error
+//   TEC = sum h_k (v_k^2 + w_k^2)        [m^2/s + rad^2/s, numerically] control energy
+// with T = sum h_k and e = p_d - p_r. A collision is an episode: the step where a
+// clearance turns negative after being >= 0 (or at the start) counts one.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+
+#include <Eigen/Core>
+
+#include "amigobot_tracking/core/types.h"
+
+namespace amigobot_tracking {
+namespace core {
+
+// What one step shows the metrics.
+struct MetricSample {
+  double h = 0.0;                 // [s] time the command is held (0 for the last step)
+  Eigen::Vector2d e = Eigen::Vector2d::Zero();  // tracking error p_d - p_r [m]
+  double rho = 0.0;               // performance bound [m]; <= 0: the law has none
+  Twist2 u;                       // applied command
+  double diamond_norm = 0.0;      // |v|/v_max + |w|/w_max of the applied command
+  double clearance_offset = std::numeric_limits<double>::infinity();  // [m]
+  double clearance_body = std::numeric_limits<double>::infinity();    // [m]
+  Eigen::Vector2d velocity_error = Eigen::Vector2d::Zero();  // true minus estimated target velocity [m/s]
+  bool estimator_settled = false; // counts in the "after the transient" estimator figure
+  bool valid = true;              // the controller produced a command
+  bool saturated = false;
+  bool envelope_widened = false;
+};
+
+struct RunMetrics {
+  double ase = 0.0;               // [m^2]
+  double aae = 0.0;               // [m]
+  double tec = 0.0;
+  double max_e_over_rho = 0.0;
+  double max_rho = 0.0;           // [m]
+  double min_clearance_offset = std::numeric_limits<double>::infinity();  // [m]
+  double min_clearance_body = std::numeric_limits<double>::infinity();    // [m]
+  std::uint64_t offset_collisions = 0;  // contact episodes of the effective disk around p_r
+  std::uint64_t body_collisions = 0;    // contact episodes of the body disk
+  double offset_contact_time = 0.0;     // [s]
+  double body_contact_time = 0.0;       // [s]
+  std::uint64_t diamond_violations = 0; // steps with diamond_norm > 1 + 1e-9
+  std::uint64_t nan_count = 0;          // steps with a non-finite value or an invalid output
+  std::uint64_t saturated_steps = 0;
+  std::uint64_t envelope_widenings = 0;
+  double estimator_rms_error = 0.0;     // [m/s] time-RMS of |true - estimated velocity|
+  double estimator_max_error_settled = 0.0;  // [m/s] max after the transient
+  double final_error = 0.0;             // [m] |e| at the last step
+  double sim_time = 0.0;                // [s] T
+  std::uint64_t steps = 0;
+};
+
+class MetricsAccumulator {
+ public:
+  void add(const MetricSample& sample);
+  // The figures so far (averages over the time accumulated; zero before any time).
+  RunMetrics result() const;
+
+ private:
+  RunMetrics m_;
+  double sum_e2_ = 0.0, sum_e_ = 0.0, sum_v2_ = 0.0;
+  bool in_offset_contact_ = false, in_body_contact_ = false;
+};
+
+constexpr double kDiamondTolerance = 1e-9;
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,61 @@
+// Scenario files of the offline simulator (YAML): robot, controller, reference,
+// obstacles, simulation, and optional target sensor. Parsed strictly: a missing or
+// unknown key, a wrong type, an unknown reference type or an initial error outside rho(0)
+// is refused with a message naming the file and the key, before anything runs.
+// The format, key by key: config/scenarios/paper_5_2_rose.yaml.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "amigobot_tracking/core/closed_loop.h"
+#include "amigobot_tracking/core/reference.h"
+
+namespace amigobot_tracking {
+namespace sim {
+
+class ScenarioError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ReferenceSpec {
+  std::string type;  // rose | circle | spline
+  double amplitude = 0.0, k = 0.0, time_scale = 1.0;        // rose
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();          // circle
+  double radius = 0.0, period = 0.0;                         // circle
+  std::vector<Eigen::Vector2d> waypoints;                    // spline
+  double duration = 0.0;                                     // spline
+};
+
+struct Scenario {
+  std::string file;   // where it came from (for messages)
+  std::string name;   // file stem, or simulation.name
+  core::ClosedLoopSetup setup;
+  ReferenceSpec reference;
+  double log_period = 0.0;  // [s] CSV row spacing; 0 = every step
+
+  std::unique_ptr<core::Reference> makeReference() const;
+};
+
+// Reads and checks a scenario file. Throws ScenarioError("FILE: key: reason").
+Scenario loadScenario(const std::string& path);
+// The same from text; `file` only labels the messages.
+Scenario parseScenario(const std::string& text, const std::string& file);
+// The checks that need the whole scenario (controller and setup validation, |e(0)| < rho(0));
+// parseScenario runs them, and callers that change a scenario (overrides, Monte Carlo) call
+// them again. Throws ScenarioError.
+void checkScenario(const Scenario& scenario);
+
+// Names of the enumerations as in the YAML files.
+core::ControlLaw parseControlLaw(const std::string& name);          // throws std::invalid_argument
+core::VelocitySource parseVelocitySource(const std::string& name);  // throws std::invalid_argument
+std::string toString(core::ControlLaw law);
+std::string toString(core::VelocitySource source);
+
+}  // namespace sim
+}  // namespace amigobot_tracking

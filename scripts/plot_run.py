@@ -1,0 +1,173 @@
+#!/usr/bin/python3
+"""Plots one simulator run as the paper's Figures 3-8.
+
+Usage: /usr/bin/python3 scripts/plot_run.py DIR/trajectory.csv [--out DIR] [--dpi N]
+
+Reads the CSV written by amigobot_sim and, when present, metrics.json beside it (obstacles,
+diamond limits, radii). Writes fig3_xy.png, fig4_xy_time.png, fig5_error_rho.png,
+fig6_commands.png, fig7_diamond.png, fig8_estimator.png next to the CSV (or into --out).
+"""
+import argparse
+import csv
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def load(csv_path):
+    with open(csv_path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader)
+        rows = [[float(x) for x in row] for row in reader if row]
+    if not rows:
+        sys.exit(f"plot_run.py: {csv_path}: no rows")
+    data = np.array(rows)
+    return {name: data[:, i] for i, name in enumerate(header)}
+
+
+def load_meta(csv_path):
+    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)), "metrics.json")
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        return json.load(f).get("scenario", {})
+
+
+def save(fig, out_dir, name, dpi):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, name), dpi=dpi)
+    plt.close(fig)
+
+
+def fig3_xy(d, meta, out_dir, dpi, title):
+    fig, ax = plt.subplots(figsize=(6, 6))
+    t_end = d["t"][-1]
+    for obs in meta.get("obstacles", []):
+        c, r, v = obs["center"], obs["radius"], obs.get("velocity", [0, 0])
+        moving = any(abs(x) > 0 for x in v)
+        ax.add_patch(plt.Circle(c, r, color="0.5", alpha=0.6))
+        if moving:
+            end = [c[0] + v[0] * t_end, c[1] + v[1] * t_end]
+            ax.add_patch(plt.Circle(end, r, color="0.5", alpha=0.25))
+            ax.plot([c[0], end[0]], [c[1], end[1]], ":", color="0.5")
+    ax.plot(d["p_d_x"], d["p_d_y"], "g-", lw=1.2, label="reference $p_d$")
+    ax.plot(d["x"], d["y"], "r-", lw=1.0, label="robot centre $p$")
+    ax.plot(d["p_r_x"], d["p_r_y"], "b--", lw=0.6, label="offset point $p_r$")
+    radius = meta.get("robot_radius")
+    if radius:
+        worst = int(np.argmin(d["clearance_body"]))
+        ax.add_patch(plt.Circle((d["x"][worst], d["y"][worst]), radius, fill=False, color="r", lw=0.8,
+                                label=f"body at min clearance ({d['clearance_body'][worst]:.3f} m)"))
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_title(f"Fig. 3: path — {title}", fontsize=9)
+    ax.legend(fontsize=7, loc="best")
+    ax.grid(alpha=0.3)
+    save(fig, out_dir, "fig3_xy.png", dpi)
+
+
+def fig4_xy_time(d, out_dir, dpi, title):
+    fig, axes = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
+    for ax, axis in zip(axes, "xy"):
+        ax.plot(d["t"], d[f"p_d_{axis}"], "g-", label=f"${axis}_d$")
+        ax.plot(d["t"], d[axis], "r-", lw=0.9, label=f"${axis}$ (centre)")
+        ax.set_ylabel(f"{axis} [m]")
+        ax.legend(fontsize=7)
+        ax.grid(alpha=0.3)
+    axes[-1].set_xlabel("t [s]")
+    axes[0].set_title(f"Fig. 4: position against time — {title}", fontsize=9)
+    save(fig, out_dir, "fig4_xy_time.png", dpi)
+
+
+def fig5_error(d, out_dir, dpi, title):
+    fig, ax = plt.subplots(figsize=(7, 3.5))
+    ax.plot(d["t"], d["e_norm"], "r-", lw=0.9, label=r"$\|e\|$")
+    if np.any(d["rho"] > 0):
+        ax.plot(d["t"], d["rho"], "k-", lw=1.0, label=r"$\rho(t)$")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("[m]")
+    ax.set_title(f"Fig. 5: tracking error against the performance function — {title}", fontsize=9)
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+    save(fig, out_dir, "fig5_error_rho.png", dpi)
+
+
+def fig6_commands(d, out_dir, dpi, title):
+    fig, axes = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
+    axes[0].plot(d["t"], d["v_d"], "c-", lw=0.7, label="$v_d$ desired")
+    axes[0].plot(d["t"], d["v"], "b-", lw=0.9, label="$v$ applied")
+    axes[0].set_ylabel("v [m/s]")
+    axes[1].plot(d["t"], d["omega_d"], "c-", lw=0.7, label=r"$\omega_d$ desired")
+    axes[1].plot(d["t"], d["omega"], "b-", lw=0.9, label=r"$\omega$ applied")
+    axes[1].set_ylabel(r"$\omega$ [rad/s]")
+    for ax in axes:
+        ax.legend(fontsize=7)
+        ax.grid(alpha=0.3)
+    axes[-1].set_xlabel("t [s]")
+    axes[0].set_title(f"Fig. 6: commands — {title}", fontsize=9)
+    save(fig, out_dir, "fig6_commands.png", dpi)
+
+
+def fig7_diamond(d, meta, out_dir, dpi, title):
+    v_max = meta.get("v_max") or float(np.max(np.abs(d["v"])))
+    w_max = meta.get("w_max") or float(np.max(np.abs(d["omega"])))
+    fig, ax = plt.subplots(figsize=(5, 5))
+    ax.fill([v_max, 0, -v_max, 0], [0, w_max, 0, -w_max], color="tab:blue", alpha=0.15, label="U")
+    ax.plot(d["v"], d["omega"], "r.", ms=1.5, label="applied $u$")
+    ax.set_xlabel("v [m/s]")
+    ax.set_ylabel(r"$\omega$ [rad/s]")
+    ax.set_title(f"Fig. 7: u inside the diamond U — {title}", fontsize=9)
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+    save(fig, out_dir, "fig7_diamond.png", dpi)
+
+
+def fig8_estimator(d, meta, out_dir, dpi, title):
+    fig, axes = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
+    for ax, axis in zip(axes, "xy"):
+        err = d[f"v_d_{axis}"] - d[f"v_hat_{axis}"]
+        ax.plot(d["t"], err, "m-", lw=0.8, label=rf"$\dot{{{axis}}}_d - \hat v_{axis}$")
+        ax.set_ylabel("[m/s]")
+        ax.legend(fontsize=7)
+        ax.grid(alpha=0.3)
+        settled = d["t"] > 0.5
+        if np.any(settled):
+            lim = max(1e-3, 1.2 * float(np.max(np.abs(err[settled]))))
+            ax.set_ylim(-lim, lim)
+    axes[-1].set_xlabel("t [s]")
+    axes[0].set_title(f"Fig. 8: velocity estimation error ({meta.get('estimator', 'paper')}; "
+                      f"transient t < 0.5 s clipped) — {title}", fontsize=9)
+    save(fig, out_dir, "fig8_estimator.png", dpi)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("csv", help="trajectory.csv written by amigobot_sim")
+    parser.add_argument("--out", help="folder for the PNGs (default: beside the CSV)")
+    parser.add_argument("--dpi", type=int, default=90)
+    args = parser.parse_args()
+    if not os.path.exists(args.csv):
+        sys.exit(f"plot_run.py: {args.csv}: no such file")
+    d = load(args.csv)
+    meta = load_meta(args.csv)
+    out_dir = args.out or os.path.dirname(os.path.abspath(args.csv))
+    os.makedirs(out_dir, exist_ok=True)
+    title = f"{meta.get('name', os.path.basename(out_dir))} [{meta.get('variant', '?')}]"
+    fig3_xy(d, meta, out_dir, args.dpi, title)
+    fig4_xy_time(d, out_dir, args.dpi, title)
+    fig5_error(d, out_dir, args.dpi, title)
+    fig6_commands(d, out_dir, args.dpi, title)
+    fig7_diamond(d, meta, out_dir, args.dpi, title)
+    fig8_estimator(d, meta, out_dir, args.dpi, title)
+    print(f"plot_run.py: 6 figures in {out_dir}")
+
+
+if __name__ == "__main__":
+    main()

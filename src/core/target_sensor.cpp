@@ -1,0 +1,67 @@
+#include "amigobot_tracking/core/target_sensor.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace amigobot_tracking {
+namespace core {
+
+std::string TargetSensorConfig::validate() const {
+  std::ostringstream err;
+  if (!std::isfinite(sample_period) || sample_period < 0.0)
+    err << "sample_period must be >= 0 (0 = every step), got " << sample_period;
+  else if (!std::isfinite(noise_std) || noise_std < 0.0)
+    err << "noise_std must be >= 0, got " << noise_std;
+  else if (!std::isfinite(delay) || delay < 0.0)
+    err << "delay must be >= 0, got " << delay;
+  else
+    for (const TargetJump& jump : jumps)
+      if (!std::isfinite(jump.t) || !jump.offset.allFinite()) {
+        err << "jumps: every jump needs a finite t and offset";
+        break;
+      }
+  return err.str();
+}
+
+TargetSensor::TargetSensor(const TargetSensorConfig& config, const Reference& reference)
+    : config_(config), reference_(reference), rng_(config.seed), noise_(0.0, 1.0) {
+  sample_ = take(0.0);
+  index_ = 0;
+}
+
+TargetSample TargetSensor::take(double t_taken) {
+  TargetSample s;
+  s.stamp = t_taken;
+  s.position = reference_.at(t_taken).position;
+  for (const TargetJump& jump : config_.jumps)
+    if (t_taken >= jump.t) s.position += jump.offset;
+  if (config_.noise_std > 0.0) s.position += config_.noise_std * Eigen::Vector2d(noise_(rng_), noise_(rng_));
+  return s;
+}
+
+const TargetSample& TargetSensor::at(double t) {
+  const double taken_by = t - config_.delay;
+  if (taken_by <= 0.0) return sample_;
+  if (config_.sample_period <= 0.0) {
+    if (taken_by > sample_.stamp) sample_ = take(taken_by);
+    return sample_;
+  }
+  // Small tolerance: steps that land on a sample time by summation must take it.
+  const auto index = static_cast<std::int64_t>(std::floor(taken_by / config_.sample_period + 1e-9));
+  if (index > index_) {
+    index_ = index;
+    sample_ = take(static_cast<double>(index) * config_.sample_period);
+  }
+  return sample_;
+}
+
+double TargetSensor::nextDelivery(double t) const {
+  if (config_.sample_period <= 0.0) return std::numeric_limits<double>::infinity();
+  const double taken_by = t - config_.delay;
+  const double next_index = std::floor(taken_by / config_.sample_period + 1e-9) + 1.0;
+  return std::max(0.0, next_index) * config_.sample_period + config_.delay;
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,103 @@
+#include "amigobot_tracking/sim/monte_carlo.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/sim/simulator.h"
+
+namespace amigobot_tracking {
+namespace sim {
+namespace {
+
+Eigen::Vector2d inDisk(std::mt19937_64& rng, double radius) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double r = radius * std::sqrt(unit(rng)), a = 2.0 * M_PI * unit(rng);
+  return {r * std::cos(a), r * std::sin(a)};
+}
+
+bool acceptable(const Scenario& s) {
+  const core::ClosedLoopSetup& setup = s.setup;
+  const core::ControllerConfig& c = setup.controller;
+  const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, c.offset);
+  const Eigen::Vector2d p_d = s.makeReference()->at(0.0).position;
+  if ((p_d - p_r).norm() >= c.max_error_ratio * c.rho_0) return false;
+  return core::clearance(p_r, c.effectiveRadius() + c.delta, setup.obstacles) > 0.0 &&
+         core::clearance(setup.initial_pose.position(), c.robot_radius, setup.obstacles) > 0.0;
+}
+
+}  // namespace
+
+Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, std::uint64_t index) {
+  std::mt19937_64 rng(options.seed * 1000003ULL + index);
+  std::uniform_real_distribution<double> heading(-options.heading_shift, options.heading_shift);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    Scenario s = base;
+    for (core::Disk& d : s.setup.obstacles) d.center += inDisk(rng, options.obstacle_shift);
+    const Eigen::Vector2d shift = inDisk(rng, options.pose_shift);
+    s.setup.initial_pose.x += shift.x();
+    s.setup.initial_pose.y += shift.y();
+    s.setup.initial_pose.theta = core::wrapAngle(s.setup.initial_pose.theta + heading(rng));
+    s.setup.sensor.seed = base.setup.sensor.seed + index + 1;
+    if (acceptable(s)) return s;
+  }
+  return base;
+}
+
+std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
+  int body_runs = 0, offset_runs = 0, violation_runs = 0, nan_runs = 0, bound_runs = 0;
+  double worst_body = std::numeric_limits<double>::infinity(), worst_offset = worst_body;
+  double worst_ratio = 0.0, sim_time = 0.0, wall = 0.0, sum_ase = 0.0, sum_aae = 0.0;
+  std::ostringstream per_run;
+  for (int i = 0; i < options.runs; ++i) {
+    const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
+    const RunResult r = runScenario(s, false);
+    const core::RunMetrics& m = r.summary.metrics;
+    body_runs += m.body_collisions > 0;
+    offset_runs += m.offset_collisions > 0;
+    violation_runs += m.diamond_violations > 0;
+    nan_runs += m.nan_count > 0;
+    bound_runs += m.max_e_over_rho >= 1.0;
+    worst_body = std::min(worst_body, m.min_clearance_body);
+    worst_offset = std::min(worst_offset, m.min_clearance_offset);
+    worst_ratio = std::max(worst_ratio, m.max_e_over_rho);
+    sim_time += m.sim_time;
+    wall += r.wall_time;
+    sum_ase += m.ase;
+    sum_aae += m.aae;
+    per_run << (i ? ",\n" : "") << "    {\"index\": " << i << ", \"initial_pose\": [" << jsonNumber(s.setup.initial_pose.x)
+            << ", " << jsonNumber(s.setup.initial_pose.y) << ", " << jsonNumber(s.setup.initial_pose.theta)
+            << "], \"ase\": " << jsonNumber(m.ase) << ", \"aae\": " << jsonNumber(m.aae)
+            << ", \"max_e_over_rho\": " << jsonNumber(m.max_e_over_rho)
+            << ", \"min_clearance_offset\": " << jsonNumber(m.min_clearance_offset)
+            << ", \"min_clearance_body\": " << jsonNumber(m.min_clearance_body)
+            << ", \"body_collisions\": " << m.body_collisions << ", \"offset_collisions\": " << m.offset_collisions
+            << ", \"diamond_violations\": " << m.diamond_violations << ", \"nan_count\": " << m.nan_count << "}";
+  }
+  const double n = std::max(1, options.runs);
+  std::ostringstream j;
+  j << "{\n  \"scenario\": \"" << base.file << "\",\n  \"runs\": " << options.runs << ",\n  \"seed\": " << options.seed
+    << ",\n  \"variant\": \"" << toString(base.setup.law) << "\",\n  \"body_safe\": "
+    << (base.setup.controller.body_safe ? "true" : "false") << ",\n  \"obstacle_shift\": "
+    << jsonNumber(options.obstacle_shift) << ",\n  \"pose_shift\": " << jsonNumber(options.pose_shift)
+    << ",\n  \"heading_shift\": " << jsonNumber(options.heading_shift)
+    << ",\n  \"runs_with_body_collision\": " << body_runs << ",\n  \"runs_with_offset_collision\": " << offset_runs
+    << ",\n  \"runs_with_diamond_violation\": " << violation_runs << ",\n  \"runs_with_nan\": " << nan_runs
+    << ",\n  \"runs_with_e_over_rho_ge_1\": " << bound_runs
+    << ",\n  \"worst_min_clearance_body\": " << jsonNumber(worst_body)
+    << ",\n  \"worst_min_clearance_offset\": " << jsonNumber(worst_offset)
+    << ",\n  \"worst_max_e_over_rho\": " << jsonNumber(worst_ratio) << ",\n  \"mean_ase\": " << jsonNumber(sum_ase / n)
+    << ",\n  \"mean_aae\": " << jsonNumber(sum_aae / n) << ",\n  \"sim_time_s\": " << jsonNumber(sim_time)
+    << ",\n  \"wall_time_s\": " << jsonNumber(wall)
+    << ",\n  \"realtime_factor\": " << jsonNumber(wall > 0.0 ? sim_time / wall : 0.0) << ",\n  \"per_run\": [\n"
+    << per_run.str() << "\n  ]\n}\n";
+  return j.str();
+}
+
+}  // namespace sim
+}  // namespace amigobot_tracking

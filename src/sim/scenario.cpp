@@ -1,0 +1,382 @@
+#include "amigobot_tracking/sim/scenario.h"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "amigobot_tracking/core/offset_point.h"
+
+namespace amigobot_tracking {
+namespace sim {
+namespace {
+
+[[noreturn]] void fail(const std::string& file, const YAML::Node& node, const std::string& key,
+                       const std::string& reason) {
+  std::ostringstream msg;
+  msg << file;
+  if (node.IsDefined() && node.Mark().line >= 0) msg << ":" << node.Mark().line + 1;
+  msg << ": " << key << ": " << reason;
+  throw ScenarioError(msg.str());
+}
+
+std::string describe(const YAML::Node& node) {
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+// A YAML mapping whose keys are read one by one; finish() refuses the keys never read.
+class Section {
+ public:
+  Section(const YAML::Node& node, std::string path, const std::string& file)
+      : node_(node), path_(std::move(path)), file_(file) {
+    if (!node.IsMap()) fail(file_, node, path_, "expected a mapping {key: value, ...}, got " + describe(node));
+  }
+
+  std::string key(const std::string& name) const { return path_.empty() ? name : path_ + "." + name; }
+  bool has(const std::string& name) const { return node_[name].IsDefined() && !node_[name].IsNull(); }
+
+  YAML::Node required(const std::string& name) {
+    used_.insert(name);
+    const YAML::Node value = node_[name];
+    if (!value.IsDefined() || value.IsNull()) fail(file_, node_, key(name), "missing (required)");
+    return value;
+  }
+  YAML::Node optional(const std::string& name) {
+    used_.insert(name);
+    return node_[name];
+  }
+
+  double number(const std::string& name) { return toNumber(required(name), key(name)); }
+  double number(const std::string& name, double fallback) {
+    return has(name) ? toNumber(optional(name), key(name)) : (used_.insert(name), fallback);
+  }
+  bool boolean(const std::string& name) { return toBool(required(name), key(name)); }
+  bool boolean(const std::string& name, bool fallback) {
+    return has(name) ? toBool(optional(name), key(name)) : (used_.insert(name), fallback);
+  }
+  std::string text(const std::string& name) { return toText(required(name), key(name)); }
+  std::string text(const std::string& name, const std::string& fallback) {
+    return has(name) ? toText(optional(name), key(name)) : (used_.insert(name), fallback);
+  }
+  std::vector<double> numbers(const std::string& name, size_t count) {
+    return toNumbers(required(name), key(name), count);
+  }
+  Eigen::Vector2d point(const std::string& name) {
+    const std::vector<double> v = numbers(name, 2);
+    return {v[0], v[1]};
+  }
+
+  void finish() const {
+    for (const auto& item : node_) {
+      const std::string name = item.first.as<std::string>();
+      if (!used_.count(name)) fail(file_, item.first, key(name), "unknown key (misspelt?)");
+    }
+  }
+
+  double toNumber(const YAML::Node& node, const std::string& where) const {
+    double value = 0.0;
+    if (!node.IsScalar() || !YAML::convert<double>::decode(node, value))
+      fail(file_, node, where, "expected a number, got " + describe(node));
+    if (!std::isfinite(value)) fail(file_, node, where, "must be finite, got " + describe(node));
+    return value;
+  }
+  bool toBool(const YAML::Node& node, const std::string& where) const {
+    bool value = false;
+    if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value))
+      fail(file_, node, where, "expected true or false, got " + describe(node));
+    return value;
+  }
+  std::string toText(const YAML::Node& node, const std::string& where) const {
+    if (!node.IsScalar()) fail(file_, node, where, "expected a word, got " + describe(node));
+    return node.Scalar();
+  }
+  std::vector<double> toNumbers(const YAML::Node& node, const std::string& where, size_t count) const {
+    if (!node.IsSequence() || node.size() != count)
+      fail(file_, node, where, "expected a list of " + std::to_string(count) + " numbers, got " + describe(node));
+    std::vector<double> out;
+    for (size_t i = 0; i < count; ++i) out.push_back(toNumber(node[i], where + "[" + std::to_string(i) + "]"));
+    return out;
+  }
+  const std::string& file() const { return file_; }
+  const YAML::Node& node() const { return node_; }
+
+ private:
+  YAML::Node node_;
+  std::string path_;
+  const std::string& file_;
+  std::set<std::string> used_;
+};
+
+double positive(Section& s, const std::string& name, double value) {
+  if (!(value > 0.0)) fail(s.file(), s.node()[name], s.key(name), "must be > 0, got " + std::to_string(value));
+  return value;
+}
+
+void parseRobot(Section s, core::ClosedLoopSetup& setup) {
+  core::ControllerConfig& c = setup.controller;
+  c.robot_radius = positive(s, "radius", s.number("radius"));
+  c.offset = positive(s, "offset", s.number("offset"));
+  c.v_max = positive(s, "v_max", s.number("v_max"));
+  c.w_max = positive(s, "w_max", s.number("w_max"));
+  const std::vector<double> pose = s.numbers("initial_pose", 3);
+  setup.initial_pose = {pose[0], pose[1], pose[2]};
+  s.finish();
+}
+
+void parseController(Section s, core::ClosedLoopSetup& setup) {
+  core::ControllerConfig& c = setup.controller;
+  c.k_d = s.number("k_d");
+  c.k_o = s.number("k_o");
+  c.k_r = s.number("k_r");
+  c.lambda = s.number("lambda");
+  c.rho_inf = s.number("rho_inf");
+  c.rho_0 = s.number("rho_0");
+  c.delta = s.number("delta");
+  c.estimator.a1 = s.number("a1");
+  c.estimator.a2 = s.number("a2");
+  c.estimator.lambda_o = s.number("lambda_o");
+  c.estimator.rho_o = s.number("rho_o");
+  c.estimator.rho_o0 = s.number("rho_o0");
+  c.body_safe = s.boolean("body_safe");
+  // Optional.
+  c.min_margin = s.number("min_margin", 1e-3);
+  c.max_error_ratio = s.number("max_error_ratio", c.max_error_ratio);
+  c.estimator.jump_threshold = s.number("jump_threshold", c.estimator.jump_threshold);
+  const std::string variant = s.text("variant", "paper");
+  try {
+    setup.law = parseControlLaw(variant);
+  } catch (const std::invalid_argument& e) {
+    fail(s.file(), s.node()["variant"], s.key("variant"), e.what());
+  }
+  const std::string estimator = s.text("estimator", "paper");
+  try {
+    setup.velocity_source = parseVelocitySource(estimator);
+  } catch (const std::invalid_argument& e) {
+    fail(s.file(), s.node()["estimator"], s.key("estimator"), e.what());
+  }
+  // The proportional baseline's default gain: the paper law's small-error stiffness at
+  // rho = rho_inf, k_d / rho_inf (T(s) ~ s).
+  setup.baseline.k_p = positive(s, "k_p", s.number("k_p", c.k_d / c.rho_inf));
+  setup.baseline.lowpass_tau = positive(s, "lowpass_tau", s.number("lowpass_tau", setup.baseline.lowpass_tau));
+  setup.baseline.kalman_accel_std =
+      positive(s, "kalman_accel_std", s.number("kalman_accel_std", setup.baseline.kalman_accel_std));
+  setup.baseline.kalman_measurement_std =
+      positive(s, "kalman_measurement_std", s.number("kalman_measurement_std", setup.baseline.kalman_measurement_std));
+  s.finish();
+}
+
+ReferenceSpec parseReference(Section s) {
+  ReferenceSpec r;
+  r.type = s.text("type");
+  if (r.type == "rose") {
+    r.amplitude = positive(s, "amplitude", s.number("amplitude"));
+    r.k = positive(s, "k", s.number("k"));
+    r.time_scale = positive(s, "time_scale", s.number("time_scale", 1.0));
+  } else if (r.type == "circle") {
+    r.center = s.point("center");
+    r.radius = positive(s, "radius", s.number("radius"));
+    r.period = positive(s, "period", s.number("period"));
+  } else if (r.type == "spline") {
+    const YAML::Node points = s.required("waypoints");
+    if (!points.IsSequence() || points.size() < 2)
+      fail(s.file(), points, s.key("waypoints"), "expected a list of at least 2 points [x, y], got " + describe(points));
+    for (size_t i = 0; i < points.size(); ++i) {
+      const std::vector<double> p = s.toNumbers(points[i], s.key("waypoints") + "[" + std::to_string(i) + "]", 2);
+      r.waypoints.emplace_back(p[0], p[1]);
+      if (i > 0 && (r.waypoints[i] - r.waypoints[i - 1]).norm() <= 0.0)
+        fail(s.file(), points[i], s.key("waypoints") + "[" + std::to_string(i) + "]",
+             "equals the previous waypoint (a spline needs distinct consecutive points)");
+    }
+    r.duration = positive(s, "duration", s.number("duration"));
+  } else {
+    fail(s.file(), s.node()["type"], s.key("type"), "unknown reference type '" + r.type + "' (rose, circle, spline)");
+  }
+  s.finish();
+  return r;
+}
+
+void parseObstacles(const YAML::Node& list, const std::string& file, core::ClosedLoopSetup& setup) {
+  if (!list.IsSequence()) fail(file, list, "obstacles", "expected a list of {center, radius}, got " + describe(list));
+  bool moving = false;
+  std::vector<Eigen::Vector2d> velocities;
+  for (size_t i = 0; i < list.size(); ++i) {
+    Section s(list[i], "obstacles[" + std::to_string(i) + "]", file);
+    core::Disk d;
+    d.center = s.point("center");
+    d.radius = positive(s, "radius", s.number("radius"));
+    Eigen::Vector2d v = Eigen::Vector2d::Zero();
+    if (s.has("velocity")) {
+      const std::vector<double> xy = s.toNumbers(s.optional("velocity"), s.key("velocity"), 2);
+      v = {xy[0], xy[1]};
+      moving = true;
+    } else {
+      s.optional("velocity");
+    }
+    s.finish();
+    setup.obstacles.push_back(d);
+    velocities.push_back(v);
+  }
+  if (moving) setup.obstacle_velocities = velocities;
+}
+
+void parseSimulation(Section s, Scenario& scenario) {
+  core::ClosedLoopSetup& setup = scenario.setup;
+  setup.duration = positive(s, "duration", s.number("duration"));
+  setup.control_period = positive(s, "control_period", s.number("control_period", 1e-3));
+  setup.max_step = s.number("max_step", 0.0);
+  scenario.log_period = s.number("log_period", 0.0);
+  if (scenario.log_period < 0.0) fail(s.file(), s.node()["log_period"], s.key("log_period"), "must be >= 0");
+  if (setup.max_step < 0.0) fail(s.file(), s.node()["max_step"], s.key("max_step"), "must be >= 0 (0 = fixed step)");
+  const double seed = s.number("seed", 1.0);
+  if (!(seed >= 0.0 && seed <= 9.0e15 && seed == std::floor(seed)))
+    fail(s.file(), s.node()["seed"], s.key("seed"), "must be a whole number >= 0");
+  setup.sensor.seed = static_cast<std::uint64_t>(seed);
+  core::StepPolicy& policy = setup.step_policy;
+  policy.comfortable_ratio = s.number("comfortable_ratio", policy.comfortable_ratio);
+  policy.tight_ratio = s.number("tight_ratio", policy.tight_ratio);
+  if (!(policy.comfortable_ratio >= 0.0 && policy.comfortable_ratio < policy.tight_ratio))
+    fail(s.file(), s.node()["comfortable_ratio"], s.key("comfortable_ratio"), "must be >= 0 and < tight_ratio");
+  scenario.name = s.text("name", scenario.name);
+  s.finish();
+}
+
+void parseTarget(Section s, core::ClosedLoopSetup& setup) {
+  setup.sample_period = s.number("sample_period", 0.0);
+  setup.sensor.noise_std = s.number("noise_std", 0.0);
+  setup.sensor.delay = s.number("delay", 0.0);
+  const YAML::Node jumps = s.optional("jumps");
+  if (jumps.IsDefined() && !jumps.IsNull()) {
+    if (!jumps.IsSequence()) fail(s.file(), jumps, s.key("jumps"), "expected a list of {t, offset}, got " + describe(jumps));
+    for (size_t i = 0; i < jumps.size(); ++i) {
+      Section j(jumps[i], s.key("jumps") + "[" + std::to_string(i) + "]", s.file());
+      core::TargetJump jump;
+      jump.t = j.number("t");
+      jump.offset = j.point("offset");
+      j.finish();
+      setup.sensor.jumps.push_back(jump);
+    }
+  }
+  s.finish();
+  const std::string err = setup.sensor.validate();
+  if (!err.empty()) fail(s.file(), s.node(), s.key(err.substr(0, err.find(' '))), err);
+  if (setup.sample_period < 0.0) fail(s.file(), s.node()["sample_period"], s.key("sample_period"), "must be >= 0");
+}
+
+std::string stem(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  const size_t dot = base.find_last_of('.');
+  return dot == std::string::npos ? base : base.substr(0, dot);
+}
+
+}  // namespace
+
+std::unique_ptr<core::Reference> Scenario::makeReference() const {
+  const ReferenceSpec& r = reference;
+  if (r.type == "rose") return std::make_unique<core::RoseReference>(r.amplitude, r.k, r.time_scale);
+  if (r.type == "circle") return std::make_unique<core::CircleReference>(r.center, r.radius, r.period);
+  return std::make_unique<core::SplineReference>(r.waypoints, r.duration);
+}
+
+core::ControlLaw parseControlLaw(const std::string& name) {
+  if (name == "paper") return core::ControlLaw::kPaper;
+  if (name == "fixed_rho") return core::ControlLaw::kFixedRho;
+  if (name == "proportional") return core::ControlLaw::kProportional;
+  throw std::invalid_argument("unknown controller variant '" + name + "' (paper, fixed_rho, proportional)");
+}
+
+core::VelocitySource parseVelocitySource(const std::string& name) {
+  if (name == "paper") return core::VelocitySource::kPaperEstimator;
+  if (name == "finite_difference") return core::VelocitySource::kFiniteDifference;
+  if (name == "kalman") return core::VelocitySource::kKalman;
+  throw std::invalid_argument("unknown estimator '" + name + "' (paper, finite_difference, kalman)");
+}
+
+std::string toString(core::ControlLaw law) {
+  switch (law) {
+    case core::ControlLaw::kPaper: return "paper";
+    case core::ControlLaw::kFixedRho: return "fixed_rho";
+    case core::ControlLaw::kProportional: return "proportional";
+  }
+  return "?";
+}
+
+std::string toString(core::VelocitySource source) {
+  switch (source) {
+    case core::VelocitySource::kPaperEstimator: return "paper";
+    case core::VelocitySource::kFiniteDifference: return "finite_difference";
+    case core::VelocitySource::kKalman: return "kalman";
+  }
+  return "?";
+}
+
+// The YAML key of a field named first in a validate() message.
+static std::string keyOf(const std::string& message) {
+  const std::string field = message.substr(0, message.find(' '));
+  for (const char* robot : {"radius", "offset", "v_max", "w_max", "initial_pose"})
+    if (field == robot) return "robot." + field;
+  for (const char* simulation : {"duration", "control_period", "max_step"})
+    if (field == simulation) return "simulation." + field;
+  for (const char* target : {"sample_period", "noise_std", "delay", "jumps:"})
+    if (field == target) return "target." + field.substr(0, field.find(':'));
+  if (field == "obstacles:" || field == "obstacle_velocities") return "obstacles";
+  return "controller." + field;
+}
+
+void checkScenario(const Scenario& scenario) {
+  const core::ClosedLoopSetup& setup = scenario.setup;
+  const std::string err = core::validateSetup(setup);
+  if (!err.empty()) throw ScenarioError(scenario.file + ": " + keyOf(err) + ": " + err);
+  const auto reference = scenario.makeReference();
+  const Eigen::Vector2d p_d = reference->at(0.0).position;
+  const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, setup.controller.offset);
+  const double e0 = (p_d - p_r).norm();
+  if (setup.law != core::ControlLaw::kProportional && !(e0 < setup.controller.rho_0)) {
+    std::ostringstream msg;
+    msg << scenario.file << ": controller.rho_0: " << setup.controller.rho_0
+        << " m is too small: the initial error |e(0)| = |p_d(0) - p_r(0)| is " << e0
+        << " m, and the paper requires |e(0)| < rho(0) (move robot.initial_pose or raise rho_0)";
+    throw ScenarioError(msg.str());
+  }
+}
+
+Scenario parseScenario(const std::string& text, const std::string& file) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ScenarioError(file + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
+  }
+  Scenario scenario;
+  scenario.file = file;
+  scenario.name = stem(file);
+  Section top(root, "", file);
+  parseRobot(Section(top.required("robot"), "robot", file), scenario.setup);
+  parseController(Section(top.required("controller"), "controller", file), scenario.setup);
+  scenario.reference = parseReference(Section(top.required("reference"), "reference", file));
+  const YAML::Node obstacles = top.optional("obstacles");
+  if (!obstacles.IsDefined()) fail(file, root, "obstacles", "missing (required; [] for none)");
+  if (!obstacles.IsNull()) parseObstacles(obstacles, file, scenario.setup);
+  parseSimulation(Section(top.required("simulation"), "simulation", file), scenario);
+  if (top.has("target")) parseTarget(Section(top.optional("target"), "target", file), scenario.setup);
+  else top.optional("target");
+  top.finish();
+  checkScenario(scenario);
+  return scenario;
+}
+
+Scenario loadScenario(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ScenarioError(path + ": cannot open the scenario file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseScenario(text.str(), path);
+}
+
+}  // namespace sim
+}  // namespace amigobot_tracking

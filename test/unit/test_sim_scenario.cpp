@@ -1,0 +1,165 @@
+// Scenario files: the issue's minimum is accepted as is; every bad input is refused with a
+// message naming the file and the key, before anything runs.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "amigobot_tracking/sim/scenario.h"
+
+using namespace amigobot_tracking;
+
+namespace {
+
+// The minimum of issue 3, verbatim.
+const std::string kMinimum = R"(
+robot:      {radius: 0.2, offset: 0.3, v_max: 5.0, w_max: 5.0, initial_pose: [2.0, -0.5, 1.5708]}
+controller: {k_d: 3, k_o: 1, k_r: 0.5, lambda: 5, rho_inf: 0.1, rho_0: 1.84, delta: 0.016,
+             a1: 1, a2: 1, lambda_o: 30, rho_o: 0.01, rho_o0: 1.0, body_safe: false}
+reference:  {type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}
+obstacles:  [{center: [1.5, 0.0], radius: 0.15}]
+simulation: {duration: 6.283}
+)";
+
+std::string replaced(const std::string& text, const std::string& from, const std::string& to) {
+  std::string out = text;
+  const size_t at = out.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the scenario";
+  if (at != std::string::npos) out.replace(at, from.size(), to);
+  return out;
+}
+
+// Parsing must fail with a message that names the file and contains `key`.
+void expectRefused(const std::string& text, const std::string& key) {
+  try {
+    sim::parseScenario(text, "bad.yaml");
+    ADD_FAILURE() << "accepted a scenario with a bad " << key;
+  } catch (const sim::ScenarioError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind("bad.yaml", 0), 0u) << "message does not start with the file: " << msg;
+    EXPECT_NE(msg.find(key), std::string::npos) << "message does not name '" << key << "': " << msg;
+  }
+}
+
+}  // namespace
+
+TEST(SimScenario, AcceptsTheIssueMinimumExactly) {
+  const sim::Scenario s = sim::parseScenario(kMinimum, "min.yaml");
+  EXPECT_EQ(s.reference.type, "rose");
+  EXPECT_DOUBLE_EQ(s.setup.controller.v_max, 5.0);
+  EXPECT_DOUBLE_EQ(s.setup.controller.rho_0, 1.84);
+  EXPECT_DOUBLE_EQ(s.setup.controller.estimator.lambda_o, 30.0);
+  EXPECT_FALSE(s.setup.controller.body_safe);
+  ASSERT_EQ(s.setup.obstacles.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.setup.obstacles[0].radius, 0.15);
+  EXPECT_DOUBLE_EQ(s.setup.duration, 6.283);
+  EXPECT_DOUBLE_EQ(s.setup.initial_pose.theta, 1.5708);
+  EXPECT_EQ(s.setup.law, core::ControlLaw::kPaper);
+  EXPECT_EQ(s.name, "min");
+}
+
+TEST(SimScenario, AcceptsCircleAndSplineReferences) {
+  const auto circle = sim::parseScenario(
+      replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}", "{type: circle, center: [0, 0], radius: 2, period: 20}"),
+      "c.yaml");
+  EXPECT_EQ(circle.reference.type, "circle");
+  EXPECT_NEAR(circle.makeReference()->at(0.0).position.x(), 2.0, 1e-12);
+  const auto spline = sim::parseScenario(
+      replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}",
+               "{type: spline, waypoints: [[3, 0], [2, 1], [0, 2]], duration: 60}"),
+      "s.yaml");
+  ASSERT_EQ(spline.reference.waypoints.size(), 3u);
+  EXPECT_NEAR(spline.makeReference()->at(60.0).position.y(), 2.0, 1e-12);
+}
+
+TEST(SimScenario, ReadsOptionalKeys) {
+  std::string text = replaced(kMinimum, "body_safe: false}", "body_safe: true, variant: proportional, estimator: kalman, k_p: 7}");
+  text = replaced(text, "{duration: 6.283}", "{duration: 6.283, control_period: 0.002, max_step: 0.01, seed: 5}");
+  text += "target: {sample_period: 0.1, noise_std: 0.01, delay: 0.05, jumps: [{t: 2, offset: [0.3, 0]}]}\n";
+  const sim::Scenario s = sim::parseScenario(text, "opt.yaml");
+  EXPECT_TRUE(s.setup.controller.body_safe);
+  EXPECT_EQ(s.setup.law, core::ControlLaw::kProportional);
+  EXPECT_EQ(s.setup.velocity_source, core::VelocitySource::kKalman);
+  EXPECT_DOUBLE_EQ(s.setup.baseline.k_p, 7.0);
+  EXPECT_DOUBLE_EQ(s.setup.control_period, 0.002);
+  EXPECT_DOUBLE_EQ(s.setup.max_step, 0.01);
+  EXPECT_EQ(s.setup.sensor.seed, 5u);
+  EXPECT_DOUBLE_EQ(s.setup.sample_period, 0.1);
+  EXPECT_DOUBLE_EQ(s.setup.sensor.noise_std, 0.01);
+  EXPECT_DOUBLE_EQ(s.setup.sensor.delay, 0.05);
+  ASSERT_EQ(s.setup.sensor.jumps.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.setup.sensor.jumps[0].offset.x(), 0.3);
+}
+
+TEST(SimScenario, ProportionalGainDefaultsToTheLinearisedPaperGain) {
+  const sim::Scenario s = sim::parseScenario(replaced(kMinimum, "body_safe: false}", "body_safe: false, variant: proportional}"), "p.yaml");
+  EXPECT_DOUBLE_EQ(s.setup.baseline.k_p, 3.0 / 0.1);  // k_d / rho_inf
+}
+
+TEST(SimScenario, RefusesMissingKeys) {
+  expectRefused(replaced(kMinimum, "v_max: 5.0, ", ""), "robot.v_max");
+  expectRefused(replaced(kMinimum, "k_d: 3, ", ""), "controller.k_d");
+  expectRefused(replaced(kMinimum, "body_safe: false", "a3: 1"), "controller.body_safe");
+  expectRefused(replaced(kMinimum, "type: rose, ", ""), "reference.type");
+  expectRefused(replaced(kMinimum, "amplitude: 3.0, ", ""), "reference.amplitude");
+  expectRefused(replaced(kMinimum, "obstacles:  [{center: [1.5, 0.0], radius: 0.15}]\n", ""), "obstacles");
+  expectRefused(replaced(kMinimum, "{duration: 6.283}", "{seed: 1}"), "simulation.duration");
+  expectRefused(replaced(kMinimum, "{center: [1.5, 0.0], radius: 0.15}", "{center: [1.5, 0.0]}"), "obstacles[0].radius");
+  expectRefused(replaced(kMinimum, "simulation: {duration: 6.283}\n", ""), "simulation");
+}
+
+TEST(SimScenario, RefusesWrongTypes) {
+  expectRefused(replaced(kMinimum, "k_d: 3", "k_d: fast"), "controller.k_d");
+  expectRefused(replaced(kMinimum, "body_safe: false", "body_safe: maybe"), "controller.body_safe");
+  expectRefused(replaced(kMinimum, "initial_pose: [2.0, -0.5, 1.5708]", "initial_pose: [2.0, -0.5]"), "robot.initial_pose");
+  expectRefused(replaced(kMinimum, "initial_pose: [2.0, -0.5, 1.5708]", "initial_pose: [2.0, x, 1]"), "robot.initial_pose[1]");
+  expectRefused(replaced(kMinimum, "v_max: 5.0", "v_max: [5.0]"), "robot.v_max");
+  expectRefused(replaced(kMinimum, "v_max: 5.0", "v_max: .nan"), "robot.v_max");
+  expectRefused(replaced(kMinimum, "robot:      {", "robot: [1, 2]\nunused: {"), "robot");
+  expectRefused(replaced(kMinimum, "[{center: [1.5, 0.0], radius: 0.15}]", "{center: [1.5, 0.0]}"), "obstacles");
+}
+
+TEST(SimScenario, RefusesUnknownReferenceTypeAndUnknownKeys) {
+  expectRefused(replaced(kMinimum, "type: rose", "type: lemniscate"), "reference.type");
+  expectRefused(replaced(kMinimum, "k_o: 1", "k_o: 1, k_oo: 2"), "controller.k_oo");
+  expectRefused(replaced(kMinimum, "simulation:", "simulaton: {duration: 1}\nsimulation:"), "simulaton");
+  expectRefused(replaced(kMinimum, "body_safe: false}", "body_safe: false, variant: pid}"), "controller.variant");
+  expectRefused(replaced(kMinimum, "body_safe: false}", "body_safe: false, estimator: magic}"), "controller.estimator");
+}
+
+TEST(SimScenario, RefusesRho0TooSmallForTheInitialError) {
+  // p_r(0) = (2, -0.2), p_d(0) = (3, 0): |e(0)| = 1.02 m.
+  expectRefused(replaced(kMinimum, "rho_0: 1.84", "rho_0: 1.0"), "controller.rho_0");
+  expectRefused(replaced(kMinimum, "rho_0: 1.84", "rho_0: 0.05"), "controller.rho_0");  // <= rho_inf
+}
+
+TEST(SimScenario, RefusesOutOfRangeValues) {
+  expectRefused(replaced(kMinimum, "radius: 0.15", "radius: -0.15"), "obstacles[0].radius");
+  expectRefused(replaced(kMinimum, "v_max: 5.0", "v_max: 0"), "robot.v_max");
+  expectRefused(replaced(kMinimum, "k_r: 0.5", "k_r: -1"), "controller.k_r");
+  expectRefused(replaced(kMinimum, "lambda_o: 30", "lambda_o: 0"), "controller.lambda_o");
+  expectRefused(replaced(kMinimum, "{duration: 6.283}", "{duration: -1}"), "simulation.duration");
+  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}",
+                         "{type: spline, waypoints: [[0, 0]], duration: 10}"),
+                "reference.waypoints");
+  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}",
+                         "{type: spline, waypoints: [[3, 0], [3, 0]], duration: 10}"),
+                "reference.waypoints[1]");
+  expectRefused(kMinimum + "target: {delay: -0.1}\n", "target.delay");
+}
+
+TEST(SimScenario, RefusesBrokenYamlAndMissingFiles) {
+  expectRefused("robot: {radius: 0.2\n", "not valid YAML");
+  try {
+    sim::loadScenario("/nonexistent/scenario.yaml");
+    ADD_FAILURE() << "loaded a missing file";
+  } catch (const sim::ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scenario.yaml"), std::string::npos);
+  }
+}
+
+TEST(SimScenario, ShippedScenariosLoad) {
+  for (const char* name : {"paper_5_1", "paper_5_2_rose", "experiment_5_3"}) {
+    const std::string path = std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/" + name + ".yaml";
+    EXPECT_NO_THROW(sim::loadScenario(path)) << path;
+  }
+}
