@@ -6,9 +6,6 @@ function(amigobot_add_tool name)
   install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endfunction()
 
-amigobot_add_tool(closed_loop_demo src/tools/closed_loop_demo.cpp)
-target_link_libraries(closed_loop_demo amigobot_tracking_core)
-
 amigobot_add_tool(amigobot_sim src/tools/amigobot_sim.cpp)
 target_link_libraries(amigobot_sim amigobot_tracking_sim)
 target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/plot_run.py")
