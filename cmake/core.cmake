@@ -10,6 +10,8 @@ add_library(amigobot_tracking_core
   src/core/unicycle.cpp
   src/core/reference.cpp
   src/core/closed_loop.cpp
+  src/core/scan_obstacles.cpp
+  src/core/virtual_obstacles.cpp
 )
 target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)

@@ -17,3 +17,7 @@ amigobot_add_unit_test(test_controller_config test/unit/test_controller_config.c
 target_link_libraries(test_controller_config amigobot_tracking_core)
 amigobot_add_unit_test(test_closed_loop test/unit/test_closed_loop.cpp)
 target_link_libraries(test_closed_loop amigobot_tracking_core)
+amigobot_add_unit_test(test_scan_obstacles test/unit/test_scan_obstacles.cpp)
+target_link_libraries(test_scan_obstacles amigobot_tracking_core)
+amigobot_add_unit_test(test_virtual_obstacles test/unit/test_virtual_obstacles.cpp)
+target_link_libraries(test_virtual_obstacles amigobot_tracking_core)
