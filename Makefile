@@ -37,6 +37,8 @@ bench: build
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(CATKIN) bench_scan_obstacles
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_scan_obstacles --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(CATKIN) bench_tracking_cycle
+	$(SETUP) && $(ROOT)/scripts/with_private_roscore.sh $(WS)/devel/lib/amigobot_tracking/bench_tracking_cycle --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
 clean:
 	rm -rf $(WS)

@@ -165,6 +165,11 @@ bool TrackingNode::enabled() const {
   return enabled_;
 }
 
+std::string TrackingNode::status() const {
+  std::lock_guard<std::mutex> lock(state_mutex_);
+  return status_;
+}
+
 CycleStats TrackingNode::cycleStats() const {
   std::lock_guard<std::mutex> lock(state_mutex_);
   return stats_;

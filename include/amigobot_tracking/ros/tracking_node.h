@@ -70,6 +70,7 @@ class TrackingNode {
   void controlCycle(const ros::Time& now);
 
   bool enabled() const;
+  std::string status() const;  // "disabled", "tracking", or why the command is zero
   CycleStats cycleStats() const;
   tf2_ros::Buffer& tfBuffer() { return *tf_; }
   // The laser input after the tf2 MessageFilter (public for the benchmark).
