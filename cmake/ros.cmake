@@ -21,4 +21,4 @@ amigobot_add_tool(tracking_node src/ros/tracking_node_main.cpp)
 target_link_libraries(tracking_node amigobot_tracking_ros)
 
 amigobot_add_tool(reference_publisher src/tools/reference_publisher.cpp)
-target_link_libraries(reference_publisher amigobot_tracking_core ${catkin_LIBRARIES})
+target_link_libraries(reference_publisher amigobot_tracking_ros)

@@ -32,3 +32,5 @@ add_rostest_gtest(test_tracking_bad_param test/rostest/tracking_bad_param.test t
 target_link_libraries(test_tracking_bad_param ${catkin_LIBRARIES})
 target_compile_options(test_tracking_bad_param PRIVATE ${AMIGOBOT_WARNINGS})
 add_dependencies(test_tracking_bad_param ${PROJECT_NAME}_generate_messages_cpp)
+amigobot_add_unit_test(test_tracking_params test/unit/test_tracking_params.cpp)
+target_link_libraries(test_tracking_params amigobot_tracking_ros)

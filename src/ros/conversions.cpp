@@ -48,6 +48,19 @@ geometry_msgs::Twist toTwist(const core::Twist2& u) {
   return m;
 }
 
+geometry_msgs::TransformStamped toTransform(const std::string& parent, const std::string& child,
+                                            const core::Pose2& pose, const ros::Time& stamp) {
+  geometry_msgs::TransformStamped t;
+  t.header.stamp = stamp;
+  t.header.frame_id = parent;
+  t.child_frame_id = child;
+  t.transform.translation.x = pose.x;
+  t.transform.translation.y = pose.y;
+  t.transform.rotation.z = std::sin(0.5 * pose.theta);
+  t.transform.rotation.w = std::cos(0.5 * pose.theta);
+  return t;
+}
+
 void fillState(const core::ControllerOutput& out, TrackingState* s) {
   s->valid = out.valid;
   s->t = out.t;

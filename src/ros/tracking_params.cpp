@@ -148,19 +148,20 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
       !readParam(pnh, "urdf_offset_link", &offset_link, &error)) {
     return error;
   }
-  std::string xml;
-  if (pnh.getParam(description_param, xml)) {  // relative: searched up from ~ (ROS 1 rules)
+  std::string xml, key;
+  // Relative names are searched from ~ upwards (the usual /robot_description, or a namespaced one).
+  if (pnh.searchParam(description_param, key) && pnh.getParam(key, xml)) {
     UrdfGeometry urdf;
     const std::string why = readUrdfGeometry(xml, node.base_frame, offset_link, &urdf);
-    if (!why.empty()) return "parameter " + pnh.resolveName(description_param) + ": " + why;
+    if (!why.empty()) return "parameter " + key + ": " + why;
     if (urdf.found_radius) c->robot_radius = urdf.radius;
     if (urdf.found_offset) c->offset = urdf.offset;
-    ROS_INFO_STREAM_NAMED("tracking", "  URDF " << description_param << ": radius "
+    ROS_INFO_STREAM_NAMED("tracking", "  URDF " << key << ": radius "
                                                 << (urdf.found_radius ? std::to_string(urdf.radius) : "not found")
                                                 << ", offset link '" << offset_link << "' "
                                                 << (urdf.found_offset ? std::to_string(urdf.offset) : "not found"));
   } else {
-    ROS_INFO_STREAM_NAMED("tracking", "  no URDF at " << pnh.resolveName(description_param)
+    ROS_INFO_STREAM_NAMED("tracking", "  no URDF '" << description_param << "' on the parameter server"
                                                       << ": robot_radius and offset come from parameters/defaults");
   }
   core::EstimatorConfig& e = c->estimator;

@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include <geometry_msgs/TransformStamped.h>
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/core/waypoint_reference.h"
+#include "amigobot_tracking/ros/conversions.h"
 
 using amigobot_tracking::core::Reference;
 
@@ -147,15 +147,9 @@ int main(int argc, char** argv) {
     const double tau = std::max(0.0, (now - start).toSec() - start_delay) / time_scale;
     const amigobot_tracking::core::ReferenceState s = reference->at(tau);
     if (s.velocity.norm() > 1e-6) heading = std::atan2(s.velocity.y(), s.velocity.x());
-    geometry_msgs::TransformStamped t;
-    t.header.stamp = now;
-    t.header.frame_id = global_frame;
-    t.child_frame_id = target_frame;
-    t.transform.translation.x = origin.x() + s.position.x();
-    t.transform.translation.y = origin.y() + s.position.y();
-    t.transform.rotation.z = std::sin(0.5 * heading);
-    t.transform.rotation.w = std::cos(0.5 * heading);
-    broadcaster.sendTransform(t);
+    const Eigen::Vector2d at = origin + s.position;
+    broadcaster.sendTransform(
+        amigobot_tracking::ros_layer::toTransform(global_frame, target_frame, {at.x(), at.y(), heading}, now));
     ros::spinOnce();
     loop.sleep();
   }

@@ -17,24 +17,13 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "amigobot_tracking/TrackingState.h"
+#include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/tracking_node.h"
 
+using amigobot_tracking::ros_layer::toTransform;
 using amigobot_tracking::ros_layer::TrackingNode;
 
 namespace {
-
-geometry_msgs::TransformStamped transform(const std::string& parent, const std::string& child, double x, double y,
-                                          double yaw, const ros::Time& stamp) {
-  geometry_msgs::TransformStamped t;
-  t.header.stamp = stamp;
-  t.header.frame_id = parent;
-  t.child_frame_id = child;
-  t.transform.translation.x = x;
-  t.transform.translation.y = y;
-  t.transform.rotation.z = std::sin(0.5 * yaw);
-  t.transform.rotation.w = std::cos(0.5 * yaw);
-  return t;
-}
 
 // A 720-beam scan of a 6 x 4 m room seen from its centre.
 sensor_msgs::LaserScan::Ptr roomScan() {
@@ -84,17 +73,18 @@ void BM_ControlCycle(benchmark::State& state) {
     state_sub = pnh.subscribe("state", 1, &ignore<amigobot_tracking::TrackingState>);
     marker_sub = pnh.subscribe("markers", 1, &ignore<visualization_msgs::MarkerArray>);
   }
-  buffer->setTransform(transform("base_link", "laser", 0.1, 0.0, 0.0, ros::Time(0)), "bench", true);
+  buffer->setTransform(toTransform("base_link", "laser", {0.1, 0.0, 0.0}, ros::Time(0)), "bench", true);
   sensor_msgs::LaserScan::Ptr scans[2] = {roomScan(), roomScan()};  // alternate: every cycle sees a new scan
   double t = 0.0;
   int k = 0;
   for (auto _ : state) {
     const ros::Time now = ros::Time::now();
     t += 0.05;
-    buffer->setTransform(transform("map", "odom", 0.0, 0.0, 0.0, now), "bench");
-    buffer->setTransform(transform("odom", "base_link", 0.5 * std::cos(0.1 * t), 0.5 * std::sin(0.1 * t), 0.1 * t + M_PI / 2, now),
-                         "bench");
-    buffer->setTransform(transform("map", "target", std::cos(0.1 * t + 0.5), std::sin(0.1 * t + 0.5), 0.0, now), "bench");
+    buffer->setTransform(toTransform("map", "odom", {0.0, 0.0, 0.0}, now), "bench");
+    const amigobot_tracking::core::Pose2 robot{0.5 * std::cos(0.1 * t), 0.5 * std::sin(0.1 * t), 0.1 * t + M_PI / 2};
+    const amigobot_tracking::core::Pose2 target{std::cos(0.1 * t + 0.5), std::sin(0.1 * t + 0.5), 0.0};
+    buffer->setTransform(toTransform("odom", "base_link", robot, now), "bench");
+    buffer->setTransform(toTransform("map", "target", target, now), "bench");
     sensor_msgs::LaserScan::Ptr& scan = scans[k++ % 2];
     scan->header.stamp = now;
     node->onScan(scan);

@@ -16,12 +16,14 @@
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/Reconfigure.h>
+#include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "amigobot_tracking/RemoveVirtualObstacle.h"
@@ -29,9 +31,11 @@
 #include "amigobot_tracking/VirtualObstacle.h"
 #include "amigobot_tracking/VirtualObstacleArray.h"
 #include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/tracking_params.h"
 
 using namespace amigobot_tracking;
+using amigobot_tracking::ros_layer::toTransform;
 
 namespace {
 
@@ -46,19 +50,6 @@ bool waitFor(const std::function<bool()>& condition, double seconds = kTimeout) 
   return condition();
 }
 
-geometry_msgs::TransformStamped transform(const std::string& parent, const std::string& child, double x, double y,
-                                          double yaw, const ros::Time& stamp) {
-  geometry_msgs::TransformStamped t;
-  t.header.stamp = stamp;
-  t.header.frame_id = parent;
-  t.child_frame_id = child;
-  t.transform.translation.x = x;
-  t.transform.translation.y = y;
-  t.transform.rotation.z = std::sin(0.5 * yaw);
-  t.transform.rotation.w = std::cos(0.5 * yaw);
-  return t;
-}
-
 // The scripted world around the nodelet.
 class World {
  public:
@@ -68,7 +59,7 @@ class World {
     virtual_sub_ = nh_.subscribe("tracking/virtual_obstacles", 10, &World::onVirtual, this);
     scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 5);
     virtual_pub_ = nh_.advertise<VirtualObstacle>("tracking/virtual_obstacle", 10, true);
-    static_tf_.sendTransform(transform("base_link", "laser", 0.1, 0.0, 0.0, ros::Time::now()));
+    static_tf_.sendTransform(toTransform("base_link", "laser", {0.1, 0.0, 0.0}, ros::Time::now()));
     robot_timer_ = nh_.createWallTimer(ros::WallDuration(0.02), &World::onRobotTick, this);
     target_timer_ = nh_.createWallTimer(ros::WallDuration(0.05), &World::onTargetTick, this);
     scan_timer_ = nh_.createWallTimer(ros::WallDuration(0.1), &World::onScanTick, this);
@@ -124,13 +115,14 @@ class World {
       pose_ = core::integrateUnicycle(pose_, u_, 0.02);
       pose = pose_;
     }
-    tf_.sendTransform(transform("map", "base_link", pose.x, pose.y, pose.theta, ros::Time::now()));
+    tf_.sendTransform(toTransform("map", "base_link", pose, ros::Time::now()));
   }
   // Target on a circle of radius 1 m around the origin, 60 s per turn (0.1 m/s).
   void onTargetTick(const ros::WallTimerEvent&) {
     if (!target_on) return;
     const double phase = 2.0 * M_PI * (ros::WallTime::now() - start_).toSec() / 60.0;
-    tf_.sendTransform(transform("map", "target", std::cos(phase), std::sin(phase), phase + M_PI / 2, ros::Time::now()));
+    const core::Pose2 target{std::cos(phase), std::sin(phase), phase + M_PI / 2};
+    tf_.sendTransform(toTransform("map", "target", target, ros::Time::now()));
   }
   // 360 beams: a pillar 2 m to the laser's left, REP 117 specials, +inf elsewhere.
   void onScanTick(const ros::WallTimerEvent&) {
@@ -314,6 +306,44 @@ TEST(TrackingNodelet, VirtualObstaclesFromYamlTopicAndServices) {
   EXPECT_EQ(world->virtualObstacles().obstacles[1].id, "pole");
   EXPECT_EQ(world->virtualObstacles().header.frame_id, "map");
 
+  // rviz "Publish Point": a disk of clicked_point_radius, transformed into map.
+  ros::NodeHandle nh;
+  ros::Publisher clicked = nh.advertise<geometry_msgs::PointStamped>("clicked_point", 1, true);
+  geometry_msgs::PointStamped click;
+  click.header.frame_id = "map";
+  click.point.x = -2.0;
+  click.point.y = 0.5;
+  clicked.publish(click);
+  ASSERT_TRUE(waitFor([&] { return world->virtualObstacles().obstacles.size() == 3; }));
+  const VirtualObstacle added = world->virtualObstacles().obstacles[2];
+  EXPECT_EQ(added.id.rfind("click_", 0), 0u) << added.id;
+  EXPECT_DOUBLE_EQ(added.radius, param("tracking/clicked_point_radius"));
+  EXPECT_DOUBLE_EQ(added.center.x, -2.0);
+  EXPECT_DOUBLE_EQ(added.center.y, 0.5);
+
+  // Interactive markers: dragging moves the obstacle, the menu's Delete removes it.
+  ros::Publisher feedback =
+      nh.advertise<visualization_msgs::InteractiveMarkerFeedback>("tracking/obstacle_markers/feedback", 10);
+  ASSERT_TRUE(waitFor([&] { return feedback.getNumSubscribers() > 0; }));
+  visualization_msgs::InteractiveMarkerFeedback drag;
+  drag.header.frame_id = "map";
+  drag.client_id = "test";
+  drag.marker_name = added.id;
+  drag.event_type = visualization_msgs::InteractiveMarkerFeedback::POSE_UPDATE;
+  drag.pose.position.x = -3.0;
+  drag.pose.position.y = 1.5;
+  drag.pose.orientation.w = 1.0;
+  feedback.publish(drag);
+  ASSERT_TRUE(waitFor([&] {
+    const auto a = world->virtualObstacles();
+    return a.obstacles.size() == 3 && a.obstacles[2].center.x == -3.0 && a.obstacles[2].center.y == 1.5;
+  }));
+  visualization_msgs::InteractiveMarkerFeedback remove_click = drag;
+  remove_click.event_type = visualization_msgs::InteractiveMarkerFeedback::MENU_SELECT;
+  remove_click.menu_entry_id = 1;
+  feedback.publish(remove_click);
+  ASSERT_TRUE(waitFor([&] { return world->virtualObstacles().obstacles.size() == 2; }));
+
   RemoveVirtualObstacle remove;
   remove.request.id = "start_box";
   ASSERT_TRUE(ros::service::call("tracking/remove_virtual_obstacle", remove));
@@ -393,6 +423,24 @@ TEST(TrackingParams, LoadersNameTheBadParameter) {
   pnh.setParam("scan/max_disk_radius", 0.0);
   EXPECT_NE(ros_layer::loadScanObstacleConfig(pnh, &scan).find("max_disk_radius"), std::string::npos);
 
+  // Geometry from a URDF found by searching up from ~ (here ~bad/robot_description);
+  // parameters override it.
+  pnh.setParam("robot_description", std::string(R"(<robot name="r">
+    <link name="base_link"><collision><geometry><box size="0.32 0.24 0.2"/></geometry></collision></link>
+    <link name="control_point"/>
+    <joint name="cp" type="fixed"><parent link="base_link"/><child link="control_point"/>
+      <origin xyz="0.25 0 0"/></joint></robot>)"));
+  controller = core::ControllerConfig();
+  ASSERT_EQ(ros_layer::loadControllerConfig(pnh, node, &controller), "");
+  EXPECT_DOUBLE_EQ(controller.robot_radius, 0.2);  // half diagonal of 0.32 x 0.24
+  EXPECT_DOUBLE_EQ(controller.offset, 0.25);
+  pnh.setParam("offset", 0.35);
+  ASSERT_EQ(ros_layer::loadControllerConfig(pnh, node, &controller), "");
+  EXPECT_DOUBLE_EQ(controller.offset, 0.35);
+  pnh.setParam("robot_description", std::string("<robot"));
+  EXPECT_NE(ros_layer::loadControllerConfig(pnh, node, &controller).find("robot_description"), std::string::npos);
+  pnh.deleteParam("robot_description");
+
   std::vector<core::VirtualObstacle> list;
   XmlRpc::XmlRpcValue entries;
   entries[0]["id"] = "a";
@@ -406,26 +454,6 @@ TEST(TrackingParams, LoadersNameTheBadParameter) {
   const std::string error = ros_layer::loadVirtualObstacles(pnh, &list);
   EXPECT_NE(error.find("entry 1"), std::string::npos) << error;
   EXPECT_NE(error.find("center"), std::string::npos) << error;
-}
-
-// URDF geometry with urdfdom: radius from the base link's collision cylinder, offset from a
-// fixed child link; a parse failure is an error, a missing link is reported.
-TEST(TrackingParams, UrdfGeometry) {
-  const std::string urdf = R"(<robot name="r">
-    <link name="base_link"><collision><geometry><cylinder radius="0.18" length="0.2"/></geometry></collision></link>
-    <link name="control_point"/>
-    <joint name="cp" type="fixed"><parent link="base_link"/><child link="control_point"/>
-      <origin xyz="0.25 0 0"/></joint></robot>)";
-  ros_layer::UrdfGeometry g;
-  ASSERT_EQ(ros_layer::readUrdfGeometry(urdf, "base_link", "control_point", &g), "");
-  EXPECT_TRUE(g.found_radius);
-  EXPECT_DOUBLE_EQ(g.radius, 0.18);
-  EXPECT_TRUE(g.found_offset);
-  EXPECT_DOUBLE_EQ(g.offset, 0.25);
-  EXPECT_EQ(ros_layer::readUrdfGeometry(urdf, "base_link", "nothing", &g), "");
-  EXPECT_FALSE(g.found_offset);
-  EXPECT_NE(ros_layer::readUrdfGeometry(urdf, "chassis", "control_point", &g), "");
-  EXPECT_NE(ros_layer::readUrdfGeometry("<robot", "base_link", "control_point", &g), "");
 }
 
 int main(int argc, char** argv) {

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <geometry_msgs/Transform.h>
+#include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <sensor_msgs/LaserScan.h>
 
@@ -22,6 +23,9 @@ core::Pose2 toPose2(const geometry_msgs::Transform& transform);
 Eigen::Affine2d toAffine2d(const geometry_msgs::Transform& transform);
 core::ScanGeometry toScanGeometry(const sensor_msgs::LaserScan& scan);
 geometry_msgs::Twist toTwist(const core::Twist2& u);
+// parent -> child transform placing `pose` (x, y, yaw) in the parent frame.
+geometry_msgs::TransformStamped toTransform(const std::string& parent, const std::string& child,
+                                            const core::Pose2& pose, const ros::Time& stamp);
 // Fills the controller part of the state message (the node adds status, ages, flags).
 void fillState(const core::ControllerOutput& out, TrackingState* state);
 
