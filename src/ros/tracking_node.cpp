@@ -4,9 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
-#include <visualization_msgs/InteractiveMarker.h>
-
 #include "amigobot_tracking/VirtualObstacleArray.h"
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
@@ -17,53 +14,9 @@ namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
 
-constexpr uint8_t kDeleteMenuEntry = 1;
-
 double ageOf(const ros::Time& stamp, const ros::Time& now) {
   if (stamp.isZero()) return 0.0;  // static transform: always current
   return std::max(0.0, (now - stamp).toSec());
-}
-
-visualization_msgs::InteractiveMarker interactiveMarkerOf(const core::VirtualObstacle& o, const std::string& frame) {
-  visualization_msgs::InteractiveMarker im;
-  im.header.frame_id = frame;
-  im.name = o.id;
-  im.description = o.id;
-  im.pose.position.x = o.disk.center.x();
-  im.pose.position.y = o.disk.center.y();
-  im.pose.orientation.w = 1.0;
-  im.scale = static_cast<float>(2.0 * o.disk.radius + 0.2);
-
-  visualization_msgs::Marker disk;
-  disk.type = visualization_msgs::Marker::CYLINDER;
-  disk.scale.x = disk.scale.y = 2.0 * o.disk.radius;
-  disk.scale.z = 0.3;
-  disk.pose.position.z = 0.15;
-  disk.pose.orientation.w = 1.0;
-  disk.color.r = 0.6f;
-  disk.color.g = 0.2f;
-  disk.color.b = 0.8f;
-  disk.color.a = 0.5f;
-
-  visualization_msgs::InteractiveMarkerControl move;  // drag in the ground plane
-  move.name = "move";
-  move.orientation.w = move.orientation.y = std::sqrt(0.5);
-  move.interaction_mode = visualization_msgs::InteractiveMarkerControl::MOVE_PLANE;
-  move.always_visible = true;
-  move.markers.push_back(disk);
-  im.controls.push_back(move);
-
-  visualization_msgs::InteractiveMarkerControl menu;  // right click -> Delete
-  menu.name = "menu";
-  menu.interaction_mode = visualization_msgs::InteractiveMarkerControl::MENU;
-  im.controls.push_back(menu);
-  visualization_msgs::MenuEntry remove;
-  remove.id = kDeleteMenuEntry;
-  remove.parent_id = 0;
-  remove.title = "Delete";
-  remove.command_type = visualization_msgs::MenuEntry::FEEDBACK;
-  im.menu_entries.push_back(remove);
-  return im;
 }
 
 }  // namespace
@@ -123,6 +76,14 @@ bool TrackingNode::start() {
   scan_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(
       *scan_sub_, *tf_, node_config_.global_frame, 10, nh_);
   scan_filter_->registerCallback(&TrackingNode::onScan, this);
+  scan_filter_->registerFailureCallback(
+      [this](const sensor_msgs::LaserScan::ConstPtr& scan, tf2_ros::filter_failure_reasons::FilterFailureReason why) {
+        ROS_WARN_THROTTLE(5.0, "tracking: scan in '%s' dropped: no transform to '%s' at its stamp (%s)",
+                          scan->header.frame_id.c_str(), node_config_.global_frame.c_str(),
+                          why == tf2_ros::filter_failure_reasons::OutTheBack ? "older than the tf buffer"
+                          : why == tf2_ros::filter_failure_reasons::EmptyFrameID ? "empty frame_id"
+                                                                                  : "tf not available in time");
+      });
 
   enable_srv_ = pnh_.advertiseService("enable", &TrackingNode::onEnable, this);
   disable_srv_ = pnh_.advertiseService("disable", &TrackingNode::onDisable, this);
@@ -220,7 +181,7 @@ void TrackingNode::onTimer(const ros::TimerEvent&) { controlCycle(ros::Time::now
 
 void TrackingNode::controlCycle(const ros::Time& now) {
   const auto wall_start = std::chrono::steady_clock::now();
-  bool markers_wanted = markers_pub_.getNumSubscribers() > 0;
+  const bool markers_wanted = markers_pub_.getNumSubscribers() > 0;
   {
     std::lock_guard<std::mutex> lock(state_mutex_);
     if (config_pending_) {  // dynamic_reconfigure: swapped between two steps only
@@ -239,22 +200,9 @@ void TrackingNode::controlCycle(const ros::Time& now) {
     last_pose_age_ = pose.ok ? pose.age : -1.0;
     last_target_age_ = target.ok ? target.age : -1.0;
 
-    std::string stale;
-    const double timeout = node_config_.pose_timeout;
-    if (!pose.ok) {
-      stale = "no robot pose " + node_config_.global_frame + " -> " + node_config_.base_frame;
-    } else if (pose.age > timeout) {
-      stale = "robot pose is stale (" + std::to_string(pose.age) + " s)";
-    } else if (!target.ok) {
-      stale = "no target " + node_config_.global_frame + " -> " + node_config_.target_frame;
-    } else if (target.age > timeout) {
-      stale = "target is stale (" + std::to_string(target.age) + " s)";
-    } else if (node_config_.require_scan && !scan_fresh) {
-      stale = scan_age_ < 0.0 ? "no scan yet" : "scan is stale (" + std::to_string(scan_age_) + " s)";
-    }
-
-    bool have_output = false;
     core::ControllerOutput out;
+    bool have_output = false;
+    const std::string stale = staleReasonLocked(pose, target, scan_fresh);
     if (!enabled_) {
       status_ = "disabled";
     } else if (!stale.empty()) {
@@ -263,97 +211,123 @@ void TrackingNode::controlCycle(const ros::Time& now) {
       publishZeroLocked();
       ROS_WARN_STREAM_THROTTLE(2.0, "tracking: zero command: " << stale);
     } else {
-      if (lost_) {  // resume: start afresh (see the header for the rule)
-        controller_.reset();
-        restart_rho_ = true;
-        lost_ = false;
-      }
-      const core::Pose2 robot = toPose2(pose.transform.transform);
-      const ros::Time stamp = target.transform.header.stamp.isZero() ? now : target.transform.header.stamp;
-      const core::TargetSample sample{(stamp - epoch_).toSec(),
-                                      {target.transform.transform.translation.x,
-                                       target.transform.transform.translation.y}};
-      const double t = (now - epoch_).toSec();
-      if (restart_rho_) {
-        core::ControllerConfig restart = controller_config_;
-        const double error = (sample.position - core::offsetPoint(robot, restart.offset)).norm();
-        restart.rho_0 = std::max(restart.rho_0, 2.0 * error);
-        controller_.setConfig(restart);
-        out = controller_.step(t, robot, sample, obstacles_);
-        controller_.setConfig(controller_config_);
-        restart_rho_ = false;
-      } else {
-        out = controller_.step(t, robot, sample, obstacles_);
-      }
-      if (!out.valid) {
-        status_ = "controller: " + out.error;
-        publishZeroLocked();
-        lost_ = true;  // e.g. time went backwards (bag loop): restart when usable
-        ROS_WARN_STREAM_THROTTLE(2.0, "tracking: zero command: " << status_);
-      } else if (!controller_.diamond().contains(out.u, 1e-9)) {  // never expected: belt and braces
-        status_ = "command outside the diamond";
-        publishZeroLocked();
-        ROS_ERROR_THROTTLE(2.0, "tracking: controller command outside the diamond; sent zero");
-      } else {
-        cmd_pub_.publish(toTwist(out.u));
-        status_ = "tracking";
-        have_output = true;
-        ++window_steps_;
-        if (out.active.saturated) ++window_saturated_;
-      }
+      have_output = stepLocked(now, pose, target, &out);
     }
     last_output_ = out;
-
-    TrackingState state;
-    state.header.stamp = now;
-    state.header.frame_id = node_config_.global_frame;
-    if (have_output) fillState(out, &state);
-    state.enabled = enabled_;
-    state.status = status_;
-    state.t = (now - epoch_).toSec();
-    state.rho = have_output ? out.rho : controller_.rho();
-    state.obstacles = static_cast<int>(obstacles_.size());
-    const double inf = std::numeric_limits<double>::infinity();
-    if (!have_output) state.min_clearance = inf;
-    state.min_clearance_body = inf;
-    if (pose.ok) {
-      const core::Pose2 robot = toPose2(pose.transform.transform);
-      state.min_clearance_body = core::clearance(robot.position(), controller_config_.robot_radius, obstacles_);
-    }
-    state.pose_age = last_pose_age_;
-    state.target_age = last_target_age_;
-    state_pub_.publish(state);
-
-    if (markers_wanted) {
-      MarkerScene scene;
-      scene.frame = node_config_.global_frame;
-      scene.stamp = now;
-      scene.have_pose = pose.ok;
-      if (pose.ok) scene.pose = toPose2(pose.transform.transform);
-      scene.have_output = have_output;
-      scene.output = out;
-      scene.config = &controller_config_;
-      scene.detected = &scan_disks_;
-      scene.virtual_obstacles = &virtual_obstacles_;
-      scene.status = status_;
-      markers_pub_.publish(buildMarkers(scene));
-    }
-
-    const double window = (now - window_start_).toSec();
-    ++stats_.cycles;
-    if (window >= 1.0) {
-      measured_rate_ = static_cast<double>(stats_.cycles - cycles_at_window_) / window;
-      saturation_ratio_ = window_steps_ ? static_cast<double>(window_saturated_) / window_steps_ : 0.0;
-      cycles_at_window_ = stats_.cycles;
-      window_steps_ = window_saturated_ = 0;
-      window_start_ = now;
-    }
-    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - wall_start).count();
-    stats_.last_us = us;
-    stats_.max_us = std::max(stats_.max_us, us);
-    stats_.sum_us += us;
+    publishStateLocked(now, pose, have_output, out);
+    if (markers_wanted) publishMarkersLocked(now, pose, have_output, out);
+    updateStatsLocked(now, wall_start);
   }
   if (diagnostics_) diagnostics_->update();  // rate-limited by the updater; takes the lock itself
+}
+
+std::string TrackingNode::staleReasonLocked(const Lookup& pose, const Lookup& target, bool scan_fresh) const {
+  const double timeout = node_config_.pose_timeout;
+  if (!pose.ok) return "no robot pose " + node_config_.global_frame + " -> " + node_config_.base_frame;
+  if (pose.age > timeout) return "robot pose is stale (" + std::to_string(pose.age) + " s)";
+  if (!target.ok) return "no target " + node_config_.global_frame + " -> " + node_config_.target_frame;
+  if (target.age > timeout) return "target is stale (" + std::to_string(target.age) + " s)";
+  if (node_config_.require_scan && !scan_fresh) {
+    return scan_age_ < 0.0 ? "no scan yet" : "scan is stale (" + std::to_string(scan_age_) + " s)";
+  }
+  return "";
+}
+
+bool TrackingNode::stepLocked(const ros::Time& now, const Lookup& pose, const Lookup& target,
+                              core::ControllerOutput* out) {
+  if (lost_) {  // resume: start afresh (see the header for the rule)
+    controller_.reset();
+    restart_rho_ = true;
+    lost_ = false;
+  }
+  const core::Pose2 robot = toPose2(pose.transform.transform);
+  // The target sample keeps its own stamp (a static transform has none: use now).
+  const ros::Time stamp = target.transform.header.stamp.isZero() ? now : target.transform.header.stamp;
+  const core::TargetSample sample{(stamp - epoch_).toSec(),
+                                  {target.transform.transform.translation.x, target.transform.transform.translation.y}};
+  const double t = (now - epoch_).toSec();
+  if (restart_rho_) {
+    core::ControllerConfig restart = controller_config_;
+    const double error = (sample.position - core::offsetPoint(robot, restart.offset)).norm();
+    restart.rho_0 = std::max(restart.rho_0, 2.0 * error);
+    controller_.setConfig(restart);
+    *out = controller_.step(t, robot, sample, obstacles_);
+    controller_.setConfig(controller_config_);
+    restart_rho_ = false;
+  } else {
+    *out = controller_.step(t, robot, sample, obstacles_);
+  }
+  if (!out->valid) {
+    status_ = "controller: " + out->error;
+    publishZeroLocked();
+    lost_ = true;  // e.g. time went backwards (bag loop): restart when usable
+    ROS_WARN_STREAM_THROTTLE(2.0, "tracking: zero command: " << status_);
+    return false;
+  }
+  if (!controller_.diamond().contains(out->u, 1e-9)) {  // never expected: belt and braces
+    status_ = "command outside the diamond";
+    publishZeroLocked();
+    ROS_ERROR_THROTTLE(2.0, "tracking: controller command outside the diamond; sent zero");
+    return false;
+  }
+  cmd_pub_.publish(toTwist(out->u));
+  status_ = "tracking";
+  ++window_steps_;
+  if (out->active.saturated) ++window_saturated_;
+  return true;
+}
+
+void TrackingNode::publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output,
+                                      const core::ControllerOutput& out) {
+  const double inf = std::numeric_limits<double>::infinity();
+  TrackingState state;
+  state.header.stamp = now;
+  state.header.frame_id = node_config_.global_frame;
+  if (have_output) fillState(out, &state);
+  state.enabled = enabled_;
+  state.status = status_;
+  state.t = (now - epoch_).toSec();
+  state.rho = have_output ? out.rho : controller_.rho();
+  state.obstacles = static_cast<int>(obstacles_.size());
+  if (!have_output) state.min_clearance = inf;
+  state.min_clearance_body =
+      pose.ok ? core::clearance(toPose2(pose.transform.transform).position(), controller_config_.robot_radius, obstacles_)
+              : inf;
+  state.pose_age = last_pose_age_;
+  state.target_age = last_target_age_;
+  state_pub_.publish(state);
+}
+
+void TrackingNode::publishMarkersLocked(const ros::Time& now, const Lookup& pose, bool have_output,
+                                        const core::ControllerOutput& out) {
+  MarkerScene scene;
+  scene.frame = node_config_.global_frame;
+  scene.stamp = now;
+  scene.have_pose = pose.ok;
+  if (pose.ok) scene.pose = toPose2(pose.transform.transform);
+  scene.have_output = have_output;
+  scene.output = out;
+  scene.config = &controller_config_;
+  scene.detected = &scan_disks_;
+  scene.virtual_obstacles = &virtual_obstacles_;
+  scene.status = status_;
+  markers_pub_.publish(buildMarkers(scene));
+}
+
+void TrackingNode::updateStatsLocked(const ros::Time& now, std::chrono::steady_clock::time_point wall_start) {
+  ++stats_.cycles;
+  const double window = (now - window_start_).toSec();
+  if (window >= 1.0) {  // rates and ratios over about one second
+    measured_rate_ = static_cast<double>(stats_.cycles - cycles_at_window_) / window;
+    saturation_ratio_ = window_steps_ ? static_cast<double>(window_saturated_) / window_steps_ : 0.0;
+    cycles_at_window_ = stats_.cycles;
+    window_steps_ = window_saturated_ = 0;
+    window_start_ = now;
+  }
+  const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - wall_start).count();
+  stats_.last_us = us;
+  stats_.max_us = std::max(stats_.max_us, us);
+  stats_.sum_us += us;
 }
 
 void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
@@ -410,103 +384,6 @@ bool TrackingNode::onDisable(std_srvs::Trigger::Request&, std_srvs::Trigger::Res
   res.success = true;
   res.message = "tracking disabled";
   ROS_INFO_NAMED("tracking", "tracking disabled");
-  return true;
-}
-
-void TrackingNode::publishVirtualObstaclesLocked(bool refresh_interactive) {
-  VirtualObstacleArray array;
-  array.header.stamp = ros::Time::now();
-  array.header.frame_id = node_config_.global_frame;
-  for (const core::VirtualObstacle& o : virtual_obstacles_.all()) {
-    VirtualObstacle m;
-    m.id = o.id;
-    m.center.x = o.disk.center.x();
-    m.center.y = o.disk.center.y();
-    m.radius = o.disk.radius;
-    array.obstacles.push_back(m);
-  }
-  virtual_pub_.publish(array);
-  if (!refresh_interactive || !marker_server_) return;
-  marker_server_->clear();
-  for (const core::VirtualObstacle& o : virtual_obstacles_.all()) {
-    marker_server_->insert(interactiveMarkerOf(o, node_config_.global_frame),
-                           [this](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& f) { onMarkerFeedback(f); });
-  }
-  marker_server_->applyChanges();
-}
-
-void TrackingNode::onVirtualObstacle(const VirtualObstacle::ConstPtr& msg) {
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  const core::VirtualObstacle o{msg->id, {{msg->center.x, msg->center.y}, msg->radius}};
-  std::string why;
-  const auto change = virtual_obstacles_.upsert(o, &why);
-  if (change == core::VirtualObstacleSet::Change::kRejected) {
-    ROS_WARN_STREAM_NAMED("tracking", "virtual obstacle rejected: " << why);
-    return;
-  }
-  ROS_INFO_STREAM_NAMED("tracking", "virtual obstacle '" << o.id << "' "
-                                                         << (change == core::VirtualObstacleSet::Change::kAdded ? "added" : "updated"));
-  publishVirtualObstaclesLocked();
-}
-
-void TrackingNode::onClickedPoint(const geometry_msgs::PointStamped::ConstPtr& msg) {
-  geometry_msgs::PointStamped global = *msg;
-  if (msg->header.frame_id != node_config_.global_frame) {
-    try {
-      const geometry_msgs::TransformStamped to_global =
-          tf_->lookupTransform(node_config_.global_frame, msg->header.frame_id, ros::Time(0));
-      tf2::doTransform(*msg, global, to_global);
-    } catch (const tf2::TransformException& ex) {
-      ROS_WARN_STREAM_NAMED("tracking", "clicked point ignored: " << ex.what());
-      return;
-    }
-  }
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  const core::VirtualObstacle o{virtual_obstacles_.freshId("click_"),
-                                {{global.point.x, global.point.y}, node_config_.clicked_point_radius}};
-  std::string why;
-  if (virtual_obstacles_.upsert(o, &why) == core::VirtualObstacleSet::Change::kRejected) {
-    ROS_WARN_STREAM_NAMED("tracking", "clicked point rejected: " << why);
-    return;
-  }
-  ROS_INFO_STREAM_NAMED("tracking", "virtual obstacle '" << o.id << "' added at (" << o.disk.center.x() << ", "
-                                                         << o.disk.center.y() << ")");
-  publishVirtualObstaclesLocked();
-}
-
-void TrackingNode::onMarkerFeedback(const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback) {
-  using visualization_msgs::InteractiveMarkerFeedback;
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  const core::VirtualObstacle* existing = virtual_obstacles_.find(feedback->marker_name);
-  if (!existing) return;
-  if (feedback->event_type == InteractiveMarkerFeedback::MENU_SELECT && feedback->menu_entry_id == kDeleteMenuEntry) {
-    virtual_obstacles_.remove(feedback->marker_name);
-    ROS_INFO_STREAM_NAMED("tracking", "virtual obstacle '" << feedback->marker_name << "' deleted in rviz");
-    publishVirtualObstaclesLocked();
-  } else if (feedback->event_type == InteractiveMarkerFeedback::POSE_UPDATE &&
-             (feedback->header.frame_id.empty() || feedback->header.frame_id == node_config_.global_frame)) {
-    core::VirtualObstacle moved = *existing;
-    moved.disk.center = {feedback->pose.position.x, feedback->pose.position.y};
-    virtual_obstacles_.upsert(moved);
-    publishVirtualObstaclesLocked(false);  // rviz already shows it where it was dragged
-  }
-}
-
-bool TrackingNode::onRemove(RemoveVirtualObstacle::Request& req, RemoveVirtualObstacle::Response& res) {
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  res.success = virtual_obstacles_.remove(req.id);
-  res.message = res.success ? "removed '" + req.id + "'" : "no virtual obstacle '" + req.id + "'";
-  if (res.success) publishVirtualObstaclesLocked();
-  return true;
-}
-
-bool TrackingNode::onClear(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  const std::size_t count = virtual_obstacles_.size();
-  virtual_obstacles_.clear();
-  publishVirtualObstaclesLocked();
-  res.success = true;
-  res.message = "cleared " + std::to_string(count) + " virtual obstacles";
   return true;
 }
 

@@ -96,10 +96,17 @@ class TrackingNode {
   void onReconfigure(TrackingConfig& config, uint32_t level);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
-  // With state_mutex_ held:
-  void publishVirtualObstaclesLocked(bool refresh_interactive = true);  // latched array + interactive markers
+  // With state_mutex_ held (tracking_node.cpp):
   void updateScanObstaclesLocked();
+  std::string staleReasonLocked(const Lookup& pose, const Lookup& target, bool scan_fresh) const;  // "" when fresh
+  bool stepLocked(const ros::Time& now, const Lookup& pose, const Lookup& target, core::ControllerOutput* out);
+  void publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output, const core::ControllerOutput& out);
+  void publishMarkersLocked(const ros::Time& now, const Lookup& pose, bool have_output,
+                            const core::ControllerOutput& out);
+  void updateStatsLocked(const ros::Time& now, std::chrono::steady_clock::time_point wall_start);
   void publishZeroLocked();
+  // With state_mutex_ held (tracking_virtual_obstacles.cpp): latched array + interactive markers.
+  void publishVirtualObstaclesLocked(bool refresh_interactive = true);
 
   ros::NodeHandle nh_, pnh_;
   std::shared_ptr<tf2_ros::Buffer> tf_;
