@@ -21,6 +21,8 @@ amigobot_add_unit_test(test_scan_obstacles test/unit/test_scan_obstacles.cpp)
 target_link_libraries(test_scan_obstacles amigobot_tracking_core)
 amigobot_add_unit_test(test_virtual_obstacles test/unit/test_virtual_obstacles.cpp)
 target_link_libraries(test_virtual_obstacles amigobot_tracking_core)
+amigobot_add_unit_test(test_waypoint_reference test/unit/test_waypoint_reference.cpp)
+target_link_libraries(test_waypoint_reference amigobot_tracking_core)
 
 # rostest: the tracking nodelet in a real nodelet manager with a scripted world.
 find_package(rostest REQUIRED)
