@@ -463,6 +463,25 @@ TEST(TrackingParams, LoadersNameTheBadParameter) {
   EXPECT_NE(error.find("center"), std::string::npos) << error;
 }
 
+// config/tracking.yaml and config/virtual_obstacles.yaml load without error (YAML 1.1 has
+// traps: 1.0e9 is a string) and give what they say.
+TEST(TrackingParams, ShippedConfigLoads) {
+  ros::NodeHandle shipped("/shipped");
+  ros_layer::TrackingNodeConfig node;
+  core::ControllerConfig controller;
+  core::ScanObstacleConfig scan;
+  std::vector<core::VirtualObstacle> list;
+  ASSERT_TRUE(shipped.hasParam("control_rate"));
+  EXPECT_EQ(ros_layer::loadNodeConfig(shipped, &node), "");
+  EXPECT_EQ(ros_layer::loadControllerConfig(shipped, node, &controller), "");
+  EXPECT_EQ(ros_layer::loadScanObstacleConfig(shipped, &scan), "");
+  EXPECT_EQ(ros_layer::loadVirtualObstacles(shipped, &list), "");
+  EXPECT_FALSE(node.autostart);
+  EXPECT_GT(scan.max_range, 1e6);
+  ASSERT_EQ(list.size(), 1u);
+  EXPECT_EQ(list[0].id, "box");
+}
+
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_tracking_nodelet");
