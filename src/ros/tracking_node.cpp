@@ -107,7 +107,10 @@ bool TrackingNode::start() {
   diagnostics_->setHardwareID("amigobot_tracking");
   diagnostics_->add("tracking", this, &TrackingNode::diagnose);
 
-  started_ = true;
+  {
+    std::lock_guard<std::mutex> lock(state_mutex_);  // the services are already live
+    started_ = true;
+  }
   if (node_config_.autostart) {
     std_srvs::Trigger::Request req;
     std_srvs::Trigger::Response res;
@@ -159,18 +162,21 @@ void TrackingNode::updateScanObstaclesLocked() {
     std::lock_guard<std::mutex> lock(scan_mutex_);
     scan = latest_scan_;
   }
-  if (!scan || scan == used_scan_) return;
-  used_scan_ = scan;
+  if (!scan || scan == processed_scan_) return;
+  processed_scan_ = scan;
+  // Only a scan turned into disks counts as fresh: a bad one must not hide a blind laser.
   try {
     // The MessageFilter let the scan through only once this transform was available.
     const geometry_msgs::TransformStamped sensor =
         tf_->lookupTransform(node_config_.global_frame, scan->header.frame_id, scan->header.stamp);
-    if (!core::scanToObstacles(toScanGeometry(*scan), scan->ranges, toAffine2d(sensor.transform), scan_config_,
-                               &scan_disks_)) {
+    if (core::scanToObstacles(toScanGeometry(*scan), scan->ranges, toAffine2d(sensor.transform), scan_config_,
+                              &scan_disks_next_)) {
+      scan_disks_.swap(scan_disks_next_);  // the previous disks stay until a good scan replaces them
+      used_scan_ = scan;
+    } else {
       ROS_WARN_THROTTLE(5.0, "tracking: scan with invalid geometry ignored (frame %s)", scan->header.frame_id.c_str());
     }
   } catch (const tf2::TransformException& ex) {
-    scan_disks_.clear();
     ROS_WARN_THROTTLE(5.0, "tracking: scan dropped: %s", ex.what());
   }
 }

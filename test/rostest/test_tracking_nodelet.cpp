@@ -66,6 +66,7 @@ class World {
   }
 
   std::atomic<bool> target_on{true};
+  std::atomic<bool> scan_broken{false};  // publish scans with angle_increment 0
 
   struct Cmd {
     ros::WallTime received;
@@ -130,7 +131,7 @@ class World {
     scan.header.stamp = ros::Time::now();
     scan.header.frame_id = "laser";
     scan.angle_min = -M_PI;
-    scan.angle_increment = 2.0 * M_PI / 360;
+    scan.angle_increment = scan_broken ? 0.0f : static_cast<float>(2.0 * M_PI / 360);
     scan.angle_max = scan.angle_min + 359 * scan.angle_increment;
     scan.range_min = 0.05f;
     scan.range_max = 10.0f;
@@ -297,6 +298,23 @@ TEST(TrackingNodelet, ZeroAfterTheTargetTfStopsAndGentleRestart) {
   for (const auto& c : world->commandsSince(since)) {
     EXPECT_LE(diamondNorm(c.twist, param("tracking/v_max"), param("tracking/w_max")), 1.0 + 1e-9);
   }
+  ASSERT_TRUE(trigger("tracking/disable"));
+}
+
+TEST(TrackingNodelet, UnusableScansCountAsNoScan) {
+  ASSERT_TRUE(trigger("tracking/enable"));
+  auto status_has = [&](const std::string& word) {
+    const auto s = world->statesSince(ros::Time::now() - ros::Duration(0.5));
+    return !s.empty() && s.back().status.find(word) != std::string::npos;
+  };
+  ASSERT_TRUE(waitFor([&] { return status_has("tracking"); }));
+  world->scan_broken = true;  // scans keep arriving, but none can be used
+  ASSERT_TRUE(waitFor([&] { return status_has("scan"); }));
+  const ros::WallTime since = ros::WallTime::now();
+  ros::WallDuration(0.5).sleep();
+  for (const auto& c : world->commandsSince(since)) EXPECT_TRUE(isZero(c.twist)) << c.twist;
+  world->scan_broken = false;
+  EXPECT_TRUE(waitFor([&] { return status_has("tracking"); }));
   ASSERT_TRUE(trigger("tracking/disable"));
 }
 

@@ -127,9 +127,11 @@ class TrackingNode {
   mutable std::mutex state_mutex_;
   core::PerformanceController controller_;
   core::VirtualObstacleSet virtual_obstacles_;
-  std::vector<core::Disk> scan_disks_;
+  std::vector<core::Disk> scan_disks_;       // from used_scan_
+  std::vector<core::Disk> scan_disks_next_;  // scratch for the next scan
   std::vector<core::Disk> obstacles_;  // scan + virtual, rebuilt every cycle
-  sensor_msgs::LaserScan::ConstPtr used_scan_;
+  sensor_msgs::LaserScan::ConstPtr processed_scan_;  // last scan looked at
+  sensor_msgs::LaserScan::ConstPtr used_scan_;       // last scan turned into scan_disks_ (its age counts)
   double scan_age_ = -1.0;  // [s], -1: no scan yet
   bool enabled_ = false;
   bool lost_ = false;          // inputs were stale: reset and restart on the next fresh step
