@@ -40,6 +40,10 @@ bench: build
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 50
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 20 --max-step 0
+	$(CATKIN) bench_scan_obstacles
+	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_scan_obstacles --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(CATKIN) bench_tracking_cycle
+	$(SETUP) && $(ROOT)/scripts/with_private_roscore.sh $(WS)/devel/lib/amigobot_tracking/bench_tracking_cycle --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
 # Offline simulator: make sim SCENARIO=config/scenarios/paper_5_1.yaml OUT=out/paper_5_1 [ARGS="--variant fixed_rho"]
 SCENARIO ?= config/scenarios/paper_5_2_rose.yaml

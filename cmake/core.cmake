@@ -17,6 +17,9 @@ add_library(amigobot_tracking_core
   src/core/target_sensor.cpp
   src/core/baseline_controller.cpp
   src/core/baseline_estimators.cpp
+  src/core/scan_obstacles.cpp
+  src/core/virtual_obstacles.cpp
+  src/core/waypoint_reference.cpp
 )
 target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)

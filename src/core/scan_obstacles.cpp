@@ -1,0 +1,119 @@
+#include "amigobot_tracking/core/scan_obstacles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace amigobot_tracking {
+namespace core {
+namespace {
+
+// Axis-aligned bounding box of the points of one chunk (in the sensor frame).
+struct Box {
+  double min_x, max_x, min_y, max_y;
+
+  explicit Box(const Eigen::Vector2d& p) : min_x(p.x()), max_x(p.x()), min_y(p.y()), max_y(p.y()) {}
+  double halfDiagonalWith(const Eigen::Vector2d& p) const {
+    return 0.5 * std::hypot(std::max(max_x, p.x()) - std::min(min_x, p.x()),
+                            std::max(max_y, p.y()) - std::min(min_y, p.y()));
+  }
+  void add(const Eigen::Vector2d& p) {
+    min_x = std::min(min_x, p.x());
+    max_x = std::max(max_x, p.x());
+    min_y = std::min(min_y, p.y());
+    max_y = std::max(max_y, p.y());
+  }
+  Eigen::Vector2d center() const { return {0.5 * (min_x + max_x), 0.5 * (min_y + max_y)}; }
+  double halfDiagonal() const { return 0.5 * std::hypot(max_x - min_x, max_y - min_y); }
+};
+
+bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
+
+}  // namespace
+
+std::string ScanObstacleConfig::validate() const {
+  std::ostringstream err;
+  if (!positiveFinite(cluster_tolerance)) {
+    err << "cluster_tolerance must be a finite number > 0, got " << cluster_tolerance;
+  } else if (!positiveFinite(max_disk_radius)) {
+    err << "max_disk_radius must be a finite number > 0, got " << max_disk_radius;
+  } else if (!positiveFinite(min_disk_radius) || min_disk_radius > max_disk_radius) {
+    err << "min_disk_radius must be > 0 and <= max_disk_radius = " << max_disk_radius << ", got "
+        << min_disk_radius;
+  } else if (min_cluster_points < 1) {
+    err << "min_cluster_points must be >= 1, got " << min_cluster_points;
+  } else if (!(max_range > 0.0)) {  // +inf is allowed: no extra limit
+    err << "max_range must be > 0, got " << max_range;
+  }
+  return err.str();
+}
+
+bool ScanGeometry::isValid() const {
+  return std::isfinite(angle_min) && std::isfinite(angle_increment) && angle_increment != 0.0 &&
+         std::isfinite(range_min) && std::isfinite(range_max) && range_min >= 0.0 && range_max > range_min;
+}
+
+bool scanToObstacles(const ScanGeometry& geometry, const float* ranges, std::size_t count,
+                     const Eigen::Affine2d& sensor_to_global, const ScanObstacleConfig& config,
+                     std::vector<Disk>* out, ScanObstacleStats* stats) {
+  out->clear();
+  ScanObstacleStats local;
+  ScanObstacleStats& s = stats ? *stats : local;
+  s = ScanObstacleStats();
+  if (!geometry.isValid() || (count > 0 && ranges == nullptr)) return false;
+
+  const double far = std::min(static_cast<double>(geometry.range_max), config.max_range);
+  // Beam directions by rotation recurrence: no sin/cos per beam (the benchmark's budget).
+  const double step_c = std::cos(geometry.angle_increment), step_s = std::sin(geometry.angle_increment);
+  double c = std::cos(geometry.angle_min), sn = std::sin(geometry.angle_min);
+
+  bool in_cluster = false;
+  std::size_t cluster_points = 0, cluster_first_disk = 0;
+  Eigen::Vector2d previous = Eigen::Vector2d::Zero();
+  Box box(previous);
+
+  auto emit = [&](const Box& chunk) {
+    out->push_back({sensor_to_global * chunk.center(), std::max(chunk.halfDiagonal(), config.min_disk_radius)});
+  };
+  auto close_cluster = [&]() {
+    emit(box);
+    if (static_cast<int>(cluster_points) < config.min_cluster_points) {
+      out->resize(cluster_first_disk);  // too small: noise
+    } else {
+      ++s.clusters;
+    }
+  };
+
+  for (std::size_t i = 0; i < count; ++i) {
+    const double r = ranges[i];
+    const Eigen::Vector2d p(r * c, r * sn);
+    const double next_c = c * step_c - sn * step_s;
+    sn = sn * step_c + c * step_s;
+    c = next_c;
+    // REP 117: NaN, +-Inf and out-of-range readings carry no usable point.
+    if (!(std::isfinite(r) && r >= geometry.range_min && r <= far)) continue;
+    ++s.valid_beams;
+    if (in_cluster && (p - previous).norm() <= config.cluster_tolerance) {
+      ++cluster_points;
+      if (box.halfDiagonalWith(p) > config.max_disk_radius) {
+        emit(box);
+        box = Box(p);
+      } else {
+        box.add(p);
+      }
+    } else {
+      if (in_cluster) close_cluster();
+      in_cluster = true;
+      cluster_points = 1;
+      cluster_first_disk = out->size();
+      box = Box(p);
+    }
+    previous = p;
+  }
+  if (in_cluster) close_cluster();
+  s.disks = out->size();
+  return true;
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking
