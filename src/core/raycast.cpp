@@ -1,5 +1,6 @@
 #include "amigobot_tracking/core/raycast.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -18,8 +19,9 @@ double rayDiskDistance(const Eigen::Vector2d& origin, const Eigen::Vector2d& dir
   return -b - std::sqrt(discriminant);
 }
 
-std::vector<float> raycastScan(const Pose2& sensor, const std::vector<Disk>& disks, const ScanGeometry& geometry) {
-  std::vector<float> ranges(static_cast<size_t>(std::max(0, geometry.beams)));
+std::vector<float> raycastScan(const Pose2& sensor, const std::vector<Disk>& disks, const ScanGeometry& geometry,
+                               int beams) {
+  std::vector<float> ranges(static_cast<size_t>(std::max(0, beams)));
   const Eigen::Vector2d origin = sensor.position();
   for (size_t i = 0; i < ranges.size(); ++i) {
     const double angle = sensor.theta + geometry.angle_min + geometry.angle_increment * static_cast<double>(i);

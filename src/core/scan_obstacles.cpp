@@ -115,5 +115,12 @@ bool scanToObstacles(const ScanGeometry& geometry, const float* ranges, std::siz
   return true;
 }
 
+void dropDisksNear(const Eigen::Vector2d& point, double radius, std::vector<Disk>* disks) {
+  if (!(radius > 0.0)) return;
+  disks->erase(std::remove_if(disks->begin(), disks->end(),
+                              [&](const Disk& d) { return (d.center - point).norm() <= radius; }),
+               disks->end());
+}
+
 }  // namespace core
 }  // namespace amigobot_tracking

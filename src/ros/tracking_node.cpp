@@ -49,6 +49,7 @@ bool TrackingNode::start() {
   std::string error = loadNodeConfig(pnh_, &node_config_);
   if (error.empty()) error = loadControllerConfig(pnh_, node_config_, &controller_config_);
   if (error.empty()) error = loadScanObstacleConfig(pnh_, &scan_config_);
+  if (error.empty()) error = loadObstacleTrackerConfig(pnh_, &tracker_config_);
   if (error.empty()) error = loadVirtualObstacles(pnh_, &initial);
   if (!error.empty()) {
     ROS_FATAL_STREAM_NAMED("tracking", "tracking refuses to start: " << error
@@ -56,6 +57,7 @@ bool TrackingNode::start() {
     return false;
   }
   controller_ = core::PerformanceController(controller_config_);
+  obstacle_tracker_ = core::ObstacleTracker(tracker_config_);
   pending_config_ = controller_config_;
   virtual_obstacles_.assign(initial);
   epoch_ = ros::Time::now();
@@ -173,6 +175,7 @@ void TrackingNode::updateScanObstaclesLocked() {
                               &scan_disks_next_)) {
       scan_disks_.swap(scan_disks_next_);  // the previous disks stay until a good scan replaces them
       used_scan_ = scan;
+      obstacle_tracker_.update((scan->header.stamp - epoch_).toSec(), scan_disks_);
     } else {
       ROS_WARN_THROTTLE(5.0, "tracking: scan with invalid geometry ignored (frame %s)", scan->header.frame_id.c_str());
     }
@@ -201,7 +204,12 @@ void TrackingNode::controlCycle(const ros::Time& now) {
     scan_age_ = used_scan_ ? ageOf(used_scan_->header.stamp, now) : -1.0;
     const bool scan_fresh = scan_age_ >= 0.0 && scan_age_ <= node_config_.scan_timeout;
     obstacles_.clear();
-    if (scan_fresh) obstacles_ = scan_disks_;
+    if (scan_fresh) {
+      // With moving_obstacles the laser disks carry velocities from the tracker.
+      obstacles_ = controller_config_.moving_obstacles ? obstacle_tracker_.obstaclesAt((now - epoch_).toSec())
+                                                       : scan_disks_;
+      excludeTargetLocked(target);
+    }
     virtual_obstacles_.appendDisks(&obstacles_);
     last_pose_age_ = pose.ok ? pose.age : -1.0;
     last_target_age_ = target.ok ? target.age : -1.0;
@@ -227,6 +235,12 @@ void TrackingNode::controlCycle(const ros::Time& now) {
   if (diagnostics_) diagnostics_->update();  // rate-limited by the updater; takes the lock itself
 }
 
+void TrackingNode::excludeTargetLocked(const Lookup& target) {
+  if (!target.ok) return;
+  const Eigen::Vector2d p(target.transform.transform.translation.x, target.transform.transform.translation.y);
+  core::dropDisksNear(p, node_config_.target_exclusion_radius, &obstacles_);
+}
+
 std::string TrackingNode::staleReasonLocked(const Lookup& pose, const Lookup& target, bool scan_fresh) const {
   const double timeout = node_config_.pose_timeout;
   if (!pose.ok) return "no robot pose " + node_config_.global_frame + " -> " + node_config_.base_frame;
@@ -247,6 +261,8 @@ bool TrackingNode::stepLocked(const ros::Time& now, const Lookup& pose, const Lo
     lost_ = false;
   }
   const core::Pose2 robot = toPose2(pose.transform.transform);
+  const ros::Time pose_stamp = pose.transform.header.stamp.isZero() ? now : pose.transform.header.stamp;
+  const core::PoseSample robot_sample{(pose_stamp - epoch_).toSec(), robot};
   // The target sample keeps its own stamp (a static transform has none: use now).
   const ros::Time stamp = target.transform.header.stamp.isZero() ? now : target.transform.header.stamp;
   const core::TargetSample sample{(stamp - epoch_).toSec(),
@@ -257,11 +273,11 @@ bool TrackingNode::stepLocked(const ros::Time& now, const Lookup& pose, const Lo
     const double error = (sample.position - core::offsetPoint(robot, restart.offset)).norm();
     restart.rho_0 = std::max(restart.rho_0, 2.0 * error);
     controller_.setConfig(restart);
-    *out = controller_.step(t, robot, sample, obstacles_);
+    *out = controller_.stepStamped(t, robot_sample, sample, obstacles_);
     controller_.setConfig(controller_config_);
     restart_rho_ = false;
   } else {
-    *out = controller_.step(t, robot, sample, obstacles_);
+    *out = controller_.stepStamped(t, robot_sample, sample, obstacles_);
   }
   if (!out->valid) {
     status_ = "controller: " + out->error;

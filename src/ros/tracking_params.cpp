@@ -94,6 +94,8 @@ std::string TrackingNodeConfig::validate() const {
     err << "robot_v_max must be a finite number > 0, got " << robot_v_max;
   } else if (!positiveFinite(robot_w_max)) {
     err << "robot_w_max must be a finite number > 0, got " << robot_w_max;
+  } else if (!(std::isfinite(target_exclusion_radius) && target_exclusion_radius >= 0.0)) {
+    err << "target_exclusion_radius must be a finite number >= 0 (0 = off), got " << target_exclusion_radius;
   }
   return err.str();
 }
@@ -132,7 +134,8 @@ std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* c) {
                   readParam(pnh, "autostart", &c->autostart, &error) &&
                   readParam(pnh, "clicked_point_radius", &c->clicked_point_radius, &error) &&
                   readParam(pnh, "robot_v_max", &c->robot_v_max, &error) &&
-                  readParam(pnh, "robot_w_max", &c->robot_w_max, &error);
+                  readParam(pnh, "robot_w_max", &c->robot_w_max, &error) &&
+                  readParam(pnh, "target_exclusion_radius", &c->target_exclusion_radius, &error);
   if (!ok) return error;
   const std::string invalid = c->validate();
   return invalid.empty() ? "" : "parameter ~" + invalid;
@@ -178,7 +181,16 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
                   readParam(pnh, "estimator/lambda_o", &e.lambda_o, &error) &&
                   readParam(pnh, "estimator/rho_o", &e.rho_o, &error) &&
                   readParam(pnh, "estimator/rho_o0", &e.rho_o0, &error) &&
-                  readParam(pnh, "estimator/jump_threshold", &e.jump_threshold, &error);
+                  readParam(pnh, "estimator/jump_threshold", &e.jump_threshold, &error) &&
+                  // Beyond the paper (each off by default = the paper's law).
+                  readParam(pnh, "tangential_avoidance", &c->tangential_avoidance, &error) &&
+                  readParam(pnh, "k_t", &c->k_t, &error) &&
+                  readParam(pnh, "tangential_hysteresis", &c->tangential_hysteresis, &error) &&
+                  readParam(pnh, "moving_obstacles", &c->moving_obstacles, &error) &&
+                  readParam(pnh, "obstacle_horizon", &c->obstacle_horizon, &error) &&
+                  readParam(pnh, "predict_target", &c->predict_target, &error) &&
+                  readParam(pnh, "compensate_pose_age", &c->compensate_pose_age, &error) &&
+                  readParam(pnh, "max_prediction", &c->max_prediction, &error);
   if (!ok) return error;
   const std::string invalid = c->validate();
   if (!invalid.empty()) return "parameter ~" + invalid;
@@ -189,6 +201,21 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
     err << "parameter ~w_max must be <= ~robot_w_max = " << node.robot_w_max << ", got " << c->w_max;
   }
   return err.str();
+}
+
+std::string loadObstacleTrackerConfig(const ros::NodeHandle& pnh, core::ObstacleTrackerConfig* c) {
+  ROS_INFO_STREAM_NAMED("tracking", "laser obstacle tracking parameters (used with moving_obstacles):");
+  std::string error;
+  const bool ok = readParam(pnh, "obstacle_tracker/gate", &c->gate, &error) &&
+                  readParam(pnh, "obstacle_tracker/position_gain", &c->position_gain, &error) &&
+                  readParam(pnh, "obstacle_tracker/velocity_gain", &c->velocity_gain, &error) &&
+                  readParam(pnh, "obstacle_tracker/max_speed", &c->max_speed, &error) &&
+                  readParam(pnh, "obstacle_tracker/still_speed", &c->still_speed, &error) &&
+                  readParam(pnh, "obstacle_tracker/forget_after", &c->forget_after, &error) &&
+                  readParam(pnh, "obstacle_tracker/min_hits", &c->min_hits, &error);
+  if (!ok) return error;
+  const std::string invalid = c->validate();
+  return invalid.empty() ? "" : "parameter ~obstacle_tracker/" + invalid;
 }
 
 std::string loadScanObstacleConfig(const ros::NodeHandle& pnh, core::ScanObstacleConfig* c) {

@@ -230,3 +230,12 @@ TEST(ScanObstacles, ConfigValidationNamesTheField) {
   c.max_range = 0.0;
   EXPECT_EQ(first_word(c), "max_range");
 }
+
+TEST(ScanObstacles, DisksOnTheFollowedRobotAreDropped) {
+  std::vector<Disk> disks = {{{1.0, 1.0}, 0.1}, {{1.2, 1.1}, 0.1}, {{2.0, 1.0}, 0.1}};
+  dropDisksNear({1.0, 1.0}, 0.0, &disks);  // off
+  EXPECT_EQ(disks.size(), 3u);
+  dropDisksNear({1.0, 1.0}, 0.3, &disks);
+  ASSERT_EQ(disks.size(), 1u);
+  EXPECT_EQ(disks[0].center, Eigen::Vector2d(2.0, 1.0));
+}

@@ -3,23 +3,18 @@
 
 #include <vector>
 
+#include "amigobot_tracking/core/scan_obstacles.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
 namespace core {
 
-struct ScanGeometry {
-  double angle_min = -M_PI;      // [rad] first beam, in the sensor frame (REP 103: CCW)
-  double angle_increment = M_PI / 360.0;  // [rad]
-  int beams = 720;
-  double range_min = 0.05;       // [m]
-  double range_max = 8.0;        // [m]
-};
-
-// Range of each beam from the sensor pose to the nearest disk surface. Following REP 117,
+// Range of each of `beams` beams (geometry as in scan_obstacles.h, angles in the sensor
+// frame) from the sensor pose to the nearest disk surface. Following REP 117,
 // a beam that hits nothing within range_max reports +inf; hits closer than range_min
 // report -inf. A sensor inside a disk sees that disk at range_min (-inf).
-std::vector<float> raycastScan(const Pose2& sensor, const std::vector<Disk>& disks, const ScanGeometry& geometry);
+std::vector<float> raycastScan(const Pose2& sensor, const std::vector<Disk>& disks, const ScanGeometry& geometry,
+                               int beams);
 
 // Distance along the unit ray (origin, direction) to the circle, or a negative value when
 // the ray misses it or points away. 0 when the origin is inside the disk.

@@ -73,5 +73,9 @@ inline bool scanToObstacles(const ScanGeometry& geometry, const std::vector<floa
   return scanToObstacles(geometry, ranges.data(), ranges.size(), sensor_to_global, config, out, stats);
 }
 
+// Removes the disks whose centre lies within `radius` of `point` (the followed robot seen
+// by the laser is the target, not an obstacle). radius <= 0 removes nothing.
+void dropDisksNear(const Eigen::Vector2d& point, double radius, std::vector<Disk>* disks);
+
 }  // namespace core
 }  // namespace amigobot_tracking

@@ -37,6 +37,7 @@
 #include "amigobot_tracking/TrackingState.h"
 #include "amigobot_tracking/VirtualObstacle.h"
 #include "amigobot_tracking/core/controller.h"
+#include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 #include "amigobot_tracking/core/virtual_obstacles.h"
 #include "amigobot_tracking/ros/tracking_params.h"
@@ -100,6 +101,7 @@ class TrackingNode {
   void updateScanObstaclesLocked();
   std::string staleReasonLocked(const Lookup& pose, const Lookup& target, bool scan_fresh) const;  // "" when fresh
   bool stepLocked(const ros::Time& now, const Lookup& pose, const Lookup& target, core::ControllerOutput* out);
+  void excludeTargetLocked(const Lookup& target);  // drops laser disks on the followed robot
   void publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output, const core::ControllerOutput& out);
   void publishMarkersLocked(const ros::Time& now, const Lookup& pose, bool have_output,
                             const core::ControllerOutput& out);
@@ -114,6 +116,7 @@ class TrackingNode {
 
   TrackingNodeConfig node_config_;
   core::ScanObstacleConfig scan_config_;
+  core::ObstacleTrackerConfig tracker_config_;
   core::ControllerConfig controller_config_;  // in use
   core::ControllerConfig pending_config_;     // from dynamic_reconfigure, applied between steps
   bool config_pending_ = false;
@@ -129,6 +132,7 @@ class TrackingNode {
   core::VirtualObstacleSet virtual_obstacles_;
   std::vector<core::Disk> scan_disks_;       // from used_scan_
   std::vector<core::Disk> scan_disks_next_;  // scratch for the next scan
+  core::ObstacleTracker obstacle_tracker_;   // laser disks across scans (moving_obstacles)
   std::vector<core::Disk> obstacles_;  // scan + virtual, rebuilt every cycle
   sensor_msgs::LaserScan::ConstPtr processed_scan_;  // last scan looked at
   sensor_msgs::LaserScan::ConstPtr used_scan_;       // last scan turned into scan_disks_ (its age counts)

@@ -10,6 +10,7 @@
 #include <ros/node_handle.h>
 
 #include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 #include "amigobot_tracking/core/virtual_obstacles.h"
 
@@ -29,6 +30,9 @@ struct TrackingNodeConfig {
   double clicked_point_radius = 0.2;     // [m] radius of a disk added by rviz "Publish Point"
   double robot_v_max = 1.0;              // [m/s] the robot's own limit: v_max never exceeds it
   double robot_w_max = 5.24;             // [rad/s] the robot's own limit (ARIA: 300 deg/s)
+  // [m] laser disks whose centre is this close to the target are the target itself (another
+  // robot being followed), not obstacles; 0 = off. Never applied to virtual obstacles.
+  double target_exclusion_radius = 0.0;
 
   std::string validate() const;
 };
@@ -54,6 +58,7 @@ std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* confi
 std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeConfig& node,
                                  core::ControllerConfig* config);
 std::string loadScanObstacleConfig(const ros::NodeHandle& pnh, core::ScanObstacleConfig* config);
+std::string loadObstacleTrackerConfig(const ros::NodeHandle& pnh, core::ObstacleTrackerConfig* config);
 // ~virtual_obstacles: a list of {id: str, center: [x, y], radius: r} in global_frame.
 std::string loadVirtualObstacles(const ros::NodeHandle& pnh, std::vector<core::VirtualObstacle>* list);
 
