@@ -17,3 +17,4 @@ amigobot_add_unit_test(test_controller_config test/unit/test_controller_config.c
 target_link_libraries(test_controller_config amigobot_tracking_core)
 amigobot_add_unit_test(test_closed_loop test/unit/test_closed_loop.cpp)
 target_link_libraries(test_closed_loop amigobot_tracking_core)
+include(cmake/aria_tests.cmake)

@@ -1,0 +1,17 @@
+# Layer 2: the ARIA robot protocol, the MRPT-based driver library and the robot emulator.
+# Core + MRPT (comms, poses) + yaml-cpp; no ROS headers.
+find_package(mrpt-comms REQUIRED)
+find_package(mrpt-poses REQUIRED)
+find_package(Threads REQUIRED)
+
+add_library(amigobot_tracking_aria
+  src/aria/packet.cpp
+  src/aria/commands.cpp
+  src/aria/sip.cpp
+  src/aria/robot_params.cpp
+  src/aria/odometry.cpp
+  src/aria/wheel_command.cpp
+)
+target_include_directories(amigobot_tracking_aria PUBLIC include)
+target_link_libraries(amigobot_tracking_aria PUBLIC amigobot_tracking_core mrpt::comms mrpt::poses yaml-cpp Threads::Threads)
+target_compile_options(amigobot_tracking_aria PRIVATE ${AMIGOBOT_WARNINGS})
