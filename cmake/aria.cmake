@@ -11,7 +11,16 @@ add_library(amigobot_tracking_aria
   src/aria/robot_params.cpp
   src/aria/odometry.cpp
   src/aria/wheel_command.cpp
+  src/aria/transport.cpp
+  src/aria/client.cpp
+  src/aria/emulator.cpp
+  src/aria/emulator_server.cpp
 )
 target_include_directories(amigobot_tracking_aria PUBLIC include)
 target_link_libraries(amigobot_tracking_aria PUBLIC amigobot_tracking_core mrpt::comms mrpt::poses yaml-cpp Threads::Threads)
 target_compile_options(amigobot_tracking_aria PRIVATE ${AMIGOBOT_WARNINGS})
+
+amigobot_add_tool(amigobot_emulator src/tools/amigobot_emulator.cpp)
+target_link_libraries(amigobot_emulator amigobot_tracking_aria)
+amigobot_add_tool(amigobot_drive src/tools/amigobot_drive.cpp)
+target_link_libraries(amigobot_drive amigobot_tracking_aria)
