@@ -11,7 +11,7 @@ CATKIN := catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUIL
 SETUP := source $(WS)/devel/setup.bash
 RESULTS := $(WS)/build/test_results
 
-.PHONY: deps build test demo bench clean
+.PHONY: deps build test demo bench fuzz clean
 
 deps:
 	@$(ROOT)/scripts/install_deps.sh
@@ -27,6 +27,7 @@ test: build
 	rm -rf $(RESULTS)
 	$(CATKIN) tests
 	-$(CATKIN) run_tests
+	-$(ROOT)/scripts/run_fuzz.sh 30 $(RESULTS)
 	@$(ROOT)/scripts/count_test_results.py $(RESULTS)
 
 demo: build
@@ -35,6 +36,11 @@ demo: build
 bench: build
 	$(CATKIN) bench_core
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+
+# Longer libFuzzer run of the ARIA packet parser (ASan + UBSan): make fuzz FUZZ_SECONDS=600
+FUZZ_SECONDS ?= 600
+fuzz: deps
+	$(ROOT)/scripts/run_fuzz.sh $(FUZZ_SECONDS)
 
 clean:
 	rm -rf $(WS)

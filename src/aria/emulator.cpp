@@ -207,6 +207,16 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
   return {};
 }
 
+void RobotEmulator::checkWatchdog(double now) {
+  if (!open_ || watchdog_tripped_ || now - last_command_ <= options_.robot.watchdog) return;
+  watchdog_tripped_ = true;
+  ++counters_.watchdog_trips;
+  if (options_.simulator_mode) {
+    std::fprintf(stderr, "amigobot_emulator: watchdog: no command for %.1f s (simulator: warning only)\n",
+                 now - last_command_);
+  }
+}
+
 void RobotEmulator::stepPhysics(double dt) {
   const bool watchdog_stop = watchdog_tripped_ && !options_.simulator_mode;
   const bool drive = motors_ && !watchdog_stop;
@@ -239,17 +249,16 @@ void RobotEmulator::stepPhysics(double dt) {
 
 std::vector<std::uint8_t> RobotEmulator::advance(double now) {
   if (last_time_ < 0.0) last_time_ = now;
+  // The watchdog is checked every physics step, so a long advance() stops the robot at the
+  // right moment rather than at the end.
   while (last_time_ < now) {
+    checkWatchdog(last_time_);
     const double dt = std::min(options_.physics_step, now - last_time_);
     stepPhysics(dt);
     last_time_ += dt;
   }
+  checkWatchdog(now);
   if (!open_) return {};
-  if (now - last_command_ > options_.robot.watchdog && !watchdog_tripped_) {
-    watchdog_tripped_ = true;
-    ++counters_.watchdog_trips;
-    if (options_.simulator_mode) std::fprintf(stderr, "amigobot_emulator: watchdog: no command for %.1f s (simulator: warning only)\n", now - last_command_);
-  }
   if (now < next_sip_) return {};
   next_sip_ += options_.robot.sip_cycle;
   if (next_sip_ <= now) next_sip_ = now + options_.robot.sip_cycle;  // fell behind: do not burst

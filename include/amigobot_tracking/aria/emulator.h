@@ -70,6 +70,7 @@ class RobotEmulator {
 
  private:
   void stepPhysics(double dt);
+  void checkWatchdog(double now);
   void close();
   std::vector<std::uint8_t> makeSip();
   void setTarget(double v, double w);
