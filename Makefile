@@ -36,6 +36,8 @@ demo: build
 bench: build
 	$(CATKIN) bench_core
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(CATKIN) bench_aria
+	$(WS)/devel/lib/amigobot_tracking/bench_aria
 
 # Longer libFuzzer run of the ARIA packet parser (ASan + UBSan): make fuzz FUZZ_SECONDS=600
 FUZZ_SECONDS ?= 600
