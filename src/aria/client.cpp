@@ -372,7 +372,7 @@ void AriaClient::handleSip(const Sip& sip) {
   state.sonar_updated.assign(sonar_ranges_.size(), false);
   for (const auto& reading : sip.sonars) {
     if (reading.index >= sonar_ranges_.size()) continue;  // a transducer the model does not have
-    sonar_ranges_[reading.index] = reading.range * config_.robot.range_conv_factor * 1e-3;
+    sonar_ranges_[reading.index] = sonarRange(reading, config_.robot);
     state.sonar_updated[reading.index] = true;
   }
   state.sonar_ranges = sonar_ranges_;

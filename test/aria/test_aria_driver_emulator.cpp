@@ -255,6 +255,16 @@ TEST(AriaDriverEmulator, SimulatorMotorsFollowTheRequestAndCloseDropsTheSocket) 
   EXPECT_TRUE(waitFor([&] { return !emu.truth().open; }, 5.0));
 }
 
+// OPEN is sent with ARIA's int argument by default; p2os sends it bare. Both must open.
+TEST(AriaDriverEmulator, BareOpenAlsoOpensTheRobot) {
+  EmulatorProcess emu;
+  ClientConfig config = clientConfig(emu.address());
+  config.open_with_argument = false;
+  auto client = connectClient(config);
+  EXPECT_TRUE(emu.truth().open);
+  EXPECT_GT(client->status().sips, 0u);
+}
+
 TEST(AriaDriverEmulator, GivesUpOnASilentPortWithAReadableError) {
   const int port = freePort();  // nobody listens here
   ClientConfig config = clientConfig("127.0.0.1:" + std::to_string(port));

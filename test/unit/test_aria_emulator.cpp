@@ -6,6 +6,7 @@
 
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/aria/emulator.h"
+#include "amigobot_tracking/aria/odometry.h"
 
 using namespace amigobot_tracking::aria;
 
@@ -151,4 +152,25 @@ TEST(AriaEmulator, InvalidOptionsAreRejectedByName) {
   o.obstacles.push_back({{0.0, 0.0}, -1.0});
   EXPECT_NE(o.validate().find("obstacles[0]"), std::string::npos);
   EXPECT_THROW(RobotEmulator robot(o), std::invalid_argument);
+}
+
+// The sonar scale is uncertain (ARIA/p2os: 1 mm per unit; AmigOS v1.3 manual: 0.555 mm per
+// unit). Either reading round-trips when robot and driver agree, and a mismatch shows as a
+// 0.555 scale error, which is what a real-robot check against a tape measure would reveal.
+TEST(AriaEmulator, SonarScaleReadingsRoundTripAndAMismatchIsVisible) {
+  for (double scale : {1.0, 0.555}) {
+    EmulatorOptions o;
+    o.simulator_mode = true;  // all eight transducers in every SIP
+    o.robot.range_conv_factor = scale;
+    o.obstacles.push_back({{1.0, 0.0}, 0.2});
+    RobotEmulator robot(o);
+    openRobot(robot, 0.0);
+    const auto sip = sipAt(robot, 0.0);
+    ASSERT_TRUE(sip);
+    const SonarReading& front = sip->sonars.at(2);
+    EXPECT_NEAR(sonarRange(front, o.robot), robot.sonarRanges()[2], 1e-3 * scale) << scale;
+    RobotParams other = o.robot;
+    other.range_conv_factor = scale == 1.0 ? 0.555 : 1.0;
+    EXPECT_NEAR(sonarRange(front, other) / sonarRange(front, o.robot), other.range_conv_factor / scale, 1e-9);
+  }
 }

@@ -42,6 +42,10 @@ class SipOdometry {
 // Robot-measured twist from a SIP: v = (L+R)/2, w from ROTVEL when present, else
 // (R-L)/2 * DiffConvFactor. SI units.
 core::Twist2 sipTwist(const Sip& sip, const RobotParams& params);
+// A sonar reading in metres (raw range * RangeConvFactor).
+inline double sonarRange(const SonarReading& reading, const RobotParams& params) {
+  return reading.range * params.range_conv_factor * 1e-3;
+}
 
 }  // namespace aria
 }  // namespace amigobot_tracking
