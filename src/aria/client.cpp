@@ -194,39 +194,29 @@ bool AriaClient::nextPacket(Packet& packet) {
   return parser_.next(packet);
 }
 
-bool AriaClient::connect() {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    parser_.reset();
-  }
-  transport_ = makeTransport(config_.port, config_.baud);
-  log(LogLevel::kInfo, "connecting to the robot over " + transport_->describe());
-  transport_->open();
+bool AriaClient::receiveFor(double duration, const std::function<bool(const Packet&)>& on_packet) {
+  const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration));
   Packet packet;
-  auto drain = [&](double duration) {
-    const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration));
-    while (Clock::now() < until && !stop_requested_) {
-      pump(kPollMs);
-      while (nextPacket(packet)) {
-      }
+  while (Clock::now() < until && !stop_requested_) {
+    while (nextPacket(packet)) {
+      if (on_packet(packet)) return true;
     }
-  };
-  // Waits for the next packet until the deadline.
-  auto await = [&](double timeout) -> std::optional<Packet> {
-    const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout));
-    while (Clock::now() < until && !stop_requested_) {
-      if (nextPacket(packet)) return packet;
-      pump(kPollMs);
-    }
-    return std::nullopt;
-  };
-  drain(kDrainTime);
+    pump(kPollMs);
+  }
+  return false;
+}
 
+std::optional<RobotIdentity> AriaClient::synchronise() {
+  const auto ignore = [](const Packet&) { return false; };
+  receiveFor(kDrainTime, ignore);  // stale bytes from an earlier session
   int stage = 0;
-  std::optional<RobotIdentity> identity;
-  for (int tries = 0; tries < config_.max_sync_tries && !identity && !stop_requested_; ++tries) {
+  for (int tries = 0; tries < config_.max_sync_tries && !stop_requested_; ++tries) {
     send(syncPacket(stage));
-    const std::optional<Packet> reply = await(config_.sync_timeout);
+    std::optional<Packet> reply;
+    receiveFor(config_.sync_timeout, [&](const Packet& p) {
+      reply = p;
+      return true;
+    });
     if (!reply) {
       log(LogLevel::kDebug, "no reply to SYNC" + std::to_string(stage) + "; restarting at SYNC0");
       stage = 0;
@@ -234,8 +224,9 @@ bool AriaClient::connect() {
       ++stage;
     } else if (reply->type == kSync2 && stage == 2) {
       std::string error;
-      identity = decodeSync2(*reply, &error);
+      std::optional<RobotIdentity> identity = decodeSync2(*reply, &error);
       if (!identity) throw std::runtime_error(transport_->describe() + ": " + error);
+      return identity;
     } else if (isSipType(reply->type)) {
       // The robot is still open from an earlier session: close it, then start again.
       log(LogLevel::kWarn, "robot still open from an earlier session: sending CLOSE and restarting the handshake");
@@ -245,9 +236,9 @@ bool AriaClient::connect() {
       }
       for (int i = 0; i < 3; ++i) {
         send(commandPacket(Command::kClose, 1));
-        drain(0.1);
+        receiveFor(0.1, ignore);
       }
-      drain(0.3);
+      receiveFor(0.3, ignore);
       stage = 0;
     } else {
       log(LogLevel::kDebug, "unexpected packet type " + std::to_string(reply->type) + " during SYNC" +
@@ -255,55 +246,59 @@ bool AriaClient::connect() {
       stage = 0;
     }
   }
-  if (stop_requested_) return false;
-  if (!identity) {
-    throw std::runtime_error(transport_->describe() + ": no SYNC0/1/2 handshake after " +
-                             std::to_string(config_.max_sync_tries) + " tries (robot off, wrong port or baud?)");
-  }
-  if (identity->subclass != config_.robot.model) {
-    log(LogLevel::kWarn, "robot reports subclass '" + identity->subclass + "' but the parameters are for '" +
-                             config_.robot.model + "'");
-  }
+  if (stop_requested_) return std::nullopt;
+  throw std::runtime_error(transport_->describe() + ": no SYNC0/1/2 handshake after " +
+                           std::to_string(config_.max_sync_tries) + " tries (robot off, wrong port or baud?)");
+}
+
+std::optional<ConfigPac> AriaClient::openRobot() {
   send(config_.open_with_argument ? commandPacket(Command::kOpen, 1) : commandPacket(Command::kOpen));
   send(commandPacket(Command::kSonar, config_.sonar ? 1 : 0));
-
   std::optional<ConfigPac> config;
   bool have_sip = false;
-  auto handleDuringOpen = [&](const Packet& p) {
+  const auto handle = [&](const Packet& p) {
     if (p.type == kConfigPacType) {
       std::string error;
       config = decodeConfigPac(p, &error);
       if (!config) log(LogLevel::kWarn, error);
-    } else if (isSipType(p.type)) {
-      have_sip = true;
     }
+    have_sip = have_sip || isSipType(p.type);
+    return false;
   };
-  if (config_.config_timeout > 0.0) {
-    const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                          std::chrono::duration<double>(config_.config_timeout));
-    auto next_request = Clock::now();
-    while (!config && Clock::now() < until && !stop_requested_) {
-      if (Clock::now() >= next_request) {
-        send(commandPacket(Command::kConfig, 1));
-        next_request = Clock::now() + std::chrono::milliseconds(200);
-      }
-      pump(kPollMs);
-      while (nextPacket(packet)) handleDuringOpen(packet);
-    }
-    if (!config) log(LogLevel::kWarn, "no CONFIGpac within " + std::to_string(config_.config_timeout) + " s; using the parameter file's limits");
+  // CONFIGpac, re-requested every 200 ms as ARIA does.
+  for (double waited = 0.0; !config && waited < config_.config_timeout && !stop_requested_; waited += 0.2) {
+    send(commandPacket(Command::kConfig, 1));
+    receiveFor(0.2, [&](const Packet& p) { return handle(p) || config.has_value(); });
   }
-  if (config_.trans_accel > 0) send(commandPacket(Command::kSetA, static_cast<int>(std::lround(config_.trans_accel * 1e3))));
-  if (config_.trans_decel > 0) send(commandPacket(Command::kSetA, -static_cast<int>(std::lround(config_.trans_decel * 1e3))));
-  if (config_.rot_accel > 0) send(commandPacket(Command::kSetRA, static_cast<int>(std::lround(config_.rot_accel * kRadToDeg))));
-  if (config_.rot_decel > 0) send(commandPacket(Command::kSetRA, -static_cast<int>(std::lround(config_.rot_decel * kRadToDeg))));
+  if (!config && config_.config_timeout > 0.0) {
+    log(LogLevel::kWarn, "no CONFIGpac; using the parameter file's limits");
+  }
+  const auto sendInt = [&](Command c, double value) { send(commandPacket(c, static_cast<int>(std::lround(value)))); };
+  if (config_.trans_accel > 0) sendInt(Command::kSetA, config_.trans_accel * 1e3);
+  if (config_.trans_decel > 0) sendInt(Command::kSetA, -config_.trans_decel * 1e3);
+  if (config_.rot_accel > 0) sendInt(Command::kSetRA, config_.rot_accel * kRadToDeg);
+  if (config_.rot_decel > 0) sendInt(Command::kSetRA, -config_.rot_decel * kRadToDeg);
+  if (!have_sip) receiveFor(config_.link_timeout, [&](const Packet& p) { return handle(p) || have_sip; });
+  if (!have_sip && !stop_requested_) throw std::runtime_error(transport_->describe() + ": robot sent no SIP after OPEN");
+  return config;
+}
 
-  const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(config_.link_timeout));
-  while (!have_sip && Clock::now() < until && !stop_requested_) {
-    pump(kPollMs);
-    while (nextPacket(packet)) handleDuringOpen(packet);
+bool AriaClient::connect() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    parser_.reset();
   }
+  transport_ = makeTransport(config_.port, config_.baud);
+  log(LogLevel::kInfo, "connecting to the robot over " + transport_->describe());
+  transport_->open();
+  const std::optional<RobotIdentity> identity = synchronise();
+  if (!identity) return false;  // stop requested
+  if (identity->subclass != config_.robot.model) {
+    log(LogLevel::kWarn, "robot reports subclass '" + identity->subclass + "' but the parameters are for '" +
+                             config_.robot.model + "'");
+  }
+  const std::optional<ConfigPac> config = openRobot();
   if (stop_requested_) return false;
-  if (!have_sip) throw std::runtime_error(transport_->describe() + ": robot sent no SIP after OPEN");
 
   odometry_.relink();
   sent_.reset();

@@ -39,7 +39,8 @@ struct ClientConfig {
   double sync_timeout = 1.0;          // [s] wait for each SYNC reply (ARIA: 1000 ms)
   int max_sync_tries = 20;            // SYNC packets sent per connection attempt
   double config_timeout = 1.0;        // [s] wait for CONFIGpac; 0 = do not request it
-  double link_timeout = 1.0;          // [s] without a SIP -> link lost (ARIA: 8 s)
+  double link_timeout = 2.0;          // [s] without a SIP -> link lost (ARIA: 8 s). A false
+                                      // alarm costs a re-handshake, which CLOSEs the robot
   double reconnect_delay_min = 0.5;   // [s] first back-off after a failure
   double reconnect_delay_max = 8.0;   // [s] back-off doubles up to this
   bool enable_motors = false;         // request ENABLE 1 after every (re)connection
@@ -113,7 +114,14 @@ class AriaClient {
  private:
   using Clock = std::chrono::steady_clock;
   void run();
-  bool connect();                 // one full handshake attempt
+  bool connect();                 // one full handshake attempt; false if stopped
+  // SYNC0/1/2 with the still-open recovery; nullopt if stopped, throws after max tries.
+  std::optional<RobotIdentity> synchronise();
+  // OPEN, SONAR, CONFIG (with retries), SETA/SETRA; waits for the first SIP.
+  std::optional<ConfigPac> openRobot();
+  // Pumps the link for up to `duration` [s], handing each packet to `on_packet` until it
+  // returns true (then returns true).
+  bool receiveFor(double duration, const std::function<bool(const Packet&)>& on_packet);
   void serve();                   // connected: until link loss or stop
   void shutdownRobot();
   bool sleepUnlessStopped(double seconds);
