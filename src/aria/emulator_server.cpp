@@ -70,7 +70,10 @@ void writeAll(int fd, const std::vector<std::uint8_t>& bytes) {
 }  // namespace
 
 EmulatorServer::EmulatorServer(RobotEmulator& robot, EmulatorServerOptions options)
-    : robot_(robot), options_(std::move(options)) {
+    : robot_(robot), options_(std::move(options)), noise_(options_.corrupt_seed) {
+  if (!(options_.corrupt_probability >= 0.0 && options_.corrupt_probability <= 1.0)) {
+    throw std::invalid_argument("amigobot_emulator: corrupt probability must be within [0, 1]");
+  }
   if (!(options_.time_scale > 0.0 && options_.time_scale <= 100.0)) {
     throw std::invalid_argument("amigobot_emulator: time_scale must be within (0, 100]");
   }
@@ -132,7 +135,24 @@ void EmulatorServer::acceptRobotClient() {
 void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
   if (bytes.empty()) return;
   const int fd = tcp_active_ ? tcp_client_.fd : pty_.fd;
-  if (fd >= 0) writeAll(fd, bytes);
+  if (fd < 0) return;
+  if (options_.corrupt_probability <= 0.0) {
+    writeAll(fd, bytes);
+    return;
+  }
+  // A noisy line: each packet may get a flipped byte, a dropped tail or leading garbage.
+  std::vector<std::uint8_t> out = bytes;
+  std::uniform_real_distribution<double> chance(0.0, 1.0);
+  std::uniform_int_distribution<std::size_t> where(0, out.size() - 1);
+  if (chance(noise_) < options_.corrupt_probability) {
+    switch (where(noise_) % 3) {
+      case 0: out[where(noise_)] ^= 0x5A; break;
+      case 1: out.resize(where(noise_)); break;
+      default: out.insert(out.begin(), {0x13, kHeader0, 0x37}); break;
+    }
+    ++corrupted_;
+  }
+  writeAll(fd, out);
 }
 
 void EmulatorServer::readLink(Link& link, bool is_tcp) {

@@ -31,6 +31,7 @@ const char* kUsage =
     "  --odometry-noise S  relative std-dev of the wheel speeds the firmware integrates\n"
     "  --seed N            noise seed (default 1)\n"
     "  --time-scale K      emulated seconds per wall second (default 1)\n"
+    "  --corrupt P         noisy line: each robot packet is damaged with probability P\n"
     "  --simulator-mode    behave like an ARIA simulator (MobileSim): motors start enabled,\n"
     "                      SIPs always 0x32, watchdog only warns, CLOSE drops the connection\n"
     "Prints 'READY tcp=PORT status=PORT pty=PATH' on stdout once it listens.\n";
@@ -69,8 +70,9 @@ int main(int argc, char** argv) {
     else if (a == "--world") world_file = value();
     else if (a == "--name") name = value();
     else if (a == "--odometry-noise") robot.odometry_noise = number(a, value());
-    else if (a == "--seed") robot.seed = static_cast<std::uint32_t>(number(a, value()));
+    else if (a == "--seed") robot.seed = server.corrupt_seed = static_cast<std::uint32_t>(number(a, value()));
     else if (a == "--time-scale") server.time_scale = number(a, value());
+    else if (a == "--corrupt") server.corrupt_probability = number(a, value());
     else if (a == "--simulator-mode") robot.simulator_mode = true;
     else if (a == "-h" || a == "--help") {
       std::cout << kUsage;

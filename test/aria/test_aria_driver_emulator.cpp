@@ -255,6 +255,30 @@ TEST(AriaDriverEmulator, SimulatorMotorsFollowTheRequestAndCloseDropsTheSocket) 
   EXPECT_TRUE(waitFor([&] { return !emu.truth().open; }, 5.0));
 }
 
+// A noisy serial line (user problem #1: bad checksums): a fifth of the robot's packets are
+// damaged. The parser resynchronises, the link stays up and odometry still matches the
+// ground truth, because SIP positions are absolute (a lost SIP loses no motion).
+TEST(AriaDriverEmulator, NoisyLineKeepsTheLinkAndTheOdometry) {
+  const std::string link = ptyLink("noisy");
+  EmulatorProcess emu({"--corrupt", "0.2"}, 0, link);
+  ClientConfig config = clientConfig(link);
+  config.enable_motors = true;
+  auto client = connectClient(config);
+  client->setVelocity({0.2, 0.3});
+  std::this_thread::sleep_for(std::chrono::seconds(3));
+  client->setVelocity({0.0, 0.0});
+  waitStopped(emu);
+  const ClientStatus s = client->status();
+  EXPECT_GT(s.parser.errors() + s.parser.garbage_bytes, 0u) << "the line was not noisy";
+  EXPECT_EQ(s.connections, 1u) << "the link dropped: " << s.last_error;
+  const Truth truth = emu.truth();
+  const Pose2 est = odom(*client);
+  EXPECT_GT(std::hypot(truth.x, truth.y), 0.2);
+  EXPECT_NEAR(est.x, truth.x, 0.01);
+  EXPECT_NEAR(est.y, truth.y, 0.01);
+  EXPECT_NEAR(wrapAngle(est.theta - truth.theta), 0.0, 0.01);
+}
+
 // OPEN is sent with ARIA's int argument by default; p2os sends it bare. Both must open.
 TEST(AriaDriverEmulator, BareOpenAlsoOpensTheRobot) {
   EmulatorProcess emu;

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,8 @@ struct EmulatorServerOptions {
   std::string pty_link;         // symlink to the pty's slave; empty = no pty
   int status_port = -1;         // ground-truth status; 0 = any free port; -1 = none
   double time_scale = 1.0;      // emulated seconds per wall second
+  double corrupt_probability = 0.0;  // per robot packet: flip a byte, cut it or prefix garbage
+  std::uint32_t corrupt_seed = 1;
 };
 
 class EmulatorServer {
@@ -59,6 +63,8 @@ class EmulatorServer {
   std::vector<int> status_clients_;
   std::vector<std::string> status_buffers_;
   double start_wall_ = 0.0;
+  std::mt19937 noise_;
+  std::uint64_t corrupted_ = 0;
 };
 
 }  // namespace aria
