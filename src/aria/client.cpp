@@ -94,7 +94,11 @@ void AriaClient::start() {
 }
 
 void AriaClient::stop() {
-  stop_requested_ = true;
+  {
+    // Under the wait's mutex, so a back-off sleep cannot miss the wake-up.
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    stop_requested_ = true;
+  }
   wake_.notify_all();
   if (thread_.joinable()) thread_.join();
 }
@@ -298,7 +302,10 @@ bool AriaClient::connect() {
                              config_.robot.model + "'");
   }
   const std::optional<ConfigPac> config = openRobot();
-  if (stop_requested_) return false;
+  if (stop_requested_) {
+    shutdownRobot();  // stopped halfway: do not leave the robot open
+    return false;
+  }
 
   odometry_.relink();
   sent_.reset();
