@@ -1,6 +1,6 @@
 # gtest units of the aria layer (codec, parameters, quantisation, odometry) and the
 # driver <-> emulator tests over real sockets and a real pty.
-foreach(unit packet sip robot_params wheel_command odometry emulator)
+foreach(unit packet sip robot_params wheel_command odometry emulator client_config)
   amigobot_add_unit_test(test_aria_${unit} test/unit/test_aria_${unit}.cpp)
   target_link_libraries(test_aria_${unit} amigobot_tracking_aria)
   target_compile_definitions(test_aria_${unit} PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

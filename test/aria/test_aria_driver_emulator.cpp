@@ -279,6 +279,21 @@ TEST(AriaDriverEmulator, NoisyLineKeepsTheLinkAndTheOdometry) {
   EXPECT_NEAR(wrapAngle(est.theta - truth.theta), 0.0, 0.01);
 }
 
+// The emulator's --time-scale (for faster-than-real-time runs) keeps the protocol intact:
+// SIPs arrive proportionally faster and the driver follows.
+TEST(AriaDriverEmulator, TimeScaledEmulatorStillDrives) {
+  EmulatorProcess emu({"--time-scale", "3"});
+  ClientConfig config = clientConfig(emu.address());
+  config.enable_motors = true;
+  auto client = connectClient(config);
+  EXPECT_TRUE(waitFor([&] { return client->status().sip_rate > 20.0; }, 5.0)) << client->status().sip_rate;
+  client->setVelocity({0.2, 0.0});
+  EXPECT_TRUE(waitFor([&] { return odom(*client).x > 0.2; }, 10.0));
+  client->setVelocity({0.0, 0.0});
+  waitStopped(emu);
+  EXPECT_NEAR(odom(*client).x, emu.truth().x, 0.01);
+}
+
 // OPEN is sent with ARIA's int argument by default; p2os sends it bare. Both must open.
 TEST(AriaDriverEmulator, BareOpenAlsoOpensTheRobot) {
   EmulatorProcess emu;
