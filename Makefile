@@ -11,7 +11,7 @@ CATKIN := catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUIL
 SETUP := source $(WS)/devel/setup.bash
 RESULTS := $(WS)/build/test_results
 
-.PHONY: deps build test demo bench clean sim reproduce
+.PHONY: deps build test demo bench fuzz clean sim reproduce
 
 deps:
 	@$(ROOT)/scripts/install_deps.sh
@@ -28,6 +28,8 @@ test: build
 	$(CATKIN) tests
 	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.
 	$(CATKIN) run_tests -k; echo $$? > $(WS)/build/run_tests.rc
+	@# The parser fuzzer (30 s, ASan + UBSan) records its own JUnit case, pass or fail.
+	-$(ROOT)/scripts/run_fuzz.sh 30 $(RESULTS)
 	@$(ROOT)/scripts/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
 
 # Until the whole simulated stack runs (issue 6): the offline closed loop on the paper's rose.
@@ -44,6 +46,8 @@ bench: build
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_scan_obstacles --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(CATKIN) bench_tracking_cycle
 	$(SETUP) && $(ROOT)/scripts/with_private_roscore.sh $(WS)/devel/lib/amigobot_tracking/bench_tracking_cycle --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(CATKIN) bench_aria
+	$(WS)/devel/lib/amigobot_tracking/bench_aria
 
 # Offline simulator: make sim SCENARIO=config/scenarios/paper_5_1.yaml OUT=out/paper_5_1 [ARGS="--variant fixed_rho"]
 SCENARIO ?= config/scenarios/paper_5_2_rose.yaml
@@ -54,6 +58,11 @@ sim: build
 # The paper's Section 5 and the baselines: writes docs/results.md and docs/figures/.
 reproduce: build
 	$(ROOT)/scripts/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
+
+# Longer libFuzzer run of the ARIA packet parser (ASan + UBSan): make fuzz FUZZ_SECONDS=600
+FUZZ_SECONDS ?= 600
+fuzz: deps
+	$(ROOT)/scripts/run_fuzz.sh $(FUZZ_SECONDS)
 
 clean:
 	rm -rf $(WS)

@@ -1,0 +1,102 @@
+// The robot side of the protocol as an AmigoBot's firmware does it, without I/O: a
+// kinematic stub (unicycle with wheel-speed and acceleration limits), the firmware's own
+// odometry in its units and wrap, sonar from disk obstacles, the 2 s watchdog. With
+// `simulator_mode` it reproduces a MobileSim-like ARIA simulator instead.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "amigobot_tracking/aria/packet.h"
+#include "amigobot_tracking/aria/robot_params.h"
+#include "amigobot_tracking/aria/sip.h"
+#include "amigobot_tracking/core/types.h"
+
+namespace amigobot_tracking {
+namespace aria {
+
+struct EmulatorOptions {
+  RobotParams robot = RobotParams::amigo();
+  std::string name = "amigo-emulator";   // SYNC2 name
+  bool simulator_mode = false;  // motors start enabled, SIPs always 0x32, watchdog only warns,
+                                // SYNC0 while open = PULSE, a client disconnect closes the robot
+  std::vector<core::Disk> obstacles;     // world, for sonar ranges
+  core::Pose2 initial_pose;              // [m, m, rad] ground truth at start
+  double odometry_noise = 0.0;  // [-] relative std-dev of the wheel speeds the firmware integrates
+  std::uint32_t seed = 1;
+  double battery_voltage = 12.6;  // [V]
+  double sonar_max_range = 5.0;   // [m] reported when nothing is in the cone
+  double sonar_half_cone = 0.2;   // [rad] half opening angle of a transducer's cone
+  double physics_step = 0.01;     // [s]
+  std::string validate() const;
+};
+
+struct EmulatorCounters {
+  std::uint64_t packets = 0;
+  std::uint64_t sips_sent = 0;
+  std::uint64_t watchdog_trips = 0;  // firmware: stops; simulator: warnings
+  std::uint64_t opens = 0;
+  std::uint64_t closes = 0;
+  std::uint64_t unknown_commands = 0;
+  std::uint64_t commands_while_closed = 0;
+};
+
+class RobotEmulator {
+ public:
+  explicit RobotEmulator(EmulatorOptions options);
+
+  // A complete client packet at time `now` [s]; returns the bytes to send back.
+  std::vector<std::uint8_t> handle(const Packet& packet, double now);
+  // Advances the kinematics to `now`; returns a SIP when one is due (else empty).
+  std::vector<std::uint8_t> advance(double now);
+  // The client's link went away (TCP socket closed). Firmware keeps its state (a serial
+  // cable pulled out); a simulator closes the robot.
+  void clientDisconnected();
+
+  bool isOpen() const { return open_; }
+  bool motorsEnabled() const { return motors_; }
+  const core::Pose2& truePose() const { return pose_; }
+  core::Twist2 trueTwist() const { return {v_, w_}; }
+  bool watchdogTripped() const { return watchdog_tripped_; }
+  const EmulatorCounters& counters() const { return counters_; }
+  const EmulatorOptions& options() const { return options_; }
+  // Ground truth in the status socket's line format:
+  // "t x y theta v w motors open watchdog" (SI units, motors/open/watchdog 0 or 1).
+  std::string statusLine(double now) const;
+  // Sonar ranges [m] for the current true pose.
+  std::vector<double> sonarRanges() const;
+
+ private:
+  void stepPhysics(double dt);
+  void checkWatchdog(double now);
+  void close();
+  std::vector<std::uint8_t> makeSip();
+  void setTarget(double v, double w);
+
+  EmulatorOptions options_;
+  std::mt19937 rng_;
+  bool open_ = false;
+  int sync_stage_ = 0;  // 0 waiting for SYNC0 ... 3 synchronised, waiting for OPEN
+  bool motors_ = false;
+  bool sonar_on_ = true;
+  // Setpoints: either (v, w) or wheel speeds from VEL2, all SI.
+  double target_v_ = 0.0, target_w_ = 0.0;
+  double max_v_, max_w_;  // SETV / SETRV
+  double accel_, decel_, rot_accel_, rot_decel_;
+  double v_ = 0.0, w_ = 0.0;  // actual
+  core::Pose2 pose_;          // ground truth
+  double odo_x_mm_ = 0.0, odo_y_mm_ = 0.0, odo_th_ = 0.0;  // firmware odometry
+  double last_time_ = -1.0, last_command_ = 0.0, next_sip_ = 0.0;
+  bool watchdog_tripped_ = false;
+  std::size_t next_sonar_ = 0;
+  EmulatorCounters counters_;
+};
+
+// Reads a world file: `obstacles: [{center: [x, y], radius: r}, ...]` and an optional
+// `initial_pose: [x, y, theta]` (SI). Throws std::runtime_error naming the file and entry.
+void loadWorld(const std::string& path, EmulatorOptions& options);
+
+}  // namespace aria
+}  // namespace amigobot_tracking

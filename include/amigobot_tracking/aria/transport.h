@@ -1,0 +1,36 @@
+// Byte links to the robot through MRPT: CSerialPort for a device path, CClientTCPSocket
+// for "host:port" (a robot simulator or a serial-to-TCP bridge). Errors are thrown as
+// std::runtime_error naming the port.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace amigobot_tracking {
+namespace aria {
+
+class Transport {
+ public:
+  virtual ~Transport() = default;
+  virtual void open() = 0;
+  virtual void close() = 0;
+  virtual bool isOpen() = 0;
+  // Waits up to timeout_ms for data and returns what is available (0 on timeout). Throws
+  // when the link is gone (socket closed by the peer, device unplugged).
+  virtual std::size_t read(std::uint8_t* buffer, std::size_t size, int timeout_ms) = 0;
+  // Writes everything or throws.
+  virtual void write(const std::vector<std::uint8_t>& bytes) = 0;
+  virtual bool isSerial() const = 0;
+  virtual std::string describe() const = 0;
+};
+
+// "host:port" (port all digits) selects TCP, anything else is a serial device.
+bool isTcpAddress(const std::string& port);
+// Throws std::invalid_argument for a malformed address or a non-positive baud rate.
+std::unique_ptr<Transport> makeTransport(const std::string& port, int baud);
+
+}  // namespace aria
+}  // namespace amigobot_tracking

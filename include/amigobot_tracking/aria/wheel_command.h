@@ -1,0 +1,43 @@
+// Turning a desired (v, w) into what the robot can be sent: saturated into the diamond,
+// then quantised to the command's resolution toward the inside of the diamond, so the
+// command actually sent is never outside it. NaN never becomes a command.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "amigobot_tracking/aria/robot_params.h"
+#include "amigobot_tracking/core/diamond.h"
+#include "amigobot_tracking/core/types.h"
+
+namespace amigobot_tracking {
+namespace aria {
+
+enum class CommandMode {
+  kVelRvel,  // VEL [mm/s] + RVEL [deg/s]: 1 mm/s and 1 deg/s steps
+  kVel2,     // VEL2: each wheel in Vel2Divisor (20 mm/s) steps
+};
+
+std::optional<CommandMode> parseCommandMode(const std::string& name);  // "vel_rvel" | "vel2"
+std::string commandModeName(CommandMode mode);
+
+struct QuantizedCommand {
+  CommandMode mode = CommandMode::kVelRvel;
+  // kVelRvel: first = VEL [mm/s], second = RVEL [deg/s].
+  // kVel2: first = left, second = right wheel [Vel2Divisor units].
+  int first = 0;
+  int second = 0;
+  core::Twist2 twist;  // [m/s, rad/s] the robot is asked for by (first, second)
+  bool saturated = false;  // the desired twist was outside the diamond
+};
+
+// nullopt for a non-finite desired twist. Otherwise the largest lattice point, component
+// by component toward zero, whose twist lies inside `diamond` (within the robot's limits).
+std::optional<QuantizedCommand> quantizeCommand(const core::Twist2& desired, CommandMode mode,
+                                                const RobotParams& params, const core::DiamondSet& diamond);
+
+// The twist a command lattice point stands for.
+core::Twist2 commandTwist(CommandMode mode, int first, int second, const RobotParams& params);
+
+}  // namespace aria
+}  // namespace amigobot_tracking

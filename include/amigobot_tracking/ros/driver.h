@@ -1,0 +1,70 @@
+// ROS wrapper of the AmigoBot driver (aria::AriaClient): cmd_vel in; odom, tf, sonar,
+// battery, motors_state and /diagnostics out; enable_motors, disable_motors and
+// reset_odometry services. Shared by the nodelet amigobot_tracking/Driver and the node
+// amigobot_driver_node. Serial I/O runs on the client's thread; the cmd_vel callback only
+// stores the latest request.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/Twist.h>
+#include <ros/ros.h>
+#include <std_srvs/Empty.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include "amigobot_tracking/aria/client.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+struct DriverParams {
+  aria::ClientConfig client;
+  std::string odom_frame = "odom";
+  std::string base_frame = "base_link";
+  std::string sonar_frame_prefix = "sonar_";  // transducer i publishes in <prefix><i>
+  bool publish_tf = true;
+  bool publish_sonar_tf = true;  // static base_link -> sonar_i from the robot parameters
+  double position_variance = 1e-3;  // [m^2] odom pose covariance, x and y
+  double heading_variance = 1e-2;   // [rad^2]
+  double battery_low_voltage = 11.0;  // [V] diagnostics warn below this
+  double sonar_min_range = 0.1;       // [m] sensor_msgs/Range min_range
+};
+
+// Reads the private parameters (see README); throws std::runtime_error naming the bad one.
+DriverParams loadDriverParams(const ros::NodeHandle& pnh);
+
+class AmigobotDriver {
+ public:
+  AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh);
+  ~AmigobotDriver();  // stops the robot: zero velocity, ENABLE 0, CLOSE
+
+ private:
+  void onCmdVel(const geometry_msgs::Twist::ConstPtr& msg);
+  void onSip(const aria::RobotState& state);  // client I/O thread
+  bool enableMotors(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  bool disableMotors(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  bool resetOdometry(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void publishSonarTransforms();
+
+  DriverParams params_;
+  ros::NodeHandle nh_, pnh_;
+  ros::Subscriber cmd_vel_sub_;
+  ros::Publisher odom_pub_, sonar_pub_, battery_pub_, motors_pub_;
+  ros::ServiceServer enable_srv_, disable_srv_, reset_srv_;
+  tf2_ros::TransformBroadcaster tf_;
+  tf2_ros::StaticTransformBroadcaster static_tf_;
+  diagnostic_updater::Updater updater_;
+  ros::Timer diagnostics_timer_;
+  std::mutex publish_mutex_;
+  int last_motors_state_ = -1;  // -1: not yet published
+  std::unique_ptr<aria::AriaClient> client_;
+};
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

@@ -1,0 +1,452 @@
+#include "amigobot_tracking/aria/client.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "amigobot_tracking/aria/commands.h"
+
+namespace amigobot_tracking {
+namespace aria {
+namespace {
+
+constexpr int kPollMs = 20;
+constexpr double kInterByteTimeout = 0.1;  // [s] ARIA drops a partial packet after 100 ms
+constexpr double kDrainTime = 0.2;         // [s] input drained after opening the port
+constexpr double kEnableRetry = 1.0;       // [s] ENABLE re-sent while the SIP disagrees
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+double seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+void defaultLog(LogLevel level, const std::string& text) {
+  static const char* names[] = {"debug", "info", "warn", "error"};
+  if (level == LogLevel::kDebug) return;
+  std::fprintf(stderr, "[aria %s] %s\n", names[static_cast<int>(level)], text.c_str());
+}
+
+}  // namespace
+
+std::string ClientConfig::validate() const {
+  if (port.empty()) return "port: empty (expected /dev/ttyUSB0 or host:port)";
+  if (baud <= 0) return "baud: must be positive, got " + std::to_string(baud);
+  const std::string robot_error = robot.validate();
+  if (!robot_error.empty()) return "robot." + robot_error;
+  const std::pair<const char*, double> positive[] = {
+      {"v_max", v_max},           {"w_max", w_max},           {"command_refresh", command_refresh},
+      {"sync_timeout", sync_timeout}, {"link_timeout", link_timeout},
+      {"reconnect_delay_min", reconnect_delay_min}, {"reconnect_delay_max", reconnect_delay_max}};
+  for (const auto& [name, value] : positive) {
+    if (!std::isfinite(value) || value <= 0.0) {
+      return std::string(name) + ": must be positive and finite, got " + std::to_string(value);
+    }
+  }
+  const std::pair<const char*, double> non_negative[] = {
+      {"command_timeout", command_timeout}, {"min_command_interval", min_command_interval},
+      {"config_timeout", config_timeout},   {"trans_accel", trans_accel}, {"trans_decel", trans_decel},
+      {"rot_accel", rot_accel},             {"rot_decel", rot_decel}};
+  for (const auto& [name, value] : non_negative) {
+    if (!std::isfinite(value) || value < 0.0) {
+      return std::string(name) + ": must be zero or positive and finite, got " + std::to_string(value);
+    }
+  }
+  if (v_max > robot.max_velocity) return "v_max: exceeds the robot's max_velocity " + std::to_string(robot.max_velocity);
+  if (w_max > robot.max_rot_velocity) {
+    return "w_max: exceeds the robot's max_rot_velocity " + std::to_string(robot.max_rot_velocity);
+  }
+  if (command_refresh >= robot.watchdog) {
+    return "command_refresh: must be well below the robot's " + std::to_string(robot.watchdog) + " s watchdog";
+  }
+  if (reconnect_delay_max < reconnect_delay_min) return "reconnect_delay_max: smaller than reconnect_delay_min";
+  if (max_sync_tries < 3) return "max_sync_tries: at least 3 (one per SYNC)";
+  if (max_packet_count < 3 || max_packet_count > 255) return "max_packet_count: must be within 3..255";
+  return {};
+}
+
+std::string linkStateName(LinkState state) {
+  switch (state) {
+    case LinkState::kStopped: return "stopped";
+    case LinkState::kConnecting: return "connecting";
+    case LinkState::kConnected: return "connected";
+    case LinkState::kWaitingToReconnect: return "waiting to reconnect";
+  }
+  return "unknown";
+}
+
+AriaClient::AriaClient(ClientConfig config, LogFunction log)
+    : config_(std::move(config)),
+      log_(log ? std::move(log) : LogFunction(defaultLog)),
+      diamond_(1.0, 1.0),
+      parser_(static_cast<std::size_t>(std::clamp(config_.max_packet_count, 3, 255))),
+      odometry_(config_.robot) {
+  const std::string error = config_.validate();
+  if (!error.empty()) throw std::invalid_argument("AriaClient: " + error);
+  diamond_ = core::DiamondSet(config_.v_max, config_.w_max);
+  sonar_ranges_.assign(config_.robot.sonars.size(), std::nan(""));
+}
+
+AriaClient::~AriaClient() { stop(); }
+
+void AriaClient::start() {
+  if (thread_.joinable()) return;
+  stop_requested_ = false;
+  thread_ = std::thread([this] { run(); });
+}
+
+void AriaClient::stop() {
+  {
+    // Under the wait's mutex, so a back-off sleep cannot miss the wake-up.
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    stop_requested_ = true;
+  }
+  wake_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+void AriaClient::setVelocity(const core::Twist2& twist) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!twist.isFinite()) {
+    ++status_.non_finite_requests;
+    requested_ = {};  // a broken request stops the robot rather than keeping the old one
+  } else {
+    requested_ = twist;
+  }
+  requested_at_ = Clock::now();
+  have_request_ = true;
+}
+
+void AriaClient::requestMotors(bool enabled) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  status_.motors_requested = enabled;
+  motors_request_pending_ = true;
+}
+
+void AriaClient::resetOdometry(const core::Pose2& pose) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  odometry_reset_ = pose;
+}
+
+ClientStatus AriaClient::status() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ClientStatus copy = status_;
+  copy.parser = parser_.stats();
+  return copy;
+}
+
+void AriaClient::log(LogLevel level, const std::string& text) { log_(level, text); }
+
+void AriaClient::setLink(LinkState state) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  status_.link = state;
+}
+
+bool AriaClient::sleepUnlessStopped(double s) {
+  std::unique_lock<std::mutex> lock(wake_mutex_);
+  wake_.wait_for(lock, std::chrono::duration<double>(s), [this] { return stop_requested_.load(); });
+  return !stop_requested_;
+}
+
+void AriaClient::send(const std::vector<std::uint8_t>& bytes) { transport_->write(bytes); }
+
+void AriaClient::run() {
+  double backoff = config_.reconnect_delay_min;
+  while (!stop_requested_) {
+    setLink(LinkState::kConnecting);
+    try {
+      if (connect()) {
+        backoff = config_.reconnect_delay_min;
+        serve();
+      }
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      status_.last_error = e.what();
+    }
+    if (transport_) transport_->close();
+    if (stop_requested_) break;
+    std::string error;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      status_.link = LinkState::kWaitingToReconnect;
+      status_.robot.reset();
+      error = status_.last_error;
+    }
+    char delay[32];
+    std::snprintf(delay, sizeof(delay), "%.1f", backoff);
+    log(LogLevel::kWarn, "link to the robot down (" + error + "); reconnecting in " + delay + " s");
+    sleepUnlessStopped(backoff);
+    backoff = std::min(2.0 * backoff, config_.reconnect_delay_max);
+  }
+  setLink(LinkState::kStopped);
+}
+
+void AriaClient::pump(int timeout_ms) {
+  std::uint8_t buffer[512];
+  const std::size_t n = transport_->read(buffer, sizeof(buffer), timeout_ms);
+  const auto now = Clock::now();
+  if (n > 0) {
+    last_rx_ = now;
+    std::lock_guard<std::mutex> lock(mutex_);  // status() copies the parser's counters
+    parser_.feed(buffer, n);
+  } else if (parser_.hasPartial() && seconds(now - last_rx_) > kInterByteTimeout) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    parser_.expirePartial();
+  }
+}
+
+bool AriaClient::nextPacket(Packet& packet) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return parser_.next(packet);
+}
+
+bool AriaClient::receiveFor(double duration, const std::function<bool(const Packet&)>& on_packet) {
+  const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration));
+  Packet packet;
+  while (Clock::now() < until && !stop_requested_) {
+    while (nextPacket(packet)) {
+      if (on_packet(packet)) return true;
+    }
+    pump(kPollMs);
+  }
+  return false;
+}
+
+std::optional<RobotIdentity> AriaClient::synchronise() {
+  const auto ignore = [](const Packet&) { return false; };
+  receiveFor(kDrainTime, ignore);  // stale bytes from an earlier session
+  int stage = 0;
+  for (int tries = 0; tries < config_.max_sync_tries && !stop_requested_; ++tries) {
+    send(syncPacket(stage));
+    std::optional<Packet> reply;
+    receiveFor(config_.sync_timeout, [&](const Packet& p) {
+      reply = p;
+      return true;
+    });
+    if (!reply) {
+      log(LogLevel::kDebug, "no reply to SYNC" + std::to_string(stage) + "; restarting at SYNC0");
+      stage = 0;
+    } else if (reply->type == stage && stage < 2) {
+      ++stage;
+    } else if (reply->type == kSync2 && stage == 2) {
+      std::string error;
+      std::optional<RobotIdentity> identity = decodeSync2(*reply, &error);
+      if (!identity) throw std::runtime_error(transport_->describe() + ": " + error);
+      return identity;
+    } else if (isSipType(reply->type)) {
+      // The robot is still open from an earlier session: close it, then start again.
+      log(LogLevel::kWarn, "robot still open from an earlier session: sending CLOSE and restarting the handshake");
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        ++status_.still_open_recoveries;
+      }
+      for (int i = 0; i < 3; ++i) {
+        send(commandPacket(Command::kClose, 1));
+        receiveFor(0.1, ignore);
+      }
+      receiveFor(0.3, ignore);
+      stage = 0;
+    } else {
+      log(LogLevel::kDebug, "unexpected packet type " + std::to_string(reply->type) + " during SYNC" +
+                                std::to_string(stage) + "; restarting at SYNC0");
+      stage = 0;
+    }
+  }
+  if (stop_requested_) return std::nullopt;
+  throw std::runtime_error(transport_->describe() + ": no SYNC0/1/2 handshake after " +
+                           std::to_string(config_.max_sync_tries) + " tries (robot off, wrong port or baud?)");
+}
+
+std::optional<ConfigPac> AriaClient::openRobot() {
+  send(config_.open_with_argument ? commandPacket(Command::kOpen, 1) : commandPacket(Command::kOpen));
+  send(commandPacket(Command::kSonar, config_.sonar ? 1 : 0));
+  std::optional<ConfigPac> config;
+  bool have_sip = false;
+  const auto handle = [&](const Packet& p) {
+    if (p.type == kConfigPacType) {
+      std::string error;
+      config = decodeConfigPac(p, &error);
+      if (!config) log(LogLevel::kWarn, error);
+    }
+    have_sip = have_sip || isSipType(p.type);
+    return false;
+  };
+  // CONFIGpac, re-requested every 200 ms as ARIA does.
+  for (double waited = 0.0; !config && waited < config_.config_timeout && !stop_requested_; waited += 0.2) {
+    send(commandPacket(Command::kConfig, 1));
+    receiveFor(0.2, [&](const Packet& p) { return handle(p) || config.has_value(); });
+  }
+  if (!config && config_.config_timeout > 0.0) {
+    log(LogLevel::kWarn, "no CONFIGpac; using the parameter file's limits");
+  }
+  const auto sendInt = [&](Command c, double value) { send(commandPacket(c, static_cast<int>(std::lround(value)))); };
+  if (config_.trans_accel > 0) sendInt(Command::kSetA, config_.trans_accel * 1e3);
+  if (config_.trans_decel > 0) sendInt(Command::kSetA, -config_.trans_decel * 1e3);
+  if (config_.rot_accel > 0) sendInt(Command::kSetRA, config_.rot_accel * kRadToDeg);
+  if (config_.rot_decel > 0) sendInt(Command::kSetRA, -config_.rot_decel * kRadToDeg);
+  if (!have_sip) receiveFor(config_.link_timeout, [&](const Packet& p) { return handle(p) || have_sip; });
+  if (!have_sip && !stop_requested_) throw std::runtime_error(transport_->describe() + ": robot sent no SIP after OPEN");
+  return config;
+}
+
+bool AriaClient::connect() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    parser_.reset();
+  }
+  transport_ = makeTransport(config_.port, config_.baud);
+  log(LogLevel::kInfo, "connecting to the robot over " + transport_->describe());
+  transport_->open();
+  const std::optional<RobotIdentity> identity = synchronise();
+  if (!identity) return false;  // stop requested
+  if (identity->subclass != config_.robot.model) {
+    log(LogLevel::kWarn, "robot reports subclass '" + identity->subclass + "' but the parameters are for '" +
+                             config_.robot.model + "'");
+  }
+  const std::optional<ConfigPac> config = openRobot();
+  if (stop_requested_) {
+    shutdownRobot();  // stopped halfway: do not leave the robot open
+    return false;
+  }
+
+  odometry_.relink();
+  sent_.reset();
+  sip_times_.clear();
+  last_sip_ = last_rx_ = Clock::now();
+  last_motion_sent_ = last_enable_sent_ = Clock::time_point{};
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_.identity = identity;
+    status_.config = config;
+    ++status_.connections;
+    status_.last_error.clear();
+    if (config_.enable_motors) status_.motors_requested = true;
+    motors_request_pending_ = true;  // re-assert the requested motor state on every connection
+    status_.link = LinkState::kConnected;
+  }
+  log(LogLevel::kInfo, "connected to '" + identity->name + "' (" + identity->robot_class + " " + identity->subclass +
+                           ") over " + transport_->describe());
+  return true;
+}
+
+void AriaClient::serve() {
+  Packet packet;
+  while (!stop_requested_) {
+    pump(kPollMs);
+    while (nextPacket(packet)) handlePacket(packet);
+    const auto now = Clock::now();
+    if (seconds(now - last_sip_) > config_.link_timeout) {
+      throw std::runtime_error("no SIP for " + std::to_string(seconds(now - last_sip_)).substr(0, 4) + " s");
+    }
+    updateCommand(now);
+  }
+  shutdownRobot();
+}
+
+void AriaClient::handlePacket(const Packet& packet) {
+  if (isSipType(packet.type)) {
+    std::string error;
+    const std::optional<Sip> sip = decodeSip(packet, &error);
+    if (sip) {
+      handleSip(*sip);
+    } else {
+      log(LogLevel::kWarn, error);
+    }
+  } else if (packet.type == kConfigPacType) {
+    std::optional<ConfigPac> config = decodeConfigPac(packet);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (config) status_.config = std::move(config);
+  }
+}
+
+void AriaClient::handleSip(const Sip& sip) {
+  const auto now = Clock::now();
+  last_sip_ = now;
+  sip_times_.push_back(now);
+  sip_times_.erase(sip_times_.begin(),
+                   std::find_if(sip_times_.begin(), sip_times_.end(),
+                                [&](Clock::time_point t) { return seconds(now - t) <= 1.0; }));
+  RobotState state;
+  state.stamp = seconds(now.time_since_epoch());
+  state.odometry = odometry_.update(sip);
+  state.battery_voltage = 0.1 * (sip.battery_x10 ? *sip.battery_x10 : sip.battery);
+  state.motors_enabled = sip.motorsEnabled();
+  state.left_stall = sip.leftStall();
+  state.right_stall = sip.rightStall();
+  state.sonar_updated.assign(sonar_ranges_.size(), false);
+  for (const auto& reading : sip.sonars) {
+    if (reading.index >= sonar_ranges_.size()) continue;  // a transducer the model does not have
+    sonar_ranges_[reading.index] = sonarRange(reading, config_.robot);
+    state.sonar_updated[reading.index] = true;
+  }
+  state.sonar_ranges = sonar_ranges_;
+  state.sip = sip;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++status_.sips;
+    const double span = seconds(sip_times_.back() - sip_times_.front());
+    status_.sip_rate = span > 0.0 ? static_cast<double>(sip_times_.size() - 1) / span : 0.0;
+    status_.robot = state;
+  }
+  if (sip_callback_) sip_callback_(state);
+}
+
+void AriaClient::updateCommand(Clock::time_point now) {
+  core::Twist2 desired;
+  bool motors = false;
+  bool motors_pending = false;
+  bool robot_motors = false;
+  std::optional<core::Pose2> reset;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const bool fresh = have_request_ && (config_.command_timeout <= 0.0 ||
+                                         seconds(now - requested_at_) <= config_.command_timeout);
+    if (fresh) desired = requested_;
+    motors = status_.motors_requested;
+    motors_pending = motors_request_pending_;
+    motors_request_pending_ = false;
+    robot_motors = status_.robot && status_.robot->motors_enabled;
+    reset.swap(odometry_reset_);
+  }
+  if (reset) odometry_.reset(*reset);
+  // The robot's motor state follows the request; a simulator starts with motors on.
+  if (motors_pending || (robot_motors != motors && seconds(now - last_enable_sent_) > kEnableRetry)) {
+    send(commandPacket(Command::kEnable, motors ? 1 : 0));
+    last_enable_sent_ = now;
+  }
+  std::optional<QuantizedCommand> q = quantizeCommand(desired, config_.command_mode, config_.robot, diamond_);
+  if (!q) q = quantizeCommand({}, config_.command_mode, config_.robot, diamond_);
+  const bool changed = !sent_ || sent_->first != q->first || sent_->second != q->second;
+  const double since = seconds(now - last_motion_sent_);
+  if (!((changed && since >= config_.min_command_interval) || since >= config_.command_refresh)) return;
+  if (q->mode == CommandMode::kVel2) {
+    send(vel2Packet(q->first, q->second));
+  } else {
+    send(commandPacket(Command::kVel, q->first));
+    send(commandPacket(Command::kRVel, q->second));
+  }
+  sent_ = q;
+  last_motion_sent_ = now;
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++status_.commands_sent;
+  status_.last_command = q;
+}
+
+void AriaClient::shutdownRobot() {
+  try {
+    if (config_.command_mode == CommandMode::kVel2) {
+      send(vel2Packet(0, 0));
+    } else {
+      send(commandPacket(Command::kVel, 0));
+      send(commandPacket(Command::kRVel, 0));
+    }
+    send(commandPacket(Command::kEnable, 0));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    send(commandPacket(Command::kClose, 1));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    log(LogLevel::kInfo, "robot stopped, motors disabled and connection closed");
+  } catch (const std::exception& e) {
+    log(LogLevel::kWarn, std::string("could not close the robot cleanly: ") + e.what());
+  }
+}
+
+}  // namespace aria
+}  // namespace amigobot_tracking

@@ -1,0 +1,367 @@
+#include "amigobot_tracking/aria/emulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include <mrpt/poses/CPose2D.h>
+#include <yaml-cpp/yaml.h>
+
+#include "amigobot_tracking/aria/commands.h"
+#include "amigobot_tracking/core/unicycle.h"
+
+namespace amigobot_tracking {
+namespace aria {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+// Moves `value` toward `target` by at most rate * dt; `rate_up` applies when the speed
+// grows in magnitude, `rate_down` when it shrinks.
+double approach(double value, double target, double rate_up, double rate_down, double dt) {
+  const bool speeding_up = std::abs(target) > std::abs(value) && value * target >= 0.0;
+  const double step = (speeding_up ? rate_up : rate_down) * dt;
+  if (std::abs(target - value) <= step) return target;
+  return value + (target > value ? step : -step);
+}
+
+long wrapUnits(double value, long modulus) {
+  const long units = std::lround(value);
+  return ((units % modulus) + modulus) % modulus;
+}
+
+}  // namespace
+
+std::string EmulatorOptions::validate() const {
+  const std::string robot_error = robot.validate();
+  if (!robot_error.empty()) return "robot." + robot_error;
+  if (!(odometry_noise >= 0.0 && std::isfinite(odometry_noise))) return "odometry_noise: must be >= 0";
+  if (!(physics_step > 0.0 && physics_step <= 0.05)) return "physics_step: must be within (0, 0.05] s";
+  if (!(sonar_max_range > 0.0)) return "sonar_max_range: must be positive";
+  if (!initial_pose.isFinite()) return "initial_pose: must be finite";
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    if (!(obstacles[i].radius > 0.0) || !obstacles[i].center.allFinite()) {
+      return "obstacles[" + std::to_string(i) + "]: needs a finite centre and a positive radius";
+    }
+  }
+  if (name.empty() || name.size() > 60) return "name: must be 1..60 characters";
+  return {};
+}
+
+RobotEmulator::RobotEmulator(EmulatorOptions options)
+    : options_(std::move(options)), rng_(options_.seed), pose_(options_.initial_pose) {
+  const std::string error = options_.validate();
+  if (!error.empty()) throw std::invalid_argument("emulator: " + error);
+  close();
+  counters_.closes = 0;
+}
+
+void RobotEmulator::close() {
+  // CLOSE reverts the settings to the FLASH defaults and stops everything.
+  open_ = false;
+  sync_stage_ = 0;
+  motors_ = false;
+  sonar_on_ = true;
+  target_v_ = target_w_ = 0.0;
+  max_v_ = options_.robot.max_velocity;
+  max_w_ = options_.robot.max_rot_velocity;
+  accel_ = options_.robot.trans_accel;
+  decel_ = options_.robot.trans_decel;
+  rot_accel_ = options_.robot.rot_accel;
+  rot_decel_ = options_.robot.rot_decel;
+  watchdog_tripped_ = false;
+  ++counters_.closes;
+}
+
+void RobotEmulator::clientDisconnected() {
+  if (options_.simulator_mode && open_) close();
+}
+
+void RobotEmulator::setTarget(double v, double w) {
+  target_v_ = std::clamp(v, -max_v_, max_v_);
+  target_w_ = std::clamp(w, -max_w_, max_w_);
+}
+
+std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now) {
+  ++counters_.packets;
+  advance(now);
+  const std::optional<int> arg = intArgument(packet);
+  const int value = arg.value_or(0);
+  if (!open_) {
+    // SYNC1 and OPEN share byte 1 and SYNC2 and CLOSE byte 2: the handshake stage tells
+    // them apart. Out of sequence, the firmware restarts at SYNC0.
+    switch (packet.type) {
+      case kSync0:
+        sync_stage_ = 1;
+        return encodePacket(kSync0, {});
+      case kSync1:
+        if (sync_stage_ == 3) {
+          open_ = true;
+          sync_stage_ = 0;
+          motors_ = options_.simulator_mode;
+          ++counters_.opens;
+          last_command_ = now;
+          next_sip_ = now;
+          return {};
+        }
+        if (sync_stage_ == 1) {
+          sync_stage_ = 2;
+          return encodePacket(kSync1, {});
+        }
+        sync_stage_ = 0;
+        return {};
+      case kSync2:
+        if (sync_stage_ == 2) {
+          sync_stage_ = 3;
+          return encodeSync2({options_.name, "Pioneer", options_.robot.model});
+        }
+        sync_stage_ = 0;
+        return {};
+      default:
+        ++counters_.commands_while_closed;
+        return {};
+    }
+  }
+  last_command_ = now;
+  watchdog_tripped_ = false;  // commands resumed: back to the last setpoints
+  const double b = options_.robot.halfTrack();
+  switch (static_cast<Command>(packet.type)) {
+    case Command::kPulse:  // SYNC0 (same byte) while open is a PULSE
+    case Command::kOpen:
+      break;
+    case Command::kClose:
+      close();
+      break;
+    case Command::kEnable:
+      motors_ = value != 0;
+      target_v_ = target_w_ = 0.0;
+      break;
+    case Command::kSetA:
+      if (value > 0) accel_ = value * 1e-3;
+      if (value < 0) decel_ = -value * 1e-3;
+      break;
+    case Command::kSetV:
+      if (value > 0) max_v_ = std::min(value * 1e-3, options_.robot.max_velocity);
+      break;
+    case Command::kSetRV:
+      if (value > 0) max_w_ = std::min(value * kDegToRad, options_.robot.max_rot_velocity);
+      break;
+    case Command::kSetRA:
+      if (value > 0) rot_accel_ = value * kDegToRad;
+      if (value < 0) rot_decel_ = -value * kDegToRad;
+      break;
+    case Command::kSetO:
+      odo_x_mm_ = odo_y_mm_ = odo_th_ = 0.0;
+      break;
+    case Command::kVel:
+      setTarget(value * 1e-3, target_w_);
+      break;
+    case Command::kRVel:
+    case Command::kRotate:
+      setTarget(target_v_, value * kDegToRad);
+      break;
+    case Command::kVel2: {
+      int left = 0, right = 0;
+      unpackVel2(value, left, right);
+      const double l = left * options_.robot.vel2_divisor * 1e-3;
+      const double r = right * options_.robot.vel2_divisor * 1e-3;
+      setTarget(0.5 * (l + r), 0.5 * (r - l) / b);
+      break;
+    }
+    case Command::kStop:
+      target_v_ = target_w_ = 0.0;
+      break;
+    case Command::kEStop:
+      target_v_ = target_w_ = v_ = w_ = 0.0;
+      break;
+    case Command::kSonar:
+      sonar_on_ = value != 0;
+      break;
+    case Command::kConfig: {
+      ConfigPac c;
+      c.robot_type = "Pioneer";
+      c.subtype = options_.robot.model;
+      c.serial = "EMU0001";
+      c.rot_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.max_rot_velocity / kDegToRad));
+      c.trans_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.max_velocity * 1e3));
+      c.rot_acc_top = c.trans_acc_top = 0;
+      c.name = options_.name;
+      c.sip_cycle_ms = static_cast<std::uint8_t>(std::lround(options_.robot.sip_cycle * 1e3));
+      c.watchdog = static_cast<std::uint16_t>(std::lround(options_.robot.watchdog * 1e3));
+      c.rot_vel_max = static_cast<std::uint16_t>(std::lround(max_w_ / kDegToRad));
+      c.trans_vel_max = static_cast<std::uint16_t>(std::lround(max_v_ * 1e3));
+      c.rot_acc = static_cast<std::uint16_t>(std::lround(rot_accel_ / kDegToRad));
+      c.rot_decel = static_cast<std::uint16_t>(std::lround(rot_decel_ / kDegToRad));
+      c.trans_acc = static_cast<std::uint16_t>(std::lround(accel_ * 1e3));
+      c.trans_decel = static_cast<std::uint16_t>(std::lround(decel_ * 1e3));
+      c.front_sonar = 1;
+      c.auto_baud = 0;
+      c.firmware_version = "amigobot_emulator";
+      return encodeConfigPac(c);
+    }
+    default:
+      ++counters_.unknown_commands;
+      break;
+  }
+  return {};
+}
+
+void RobotEmulator::checkWatchdog(double now) {
+  if (!open_ || watchdog_tripped_ || now - last_command_ <= options_.robot.watchdog) return;
+  watchdog_tripped_ = true;
+  ++counters_.watchdog_trips;
+  if (options_.simulator_mode) {
+    std::fprintf(stderr, "amigobot_emulator: watchdog: no command for %.1f s (simulator: warning only)\n",
+                 now - last_command_);
+  }
+}
+
+void RobotEmulator::stepPhysics(double dt) {
+  const bool watchdog_stop = watchdog_tripped_ && !options_.simulator_mode;
+  const bool drive = motors_ && !watchdog_stop;
+  const double tv = drive ? target_v_ : 0.0;
+  const double tw = drive ? target_w_ : 0.0;
+  v_ = approach(v_, tv, accel_, decel_, dt);
+  w_ = approach(w_, tw, rot_accel_, rot_decel_, dt);
+  // Wheel-speed limit: |v| + b|w| <= max wheel speed, scaled radially.
+  const double b = options_.robot.halfTrack();
+  const double wheel = std::abs(v_) + b * std::abs(w_);
+  if (wheel > options_.robot.max_velocity) {
+    const double s = options_.robot.max_velocity / wheel;
+    v_ *= s;
+    w_ *= s;
+  }
+  pose_ = core::integrateUnicycle(pose_, {v_, w_}, dt);
+  // The firmware's odometry integrates its (noisy) wheel speeds in its own frame.
+  double left = v_ - b * w_, right = v_ + b * w_;
+  if (options_.odometry_noise > 0.0) {
+    std::normal_distribution<double> noise(0.0, options_.odometry_noise);
+    left *= 1.0 + noise(rng_);
+    right *= 1.0 + noise(rng_);
+  }
+  const core::Pose2 odo = core::integrateUnicycle({odo_x_mm_ * 1e-3, odo_y_mm_ * 1e-3, odo_th_},
+                                                  {0.5 * (left + right), 0.5 * (right - left) / b}, dt);
+  odo_x_mm_ = odo.x * 1e3;
+  odo_y_mm_ = odo.y * 1e3;
+  odo_th_ = odo.theta;
+}
+
+std::vector<std::uint8_t> RobotEmulator::advance(double now) {
+  if (last_time_ < 0.0) last_time_ = now;
+  // The watchdog is checked every physics step, so a long advance() stops the robot at the
+  // right moment rather than at the end.
+  while (last_time_ < now) {
+    checkWatchdog(last_time_);
+    const double dt = std::min(options_.physics_step, now - last_time_);
+    stepPhysics(dt);
+    last_time_ += dt;
+  }
+  checkWatchdog(now);
+  if (!open_) return {};
+  if (now < next_sip_) return {};
+  next_sip_ += options_.robot.sip_cycle;
+  if (next_sip_ <= now) next_sip_ = now + options_.robot.sip_cycle;  // fell behind: do not burst
+  ++counters_.sips_sent;
+  return makeSip();
+}
+
+std::vector<double> RobotEmulator::sonarRanges() const {
+  std::vector<double> ranges;
+  const mrpt::poses::CPose2D robot(pose_.x, pose_.y, pose_.theta);
+  for (const SonarPose& s : options_.robot.sonars) {
+    const mrpt::poses::CPose2D sensor = robot + mrpt::poses::CPose2D(s.x, s.y, s.yaw);
+    double best = options_.sonar_max_range;
+    for (const core::Disk& d : options_.obstacles) {
+      const double dx = d.center.x() - sensor.x(), dy = d.center.y() - sensor.y();
+      const double dist = std::hypot(dx, dy);
+      if (dist <= d.radius) {
+        best = 0.0;
+        continue;
+      }
+      // The disk is seen when any part of it is inside the cone; range to its surface.
+      const double bearing = std::abs(core::wrapAngle(std::atan2(dy, dx) - sensor.phi()));
+      if (bearing <= options_.sonar_half_cone + std::asin(d.radius / dist)) best = std::min(best, dist - d.radius);
+    }
+    ranges.push_back(best);
+  }
+  return ranges;
+}
+
+std::vector<std::uint8_t> RobotEmulator::makeSip() {
+  const RobotParams& p = options_.robot;
+  const double b = p.halfTrack();
+  Sip sip;
+  const bool moving = std::abs(v_) > 1e-4 || std::abs(w_) > 1e-4;
+  sip.type = options_.simulator_mode || !moving ? kSipStopped : kSipMoving;
+  sip.x = static_cast<std::uint16_t>(wrapUnits(odo_x_mm_ / p.dist_conv_factor, 0x8000));
+  sip.y = static_cast<std::uint16_t>(wrapUnits(odo_y_mm_ / p.dist_conv_factor, 0x8000));
+  sip.theta = static_cast<std::int16_t>(wrapUnits(odo_th_ / p.angle_conv_factor, p.angle_units_per_turn));
+  sip.left_vel = static_cast<std::int16_t>(std::lround((v_ - b * w_) * 1e3 / p.vel_conv_factor));
+  sip.right_vel = static_cast<std::int16_t>(std::lround((v_ + b * w_) * 1e3 / p.vel_conv_factor));
+  sip.battery = static_cast<std::uint8_t>(std::lround(options_.battery_voltage * 10));
+  sip.control = sip.theta;
+  sip.flags = (motors_ ? kFlagMotorsEnabled : 0) | (sonar_on_ ? kFlagSonarArrays : 0);
+  if (sonar_on_ && !p.sonars.empty()) {
+    const std::vector<double> ranges = sonarRanges();
+    // The firmware reports the transducers fired since the last SIP: half the ring per cycle.
+    const std::size_t per_sip = options_.simulator_mode ? ranges.size() : std::max<std::size_t>(1, ranges.size() / 2);
+    for (std::size_t k = 0; k < per_sip; ++k) {
+      const std::size_t i = (next_sonar_ + k) % ranges.size();
+      sip.sonars.push_back({static_cast<std::uint8_t>(i),
+                            static_cast<std::uint16_t>(std::lround(ranges[i] * 1e3 / p.range_conv_factor))});
+    }
+    next_sonar_ = (next_sonar_ + per_sip) % ranges.size();
+  }
+  sip.grip_state = 0;
+  sip.battery_x10 = static_cast<std::uint16_t>(std::lround(options_.battery_voltage * 10));
+  sip.rot_vel = static_cast<std::int16_t>(std::lround(w_ / kDegToRad * 10));
+  sip.temperature = -127;
+  // Tail length: AmigOS ends at DIGOUT, AmigoSH adds BATTERYX10 + CHARGESTATE, the simulator
+  // sends everything up to the state of charge.
+  const int tail = options_.simulator_mode ? 12 : (p.model == "amigo-sh" ? 7 : 5);
+  return encodeSip(sip, tail);
+}
+
+std::string RobotEmulator::statusLine(double now) const {
+  char line[256];
+  std::snprintf(line, sizeof(line), "%.4f %.6f %.6f %.6f %.6f %.6f %d %d %d", now, pose_.x, pose_.y, pose_.theta, v_,
+                w_, motors_ ? 1 : 0, open_ ? 1 : 0, watchdog_tripped_ ? 1 : 0);
+  return line;
+}
+
+void loadWorld(const std::string& path, EmulatorOptions& options) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error(path + ": cannot read world: " + e.what());
+  }
+  try {
+    if (const YAML::Node pose = root["initial_pose"]) {
+      const auto v = pose.as<std::vector<double>>();
+      if (v.size() != 3) throw std::runtime_error(path + ": initial_pose: expected [x, y, theta]");
+      options.initial_pose = {v[0], v[1], v[2]};
+    }
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error(path + ": initial_pose: expected [x, y, theta] (" + e.msg + ")");
+  }
+  const YAML::Node obstacles = root["obstacles"];
+  if (!obstacles) return;
+  if (!obstacles.IsSequence()) throw std::runtime_error(path + ": obstacles: expected a list");
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    const YAML::Node o = obstacles[i];
+    try {
+      const auto c = o["center"].as<std::vector<double>>();
+      const double r = o["radius"].as<double>();
+      if (c.size() != 2 || !(r > 0.0)) throw YAML::Exception(o.Mark(), "center [x, y] and radius > 0");
+      options.obstacles.push_back({{c[0], c[1]}, r});
+    } catch (const YAML::Exception& e) {
+      throw std::runtime_error(path + ":" + std::to_string(o.Mark().line + 1) + ": obstacles[" + std::to_string(i) +
+                               "]: expected {center: [x, y], radius: r > 0} (" + e.msg + ")");
+    }
+  }
+}
+
+}  // namespace aria
+}  // namespace amigobot_tracking

@@ -1,0 +1,243 @@
+#include "amigobot_tracking/aria/emulator_server.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+namespace amigobot_tracking {
+namespace aria {
+namespace {
+
+std::runtime_error systemError(const std::string& what) {
+  return std::runtime_error("amigobot_emulator: " + what + ": " + std::strerror(errno));
+}
+
+int listenOn(const std::string& address, int port, int& bound_port) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) throw systemError("socket");
+  const int one = 1;
+  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(port));
+  if (::inet_pton(AF_INET, address.c_str(), &addr.sin_addr) != 1) {
+    ::close(fd);
+    throw std::runtime_error("amigobot_emulator: bind address '" + address + "' is not an IPv4 address");
+  }
+  if (::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0 || ::listen(fd, 4) < 0) {
+    const std::runtime_error error = systemError("cannot listen on " + address + ":" + std::to_string(port));
+    ::close(fd);
+    throw error;
+  }
+  socklen_t len = sizeof(addr);
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
+  bound_port = ntohs(addr.sin_port);
+  return fd;
+}
+
+double wallSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Writes all bytes or gives up (non-blocking peer that does not read: drop, like a UART).
+void writeAll(int fd, const std::vector<std::uint8_t>& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::send(fd, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (n < 0 && errno == ENOTSOCK) {
+      const ssize_t m = ::write(fd, bytes.data() + done, bytes.size() - done);
+      if (m <= 0) return;
+      done += static_cast<std::size_t>(m);
+      continue;
+    }
+    if (n <= 0) return;
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+}  // namespace
+
+EmulatorServer::EmulatorServer(RobotEmulator& robot, EmulatorServerOptions options)
+    : robot_(robot), options_(std::move(options)), noise_(options_.corrupt_seed) {
+  if (!(options_.corrupt_probability >= 0.0 && options_.corrupt_probability <= 1.0)) {
+    throw std::invalid_argument("amigobot_emulator: corrupt probability must be within [0, 1]");
+  }
+  if (!(options_.time_scale > 0.0 && options_.time_scale <= 100.0)) {
+    throw std::invalid_argument("amigobot_emulator: time_scale must be within (0, 100]");
+  }
+}
+
+EmulatorServer::~EmulatorServer() {
+  for (int fd : {tcp_listen_, status_listen_, tcp_client_.fd, pty_.fd, pty_slave_}) {
+    if (fd >= 0) ::close(fd);
+  }
+  for (int fd : status_clients_) ::close(fd);
+  if (!options_.pty_link.empty() && !pty_name_.empty()) ::unlink(options_.pty_link.c_str());
+}
+
+void EmulatorServer::open() {
+  if (options_.tcp_port >= 0) tcp_listen_ = listenOn(options_.bind_address, options_.tcp_port, tcp_port_);
+  if (options_.status_port >= 0) status_listen_ = listenOn(options_.bind_address, options_.status_port, status_port_);
+  if (!options_.pty_link.empty()) {
+    pty_.fd = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    if (pty_.fd < 0 || ::grantpt(pty_.fd) < 0 || ::unlockpt(pty_.fd) < 0) throw systemError("posix_openpt");
+    pty_name_ = ::ptsname(pty_.fd);
+    // Keep a slave descriptor open so the pty survives clients opening and closing it (as a
+    // robot's UART does), and make it raw: no echo, no line discipline.
+    pty_slave_ = ::open(pty_name_.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+    if (pty_slave_ < 0) throw systemError("open " + pty_name_);
+    termios tio{};
+    ::tcgetattr(pty_slave_, &tio);
+    ::cfmakeraw(&tio);
+    ::cfsetspeed(&tio, B9600);
+    ::tcsetattr(pty_slave_, TCSANOW, &tio);
+    ::unlink(options_.pty_link.c_str());
+    if (::symlink(pty_name_.c_str(), options_.pty_link.c_str()) < 0) {
+      throw systemError("symlink " + options_.pty_link + " -> " + pty_name_);
+    }
+    tcp_active_ = false;
+  }
+  start_wall_ = wallSeconds();
+}
+
+double EmulatorServer::now() const { return (wallSeconds() - start_wall_) * options_.time_scale; }
+
+void EmulatorServer::dropTcpClient() {
+  if (tcp_client_.fd < 0) return;
+  ::close(tcp_client_.fd);
+  tcp_client_.fd = -1;
+  tcp_client_.parser.reset();
+  robot_.clientDisconnected();
+}
+
+void EmulatorServer::acceptRobotClient() {
+  const int fd = ::accept4(tcp_listen_, nullptr, nullptr, SOCK_CLOEXEC);
+  if (fd < 0) return;
+  dropTcpClient();  // one serial port: the newest client takes it over
+  const int one = 1;
+  ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof(one));
+  tcp_client_.fd = fd;
+  tcp_active_ = true;
+}
+
+void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
+  if (bytes.empty()) return;
+  const int fd = tcp_active_ ? tcp_client_.fd : pty_.fd;
+  if (fd < 0) return;
+  if (options_.corrupt_probability <= 0.0) {
+    writeAll(fd, bytes);
+    return;
+  }
+  // A noisy line: each packet may get a flipped byte, a dropped tail or leading garbage.
+  std::vector<std::uint8_t> out = bytes;
+  std::uniform_real_distribution<double> chance(0.0, 1.0);
+  std::uniform_int_distribution<std::size_t> where(0, out.size() - 1);
+  if (chance(noise_) < options_.corrupt_probability) {
+    switch (where(noise_) % 3) {
+      case 0: out[where(noise_)] ^= 0x5A; break;
+      case 1: out.resize(where(noise_)); break;
+      default: out.insert(out.begin(), {0x13, kHeader0, 0x37}); break;
+    }
+    ++corrupted_;
+  }
+  writeAll(fd, out);
+}
+
+void EmulatorServer::readLink(Link& link, bool is_tcp) {
+  std::uint8_t buffer[512];
+  const ssize_t n = ::read(link.fd, buffer, sizeof(buffer));
+  if (n <= 0) {
+    if (is_tcp && (n == 0 || (errno != EAGAIN && errno != EINTR))) dropTcpClient();
+    return;
+  }
+  link.parser.feed(buffer, static_cast<std::size_t>(n));
+  Packet packet;
+  while (link.parser.next(packet)) {
+    tcp_active_ = is_tcp;
+    const bool was_open = robot_.isOpen();
+    sendToActive(robot_.handle(packet, now()));
+    // A simulator closes the connection on CLOSE.
+    if (is_tcp && was_open && !robot_.isOpen() && robot_.options().simulator_mode) {
+      dropTcpClient();
+      return;
+    }
+  }
+}
+
+void EmulatorServer::serveStatus(std::size_t index, bool& quit) {
+  char buffer[256];
+  const ssize_t n = ::read(status_clients_[index], buffer, sizeof(buffer));
+  if (n <= 0) {
+    ::close(status_clients_[index]);
+    status_clients_[index] = -1;
+    return;
+  }
+  std::string& pending = status_buffers_[index];
+  pending.append(buffer, static_cast<std::size_t>(n));
+  std::size_t eol;
+  while ((eol = pending.find('\n')) != std::string::npos) {
+    const std::string line = pending.substr(0, eol);
+    pending.erase(0, eol + 1);
+    if (line.rfind("quit", 0) == 0) quit = true;
+    const std::string reply = robot_.statusLine(now()) + "\n";
+    writeAll(status_clients_[index], std::vector<std::uint8_t>(reply.begin(), reply.end()));
+  }
+}
+
+void EmulatorServer::run(const std::atomic<bool>& stop) {
+  bool quit = false;
+  while (!stop && !quit) {
+    std::vector<pollfd> fds;
+    auto add = [&](int fd) {
+      if (fd >= 0) fds.push_back({fd, POLLIN, 0});
+      return fd >= 0 ? static_cast<int>(fds.size()) - 1 : -1;
+    };
+    const int i_tcp_listen = add(tcp_listen_);
+    const int i_status_listen = add(status_listen_);
+    const int i_tcp = add(tcp_client_.fd);
+    const int i_pty = add(pty_.fd);
+    const int i_status0 = static_cast<int>(fds.size());
+    for (int fd : status_clients_) fds.push_back({fd, POLLIN, 0});
+    // Wake often enough for the physics step and the SIP cycle in wall time.
+    const int timeout_ms = std::max(1, static_cast<int>(5.0 / options_.time_scale));
+    if (::poll(fds.data(), fds.size(), timeout_ms) < 0 && errno != EINTR) throw systemError("poll");
+    auto ready = [&](int i) { return i >= 0 && (fds[static_cast<std::size_t>(i)].revents & (POLLIN | POLLHUP | POLLERR)); };
+    if (ready(i_tcp_listen)) acceptRobotClient();
+    if (ready(i_tcp) && tcp_client_.fd == fds[static_cast<std::size_t>(i_tcp)].fd) readLink(tcp_client_, true);
+    // POLLHUP on the master only means no client holds the slave: not an error.
+    if (i_pty >= 0 && (fds[static_cast<std::size_t>(i_pty)].revents & POLLIN)) readLink(pty_, false);
+    if (ready(i_status_listen)) {
+      const int fd = ::accept4(status_listen_, nullptr, nullptr, SOCK_CLOEXEC);
+      if (fd >= 0) {
+        status_clients_.push_back(fd);
+        status_buffers_.emplace_back();
+      }
+    }
+    const std::size_t n_status = status_clients_.size();
+    for (std::size_t k = 0; k < n_status; ++k) {
+      if (ready(i_status0 + static_cast<int>(k))) serveStatus(k, quit);
+    }
+    for (std::size_t k = status_clients_.size(); k-- > 0;) {
+      if (status_clients_[k] < 0) {
+        status_clients_.erase(status_clients_.begin() + static_cast<std::ptrdiff_t>(k));
+        status_buffers_.erase(status_buffers_.begin() + static_cast<std::ptrdiff_t>(k));
+      }
+    }
+    sendToActive(robot_.advance(now()));
+  }
+}
+
+}  // namespace aria
+}  // namespace amigobot_tracking

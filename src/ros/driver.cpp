@@ -1,0 +1,241 @@
+#include "amigobot_tracking/ros/driver.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Range.h>
+#include <std_msgs/Bool.h>
+#include <std_msgs/Float64.h>
+
+namespace amigobot_tracking {
+namespace ros_layer {
+namespace {
+
+geometry_msgs::Quaternion yawQuaternion(double yaw) {
+  geometry_msgs::Quaternion q;
+  q.z = std::sin(0.5 * yaw);
+  q.w = std::cos(0.5 * yaw);
+  return q;
+}
+
+template <typename T>
+T param(const ros::NodeHandle& pnh, const std::string& name, const T& fallback) {
+  T value = fallback;
+  if (pnh.hasParam(name) && !pnh.getParam(name, value)) {
+    throw std::runtime_error("parameter ~" + name + ": wrong type");
+  }
+  return value;
+}
+
+}  // namespace
+
+DriverParams loadDriverParams(const ros::NodeHandle& pnh) {
+  DriverParams p;
+  aria::ClientConfig& c = p.client;
+  c.port = param<std::string>(pnh, "port", "/dev/ttyUSB0");
+  c.baud = param(pnh, "baud", 9600);
+  const std::string model = param<std::string>(pnh, "robot_model", "amigo");
+  const std::string params_file = param<std::string>(pnh, "robot_params", "");
+  try {
+    c.robot = params_file.empty() ? aria::builtinRobotParams(model) : aria::loadRobotParams(params_file);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("parameter ~robot_model/~robot_params: ") + e.what());
+  }
+  const std::string mode = param<std::string>(pnh, "command_mode", "vel_rvel");
+  const auto parsed = aria::parseCommandMode(mode);
+  if (!parsed) throw std::runtime_error("parameter ~command_mode: '" + mode + "' (expected vel_rvel or vel2)");
+  c.command_mode = *parsed;
+  c.command_timeout = param(pnh, "cmd_vel_timeout", 0.6);
+  c.v_max = param(pnh, "v_max", c.v_max);
+  c.w_max = param(pnh, "w_max", c.w_max);
+  c.trans_accel = param(pnh, "trans_accel", 0.0);
+  c.trans_decel = param(pnh, "trans_decel", 0.0);
+  c.rot_accel = param(pnh, "rot_accel", 0.0);
+  c.rot_decel = param(pnh, "rot_decel", 0.0);
+  c.enable_motors = param(pnh, "enable_motors", false);
+  c.sonar = param(pnh, "sonar", true);
+  c.link_timeout = param(pnh, "link_timeout", c.link_timeout);
+  c.reconnect_delay_max = param(pnh, "reconnect_delay_max", c.reconnect_delay_max);
+  p.odom_frame = param(pnh, "odom_frame", p.odom_frame);
+  p.base_frame = param(pnh, "base_frame", p.base_frame);
+  p.sonar_frame_prefix = param(pnh, "sonar_frame_prefix", p.sonar_frame_prefix);
+  p.publish_tf = param(pnh, "publish_tf", p.publish_tf);
+  p.publish_sonar_tf = param(pnh, "publish_sonar_tf", p.publish_sonar_tf);
+  p.battery_low_voltage = param(pnh, "battery_low_voltage", p.battery_low_voltage);
+  const std::string error = c.validate();
+  if (!error.empty()) throw std::runtime_error("parameter ~" + error);
+  if (p.odom_frame.empty() || p.base_frame.empty()) throw std::runtime_error("parameter ~odom_frame/~base_frame: empty");
+  return p;
+}
+
+AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : params_(loadDriverParams(pnh)), nh_(nh), pnh_(pnh), updater_(nh, pnh) {
+  odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
+  sonar_pub_ = nh_.advertise<sensor_msgs::Range>("sonar", 50);
+  battery_pub_ = nh_.advertise<std_msgs::Float64>("battery_voltage", 1);
+  motors_pub_ = nh_.advertise<std_msgs::Bool>("motors_state", 1, true);
+  enable_srv_ = nh_.advertiseService("enable_motors", &AmigobotDriver::enableMotors, this);
+  disable_srv_ = nh_.advertiseService("disable_motors", &AmigobotDriver::disableMotors, this);
+  reset_srv_ = nh_.advertiseService("reset_odometry", &AmigobotDriver::resetOdometry, this);
+  updater_.setHardwareID("amigobot " + params_.client.port);
+  updater_.add("AmigoBot driver", this, &AmigobotDriver::diagnose);
+  diagnostics_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.force_update(); });
+  if (params_.publish_sonar_tf) publishSonarTransforms();
+
+  client_ = std::make_unique<aria::AriaClient>(params_.client, [](aria::LogLevel level, const std::string& text) {
+    switch (level) {
+      case aria::LogLevel::kDebug: ROS_DEBUG_STREAM_NAMED("aria", text); break;
+      case aria::LogLevel::kInfo: ROS_INFO_STREAM_NAMED("aria", text); break;
+      case aria::LogLevel::kWarn: ROS_WARN_STREAM_NAMED("aria", text); break;
+      case aria::LogLevel::kError: ROS_ERROR_STREAM_NAMED("aria", text); break;
+    }
+  });
+  client_->setSipCallback([this](const aria::RobotState& state) { onSip(state); });
+  client_->start();
+  cmd_vel_sub_ = nh_.subscribe("cmd_vel", 1, &AmigobotDriver::onCmdVel, this);
+}
+
+AmigobotDriver::~AmigobotDriver() {
+  cmd_vel_sub_.shutdown();
+  diagnostics_timer_.stop();
+  client_->stop();
+}
+
+void AmigobotDriver::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
+  client_->setVelocity({msg->linear.x, msg->angular.z});  // NaN is refused (and stops) inside
+}
+
+void AmigobotDriver::onSip(const aria::RobotState& state) {
+  std::lock_guard<std::mutex> lock(publish_mutex_);
+  const ros::Time stamp = ros::Time::now();
+  const auto& pose = state.odometry.pose;
+  const auto& twist = state.odometry.twist;
+  nav_msgs::Odometry odom;
+  odom.header.stamp = stamp;
+  odom.header.frame_id = params_.odom_frame;
+  odom.child_frame_id = params_.base_frame;
+  odom.pose.pose.position.x = pose.x;
+  odom.pose.pose.position.y = pose.y;
+  odom.pose.pose.orientation = yawQuaternion(pose.theta);
+  odom.twist.twist.linear.x = twist.v;
+  odom.twist.twist.angular.z = twist.omega;
+  // Planar robot: z, roll and pitch are known exactly; huge variance would mislead fusers
+  // that ignore them, so use a small value, and x, y, yaw from the parameters.
+  const double fixed = 1e-6;
+  const double pose_diag[6] = {params_.position_variance, params_.position_variance, fixed, fixed, fixed,
+                               params_.heading_variance};
+  const double twist_diag[6] = {1e-3, fixed, fixed, fixed, fixed, 1e-2};
+  for (int i = 0; i < 6; ++i) {
+    odom.pose.covariance[static_cast<std::size_t>(i * 7)] = pose_diag[i];
+    odom.twist.covariance[static_cast<std::size_t>(i * 7)] = twist_diag[i];
+  }
+  odom_pub_.publish(odom);
+  if (params_.publish_tf) {
+    geometry_msgs::TransformStamped t;
+    t.header = odom.header;
+    t.child_frame_id = params_.base_frame;
+    t.transform.translation.x = pose.x;
+    t.transform.translation.y = pose.y;
+    t.transform.rotation = odom.pose.pose.orientation;
+    tf_.sendTransform(t);
+  }
+  std_msgs::Float64 battery;
+  battery.data = state.battery_voltage;
+  battery_pub_.publish(battery);
+  if (last_motors_state_ != static_cast<int>(state.motors_enabled)) {
+    std_msgs::Bool motors;
+    motors.data = state.motors_enabled;
+    motors_pub_.publish(motors);
+    last_motors_state_ = state.motors_enabled;
+  }
+  // One sensor_msgs/Range per transducer reading in this SIP, in the transducer's frame.
+  // REP 117: no echo within the maximum range is +inf.
+  const double max_range = 5.0;
+  for (std::size_t i = 0; i < state.sonar_updated.size(); ++i) {
+    if (!state.sonar_updated[i]) continue;
+    sensor_msgs::Range range;
+    range.header.stamp = stamp;
+    range.header.frame_id = params_.sonar_frame_prefix + std::to_string(i);
+    range.radiation_type = sensor_msgs::Range::ULTRASOUND;
+    range.field_of_view = 0.4;
+    range.min_range = static_cast<float>(params_.sonar_min_range);
+    range.max_range = static_cast<float>(max_range);
+    const double r = state.sonar_ranges[i];
+    range.range = r >= max_range ? std::numeric_limits<float>::infinity() : static_cast<float>(r);
+    sonar_pub_.publish(range);
+  }
+}
+
+void AmigobotDriver::publishSonarTransforms() {
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  for (std::size_t i = 0; i < params_.client.robot.sonars.size(); ++i) {
+    const auto& s = params_.client.robot.sonars[i];
+    geometry_msgs::TransformStamped t;
+    t.header.stamp = ros::Time::now();
+    t.header.frame_id = params_.base_frame;
+    t.child_frame_id = params_.sonar_frame_prefix + std::to_string(i);
+    t.transform.translation.x = s.x;
+    t.transform.translation.y = s.y;
+    t.transform.rotation = yawQuaternion(s.yaw);
+    transforms.push_back(t);
+  }
+  static_tf_.sendTransform(transforms);
+}
+
+bool AmigobotDriver::enableMotors(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  client_->requestMotors(true);
+  return true;
+}
+
+bool AmigobotDriver::disableMotors(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  client_->requestMotors(false);
+  return true;
+}
+
+bool AmigobotDriver::resetOdometry(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  client_->resetOdometry();
+  return true;
+}
+
+void AmigobotDriver::diagnose(diagnostic_updater::DiagnosticStatusWrapper& d) {
+  const aria::ClientStatus s = client_->status();
+  using diagnostic_msgs::DiagnosticStatus;
+  if (s.link != aria::LinkState::kConnected) {
+    d.summaryf(DiagnosticStatus::ERROR, "not connected (%s)%s%s", aria::linkStateName(s.link).c_str(),
+               s.last_error.empty() ? "" : ": ", s.last_error.c_str());
+  } else if (s.sip_rate < 0.5 / params_.client.robot.sip_cycle) {
+    d.summaryf(DiagnosticStatus::WARN, "SIP rate %.1f Hz is low", s.sip_rate);
+  } else if (s.robot && s.robot->battery_voltage < params_.battery_low_voltage) {
+    d.summaryf(DiagnosticStatus::WARN, "battery low: %.1f V", s.robot->battery_voltage);
+  } else {
+    d.summary(DiagnosticStatus::OK, "connected");
+  }
+  d.add("link", aria::linkStateName(s.link));
+  d.add("port", params_.client.port);
+  if (s.identity) d.add("robot", s.identity->name + " (" + s.identity->robot_class + " " + s.identity->subclass + ")");
+  d.add("SIP rate [Hz]", s.sip_rate);
+  d.add("SIPs", s.sips);
+  d.add("connections", s.connections);
+  d.add("still-open recoveries", s.still_open_recoveries);
+  d.add("parser packets", s.parser.packets);
+  d.add("parser garbage bytes", s.parser.garbage_bytes);
+  d.add("parser bad checksums", s.parser.bad_checksum);
+  d.add("parser bad counts", s.parser.bad_count);
+  d.add("parser truncated", s.parser.truncated);
+  d.add("commands sent", s.commands_sent);
+  d.add("non-finite cmd_vel refused", s.non_finite_requests);
+  d.add("command mode", aria::commandModeName(params_.client.command_mode));
+  d.add("motors requested", s.motors_requested);
+  if (s.robot) {
+    d.add("motors enabled", s.robot->motors_enabled);
+    d.add("battery [V]", s.robot->battery_voltage);
+    d.add("stall", s.robot->left_stall || s.robot->right_stall);
+  }
+  if (!s.last_error.empty()) d.add("last error", s.last_error);
+}
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

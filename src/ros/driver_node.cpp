@@ -1,0 +1,17 @@
+// amigobot_driver_node: the AmigoBot driver as a standalone node (same code as the nodelet).
+#include <ros/ros.h>
+
+#include "amigobot_tracking/ros/driver.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "amigobot_driver");
+  ros::NodeHandle nh, pnh("~");
+  try {
+    amigobot_tracking::ros_layer::AmigobotDriver driver(nh, pnh);
+    ros::spin();
+  } catch (const std::exception& e) {
+    ROS_FATAL_STREAM("amigobot_driver: " << e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,233 @@
+// Test helpers: the amigobot_emulator executable as a child process (killed on scope exit),
+// its ground-truth status socket, and a minimal raw protocol client over a real TCP socket
+// or pty. Used by the driver <-> emulator tests; no mocks.
+#pragma once
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "amigobot_tracking/aria/commands.h"
+#include "amigobot_tracking/aria/packet.h"
+
+namespace amigobot_test {
+
+using namespace amigobot_tracking::aria;
+
+inline double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Polls `predicate` every 20 ms until it holds or `timeout` [s] passes.
+inline bool waitFor(const std::function<bool()>& predicate, double timeout) {
+  const double end = now() + timeout;
+  while (now() < end) {
+    if (predicate()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return predicate();
+}
+
+// A TCP port that was free a moment ago (bind to 0, read it back, release it).
+inline int freePort() {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr));
+  socklen_t len = sizeof(addr);
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
+  ::close(fd);
+  return ntohs(addr.sin_port);
+}
+
+inline int connectTcp(int port) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(port));
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+struct Truth {
+  double t = 0, x = 0, y = 0, theta = 0, v = 0, w = 0;
+  bool motors = false, open = false, watchdog = false;
+};
+
+class EmulatorProcess {
+ public:
+  // extra: further command-line options. tcp_port 0 = any free port.
+  explicit EmulatorProcess(std::vector<std::string> extra = {}, int tcp_port = 0, std::string pty_link = "") {
+    start(std::move(extra), tcp_port, std::move(pty_link));
+  }
+  ~EmulatorProcess() { kill(SIGTERM); }
+
+  void start(std::vector<std::string> extra, int tcp_port, std::string pty_link) {
+    int out[2];
+    if (::pipe(out) < 0) throw std::runtime_error("pipe");
+    std::vector<std::string> args = {AMIGOBOT_EMULATOR, "--tcp-port", std::to_string(tcp_port), "--status-port", "0"};
+    if (!pty_link.empty()) {
+      args.push_back("--pty");
+      args.push_back(pty_link);
+    }
+    args.insert(args.end(), extra.begin(), extra.end());
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::dup2(out[1], STDOUT_FILENO);
+      ::close(out[0]);
+      ::close(out[1]);
+      std::vector<char*> argv;
+      for (auto& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(argv[0], argv.data());
+      std::_Exit(127);
+    }
+    ::close(out[1]);
+    // Read the READY line (generous timeout for a loaded machine).
+    std::string line;
+    const double end = now() + 20.0;
+    char c;
+    while (now() < end) {
+      pollfd p{out[0], POLLIN, 0};
+      if (::poll(&p, 1, 100) <= 0) continue;
+      if (::read(out[0], &c, 1) != 1) break;
+      if (c == '\n') break;
+      line.push_back(c);
+    }
+    ::close(out[0]);
+    if (std::sscanf(line.c_str(), "READY tcp=%d status=%d", &tcp_port_, &status_port_) != 2) {
+      kill(SIGKILL);
+      throw std::runtime_error("amigobot_emulator did not start: '" + line + "'");
+    }
+  }
+
+  void kill(int signal) {
+    if (pid_ <= 0) return;
+    ::kill(pid_, signal);
+    int status = 0;
+    for (int i = 0; i < 300 && ::waitpid(pid_, &status, WNOHANG) == 0; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    if (::waitpid(pid_, &status, WNOHANG) == 0) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, &status, 0);
+    }
+    pid_ = -1;
+    if (status_fd_ >= 0) ::close(status_fd_);
+    status_fd_ = -1;
+  }
+
+  int tcpPort() const { return tcp_port_; }
+  std::string address() const { return "127.0.0.1:" + std::to_string(tcp_port_); }
+
+  // Ground truth from the status socket.
+  Truth truth() {
+    if (status_fd_ < 0) status_fd_ = connectTcp(status_port_);
+    if (status_fd_ < 0 || ::write(status_fd_, "status\n", 7) != 7) throw std::runtime_error("status socket");
+    std::string line;
+    char c;
+    while (::read(status_fd_, &c, 1) == 1 && c != '\n') line.push_back(c);
+    Truth t;
+    int motors = 0, open = 0, watchdog = 0;
+    if (std::sscanf(line.c_str(), "%lf %lf %lf %lf %lf %lf %d %d %d", &t.t, &t.x, &t.y, &t.theta, &t.v, &t.w, &motors,
+                    &open, &watchdog) != 9) {
+      throw std::runtime_error("bad status line '" + line + "'");
+    }
+    t.motors = motors;
+    t.open = open;
+    t.watchdog = watchdog;
+    return t;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int tcp_port_ = -1, status_port_ = -1, status_fd_ = -1;
+};
+
+// A bare-bones ARIA client speaking through a file descriptor (TCP socket or pty).
+class RawClient {
+ public:
+  explicit RawClient(int fd) : fd_(fd) {}
+  static RawClient tcp(int port) { return RawClient(connectTcp(port)); }
+  static RawClient pty(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY);
+    if (fd >= 0) {
+      termios tio{};
+      ::tcgetattr(fd, &tio);
+      ::cfmakeraw(&tio);
+      ::tcsetattr(fd, TCSANOW, &tio);
+    }
+    return RawClient(fd);
+  }
+  RawClient(RawClient&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
+  ~RawClient() { closeWithoutGoodbye(); }
+  bool ok() const { return fd_ >= 0; }
+  void send(const std::vector<std::uint8_t>& bytes) {
+    if (::write(fd_, bytes.data(), bytes.size()) != static_cast<ssize_t>(bytes.size())) throw std::runtime_error("write");
+  }
+  // Next packet within `timeout` [s], or type -1.
+  Packet next(double timeout) {
+    const double end = now() + timeout;
+    Packet p;
+    while (!parser_.next(p)) {
+      const double left = end - now();
+      if (left <= 0) {
+        p.type = 0xFF;
+        p.payload.clear();
+        timed_out_ = true;
+        return p;
+      }
+      pollfd pf{fd_, POLLIN, 0};
+      if (::poll(&pf, 1, static_cast<int>(left * 1000) + 1) > 0) {
+        std::uint8_t buf[256];
+        const ssize_t n = ::read(fd_, buf, sizeof(buf));
+        if (n > 0) parser_.feed(buf, static_cast<std::size_t>(n));
+      }
+    }
+    timed_out_ = false;
+    return p;
+  }
+  bool timedOut() const { return timed_out_; }
+  // SYNC0/1/2 then OPEN int 1, as ARIA does; true when the robot answered every SYNC.
+  bool handshakeAndOpen() {
+    for (int n = 0; n < 3; ++n) {
+      send(syncPacket(n));
+      const Packet reply = next(2.0);
+      if (timed_out_ || reply.type != n) return false;
+    }
+    send(commandPacket(Command::kOpen, 1));
+    return true;
+  }
+  void closeWithoutGoodbye() {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+  }
+
+ private:
+  int fd_;
+  PacketParser parser_;
+  bool timed_out_ = false;
+};
+
+}  // namespace amigobot_test

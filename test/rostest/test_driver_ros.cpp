@@ -1,0 +1,154 @@
+// The driver loaded as the nodelet amigobot_tracking/Driver (found through pluginlib)
+// against the amigobot_emulator executable over TCP: motors service and latched state,
+// cmd_vel driving, cmd_vel_timeout, odom vs ground truth, tf, sonar, diagnostics,
+// reset_odometry and a clean unload.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <set>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <nodelet/loader.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Range.h>
+#include <std_msgs/Bool.h>
+#include <std_msgs/Float64.h>
+#include <std_srvs/Empty.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "emulator_process.h"
+
+using namespace amigobot_test;
+
+namespace {
+
+struct Inbox {
+  std::mutex mutex;
+  nav_msgs::Odometry odom;
+  int odom_count = 0;
+  int motors_state = -1;
+  double battery = 0.0;
+  std::set<std::string> sonar_frames;
+  int diagnostics_level = -1;
+  std::string diagnostics_message;
+};
+
+}  // namespace
+
+TEST(DriverRos, NodeletDrivesTheEmulatorAndReportsEverything) {
+  EmulatorProcess emu;
+  ros::NodeHandle nh;
+  ros::param::set("/driver/port", emu.address());
+  ros::param::set("/driver/cmd_vel_timeout", 0.6);
+  ros::param::set("/driver/trans_accel", 1.0);
+  ros::param::set("/driver/trans_decel", 1.0);
+  ros::param::set("/driver/link_timeout", 1.5);
+
+  Inbox in;
+  auto odom_sub = nh.subscribe<nav_msgs::Odometry>("odom", 10, [&](const nav_msgs::Odometry::ConstPtr& m) {
+    std::lock_guard<std::mutex> l(in.mutex);
+    in.odom = *m;
+    ++in.odom_count;
+  });
+  auto motors_sub = nh.subscribe<std_msgs::Bool>("motors_state", 10, [&](const std_msgs::Bool::ConstPtr& m) {
+    std::lock_guard<std::mutex> l(in.mutex);
+    in.motors_state = m->data;
+  });
+  auto battery_sub = nh.subscribe<std_msgs::Float64>("battery_voltage", 10, [&](const std_msgs::Float64::ConstPtr& m) {
+    std::lock_guard<std::mutex> l(in.mutex);
+    in.battery = m->data;
+  });
+  auto sonar_sub = nh.subscribe<sensor_msgs::Range>("sonar", 100, [&](const sensor_msgs::Range::ConstPtr& m) {
+    std::lock_guard<std::mutex> l(in.mutex);
+    in.sonar_frames.insert(m->header.frame_id);
+  });
+  auto diag_sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+        for (const auto& s : m->status) {
+          if (s.name.find("AmigoBot driver") == std::string::npos) continue;
+          std::lock_guard<std::mutex> l(in.mutex);
+          in.diagnostics_level = s.level;
+          in.diagnostics_message = s.message;
+        }
+      });
+  ros::Publisher cmd_pub = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
+  tf2_ros::Buffer tf_buffer;
+  tf2_ros::TransformListener tf_listener(tf_buffer);
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+
+  nodelet::Loader loader(false);
+  ASSERT_TRUE(loader.load("/driver", "amigobot_tracking/Driver", {}, {}));
+  auto locked = [&](auto f) {
+    std::lock_guard<std::mutex> l(in.mutex);
+    return f();
+  };
+  ASSERT_TRUE(waitFor([&] { return locked([&] { return in.odom_count > 3; }); }, 30.0)) << "no odom";
+  EXPECT_TRUE(waitFor([&] { return locked([&] { return in.motors_state == 0; }); }, 5.0)) << "motors_state not latched";
+  std_srvs::Empty empty;
+  ASSERT_TRUE(ros::service::call("enable_motors", empty));
+  EXPECT_TRUE(waitFor([&] { return locked([&] { return in.motors_state == 1; }); }, 5.0));
+  EXPECT_TRUE(emu.truth().motors);
+
+  geometry_msgs::Twist cmd;
+  cmd.linear.x = 0.2;
+  bool moved = false;
+  for (int i = 0; i < 25; ++i) {  // 2.5 s of cmd_vel at 10 Hz
+    cmd_pub.publish(cmd);
+    ros::Duration(0.1).sleep();
+    moved = moved || emu.truth().v > 0.15;
+  }
+  EXPECT_TRUE(moved) << "the robot did not follow cmd_vel";
+  // cmd_vel stops: after cmd_vel_timeout the driver stops the robot.
+  EXPECT_TRUE(waitFor([&] { return std::abs(emu.truth().v) < 1e-6; }, 5.0));
+  ros::Duration(0.3).sleep();
+  const Truth truth = emu.truth();
+  const nav_msgs::Odometry odom = locked([&] { return in.odom; });
+  EXPECT_GT(truth.x, 0.3);
+  EXPECT_NEAR(odom.pose.pose.position.x, truth.x, 0.01);
+  EXPECT_NEAR(odom.pose.pose.position.y, truth.y, 0.01);
+  EXPECT_EQ(odom.header.frame_id, "odom");
+  EXPECT_EQ(odom.child_frame_id, "base_link");
+  EXPECT_GT(odom.pose.covariance[0], 0.0);
+
+  EXPECT_TRUE(tf_buffer.canTransform("odom", "base_link", ros::Time(0), ros::Duration(2.0)));
+  EXPECT_TRUE(tf_buffer.canTransform("base_link", "sonar_7", ros::Time(0), ros::Duration(2.0)));
+  EXPECT_TRUE(waitFor([&] { return locked([&] { return in.sonar_frames.size() == 8; }); }, 5.0));
+  EXPECT_NEAR(locked([&] { return in.battery; }), 12.6, 0.05);
+  EXPECT_TRUE(waitFor([&] { return locked([&] { return in.diagnostics_level == 0; }); }, 5.0))
+      << locked([&] { return in.diagnostics_message; });
+
+  ASSERT_TRUE(ros::service::call("reset_odometry", empty));
+  EXPECT_TRUE(waitFor([&] { return locked([&] { return std::abs(in.odom.pose.pose.position.x) < 1e-3; }); }, 5.0));
+
+  // A NaN cmd_vel is refused: the robot stays put.
+  cmd.linear.x = std::nan("");
+  cmd_pub.publish(cmd);
+  ros::Duration(0.5).sleep();
+  EXPECT_LT(std::abs(emu.truth().v), 1e-6);
+
+  ASSERT_TRUE(loader.unload("/driver"));
+  EXPECT_TRUE(waitFor([&] { const Truth t = emu.truth(); return !t.open && !t.motors; }, 5.0))
+      << "unload must disable the motors and close the robot";
+}
+
+TEST(DriverRos, BadParameterKeepsTheManagerAliveAndSaysWhich) {
+  ros::param::set("/bad_driver/command_mode", "vel3");
+  nodelet::Loader loader(false);
+  // The nodelet loads (the manager survives) but does not start a driver.
+  EXPECT_TRUE(loader.load("/bad_driver", "amigobot_tracking/Driver", {}, {}));
+  ros::Duration(0.5).sleep();
+  EXPECT_FALSE(ros::service::exists("/enable_motors", false));
+  EXPECT_TRUE(loader.unload("/bad_driver"));
+}
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_driver_ros");
+  return RUN_ALL_TESTS();
+}

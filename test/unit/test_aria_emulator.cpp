@@ -1,0 +1,200 @@
+// The emulator's firmware logic in-process (no I/O): handshake stages, OPEN/CLOSE, VEL2
+// decoding, the watchdog in both modes, sonar from disks, SIP tails per model.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+#include "amigobot_tracking/aria/commands.h"
+#include "amigobot_tracking/aria/emulator.h"
+#include "amigobot_tracking/aria/odometry.h"
+
+using namespace amigobot_tracking::aria;
+
+namespace {
+Packet packetOf(const std::vector<std::uint8_t>& bytes) {
+  PacketParser parser;
+  parser.feed(bytes);
+  Packet p;
+  EXPECT_TRUE(parser.next(p));
+  return p;
+}
+
+// Runs the handshake and OPEN at time t; returns the SYNC reply types.
+std::vector<int> openRobot(RobotEmulator& robot, double t) {
+  std::vector<int> types;
+  for (int n = 0; n < 3; ++n) {
+    const auto reply = robot.handle(packetOf(syncPacket(n)), t);
+    types.push_back(reply.empty() ? -1 : packetOf(reply).type);
+  }
+  robot.handle(packetOf(commandPacket(Command::kOpen, 1)), t);
+  return types;
+}
+
+std::optional<Sip> sipAt(RobotEmulator& robot, double t) {
+  const auto bytes = robot.advance(t);
+  if (bytes.empty()) return std::nullopt;
+  return decodeSip(packetOf(bytes));
+}
+}  // namespace
+
+TEST(AriaEmulator, HandshakeTellsSync1FromOpenByItsStage) {
+  RobotEmulator robot({});
+  // OPEN before any SYNC is a stray SYNC1: ignored, the robot stays closed.
+  robot.handle(packetOf(commandPacket(Command::kOpen, 1)), 0.0);
+  EXPECT_FALSE(robot.isOpen());
+  EXPECT_TRUE(robot.advance(0.5).empty()) << "nothing is sent before OPEN";
+  EXPECT_EQ(openRobot(robot, 1.0), (std::vector<int>{0, 1, 2}));
+  EXPECT_TRUE(robot.isOpen());
+  EXPECT_FALSE(robot.motorsEnabled()) << "firmware: motors off until ENABLE";
+  const auto sync2 = robot.handle(packetOf(syncPacket(2)), 1.0);  // = CLOSE while open
+  EXPECT_TRUE(sync2.empty());
+  EXPECT_FALSE(robot.isOpen());
+}
+
+TEST(AriaEmulator, SipsEveryCycleWithTheModelsTail) {
+  for (const char* model : {"amigo", "amigo-sh"}) {
+    EmulatorOptions o;
+    o.robot = builtinRobotParams(model);
+    RobotEmulator robot(o);
+    openRobot(robot, 0.0);
+    int sips = 0;
+    std::optional<Sip> last;
+    for (double t = 0.0; t < 1.0 - 1e-9; t += 0.01) {
+      if (auto s = sipAt(robot, t)) {
+        ++sips;
+        last = s;
+      }
+    }
+    EXPECT_EQ(sips, 10) << model;
+    ASSERT_TRUE(last);
+    EXPECT_TRUE(last->digout) << model;
+    EXPECT_EQ(last->battery_x10.has_value(), std::string(model) == "amigo-sh") << model;
+    EXPECT_FALSE(last->rot_vel) << model;
+  }
+}
+
+TEST(AriaEmulator, Vel2DrivesTheWheelsItEncodes) {
+  RobotEmulator robot({});
+  openRobot(robot, 0.0);
+  robot.handle(packetOf(commandPacket(Command::kEnable, 1)), 0.0);
+  robot.handle(packetOf(vel2Packet(-5, 10)), 0.0);  // left -100 mm/s, right +200 mm/s
+  robot.advance(1.9);
+  const double b = robot.options().robot.halfTrack();
+  EXPECT_NEAR(robot.trueTwist().v, 0.05, 1e-9);
+  EXPECT_NEAR(robot.trueTwist().omega, 0.15 / b, 1e-9);
+}
+
+TEST(AriaEmulator, FirmwareWatchdogStopsAndResumesSimulatorOnlyWarns) {
+  for (bool simulator : {false, true}) {
+    EmulatorOptions o;
+    o.simulator_mode = simulator;
+    RobotEmulator robot(o);
+    openRobot(robot, 0.0);
+    robot.handle(packetOf(commandPacket(Command::kEnable, 1)), 0.0);
+    robot.handle(packetOf(commandPacket(Command::kVel, 200)), 0.0);
+    robot.advance(1.5);
+    EXPECT_NEAR(robot.trueTwist().v, 0.2, 1e-9);
+    robot.advance(3.0);  // 3 s without a command
+    EXPECT_TRUE(robot.watchdogTripped());
+    EXPECT_NEAR(robot.trueTwist().v, simulator ? 0.2 : 0.0, 1e-9) << "simulator " << simulator;
+    robot.handle(packetOf(commandPacket(Command::kPulse)), 3.0);
+    robot.advance(4.0);
+    EXPECT_NEAR(robot.trueTwist().v, 0.2, 1e-9) << "resumes the last setpoint";
+  }
+}
+
+TEST(AriaEmulator, SimulatorStartsWithMotorsOnAndAlwaysSends0x32) {
+  EmulatorOptions o;
+  o.simulator_mode = true;
+  RobotEmulator robot(o);
+  openRobot(robot, 0.0);
+  EXPECT_TRUE(robot.motorsEnabled());
+  robot.handle(packetOf(commandPacket(Command::kVel, 300)), 0.0);
+  robot.advance(1.5);
+  const auto sip = sipAt(robot, 1.6);
+  ASSERT_TRUE(sip);
+  EXPECT_EQ(sip->type, kSipStopped);
+  EXPECT_TRUE(sip->rot_vel);
+  EXPECT_EQ(sip->sonars.size(), 8u);
+  robot.clientDisconnected();
+  EXPECT_FALSE(robot.isOpen()) << "a simulator closes the robot when its client goes";
+}
+
+TEST(AriaEmulator, SonarSeesADiskInFrontAndNothingBehind) {
+  EmulatorOptions o;
+  o.obstacles.push_back({{1.0, 0.0}, 0.2});
+  RobotEmulator robot(o);
+  const auto ranges = robot.sonarRanges();
+  ASSERT_EQ(ranges.size(), 8u);
+  // Transducers 2 and 3 face forward from x = 0.150 m: surface at 0.8 m, seen a bit obliquely.
+  EXPECT_NEAR(ranges[2], std::hypot(1.0 - 0.15, 0.03) - 0.2, 1e-9);
+  EXPECT_NEAR(ranges[3], ranges[2], 1e-9);
+  EXPECT_DOUBLE_EQ(ranges[6], o.sonar_max_range);
+  EXPECT_DOUBLE_EQ(ranges[0], o.sonar_max_range);
+}
+
+TEST(AriaEmulator, ConfigPacReportsTheLimitsAndSetaChangesThem) {
+  RobotEmulator robot({});
+  openRobot(robot, 0.0);
+  robot.handle(packetOf(commandPacket(Command::kSetA, 1000)), 0.0);
+  robot.handle(packetOf(commandPacket(Command::kSetA, -1200)), 0.0);
+  const auto reply = robot.handle(packetOf(commandPacket(Command::kConfig, 1)), 0.0);
+  const auto config = decodeConfigPac(packetOf(reply));
+  ASSERT_TRUE(config);
+  EXPECT_EQ(config->subtype, "amigo");
+  EXPECT_EQ(config->trans_acc, 1000);
+  EXPECT_EQ(config->trans_decel, 1200);
+  EXPECT_EQ(config->watchdog, 2000);
+}
+
+TEST(AriaEmulator, InvalidOptionsAreRejectedByName) {
+  EmulatorOptions o;
+  o.obstacles.push_back({{0.0, 0.0}, -1.0});
+  EXPECT_NE(o.validate().find("obstacles[0]"), std::string::npos);
+  EXPECT_THROW(RobotEmulator robot(o), std::invalid_argument);
+}
+
+// The sonar scale is uncertain (ARIA/p2os: 1 mm per unit; AmigOS v1.3 manual: 0.555 mm per
+// unit). Either reading round-trips when robot and driver agree, and a mismatch shows as a
+// 0.555 scale error, which is what a real-robot check against a tape measure would reveal.
+TEST(AriaEmulator, SonarScaleReadingsRoundTripAndAMismatchIsVisible) {
+  for (double scale : {1.0, 0.555}) {
+    EmulatorOptions o;
+    o.simulator_mode = true;  // all eight transducers in every SIP
+    o.robot.range_conv_factor = scale;
+    o.obstacles.push_back({{1.0, 0.0}, 0.2});
+    RobotEmulator robot(o);
+    openRobot(robot, 0.0);
+    const auto sip = sipAt(robot, 0.0);
+    ASSERT_TRUE(sip);
+    const SonarReading& front = sip->sonars.at(2);
+    EXPECT_NEAR(sonarRange(front, o.robot), robot.sonarRanges()[2], 1e-3 * scale) << scale;
+    RobotParams other = o.robot;
+    other.range_conv_factor = scale == 1.0 ? 0.555 : 1.0;
+    EXPECT_NEAR(sonarRange(front, other) / sonarRange(front, o.robot), other.range_conv_factor / scale, 1e-9);
+  }
+}
+
+TEST(AriaEmulator, WorldFileLoadsAndBadEntriesAreNamed) {
+  EmulatorOptions o;
+  loadWorld(std::string(AMIGOBOT_SOURCE_DIR) + "/config/worlds/emulator_example.yaml", o);
+  ASSERT_EQ(o.obstacles.size(), 3u);
+  EXPECT_DOUBLE_EQ(o.obstacles[0].center.x(), 1.5);
+  EXPECT_DOUBLE_EQ(o.obstacles[2].radius, 0.3);
+  EXPECT_EQ(o.validate(), "");
+  const std::string path = "/tmp/amigobot_bad_world_" + std::to_string(::getpid()) + ".yaml";
+  std::ofstream(path) << "obstacles:\n  - {center: [1, 2], radius: 0.1}\n  - {center: [1], radius: 0.1}\n";
+  EmulatorOptions bad;
+  try {
+    loadWorld(path, bad);
+    FAIL() << "accepted a centre with one coordinate";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("obstacles[1]"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(":3:"), std::string::npos) << e.what();
+  }
+  std::remove(path.c_str());
+  EXPECT_THROW(loadWorld("/nonexistent/world.yaml", bad), std::runtime_error);
+}
