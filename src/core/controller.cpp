@@ -117,6 +117,7 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
                                                        passing_side_, config_.tangential_hysteresis,
                                                        config_.min_margin);
     passing_side_ = tangential.side;
+    out.passing_side = tangential.side;
     out.u_t = config_.k_t * tangential.u_t;
   }
   out.detected_obstacles = avoidance.detected;

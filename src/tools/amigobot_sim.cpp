@@ -34,6 +34,14 @@ const char* kUsage =
     "  --estimator paper|finite_difference|kalman  target velocity source (controller.estimator)\n"
     "  --body-safe true|false                   effective radius R + r in (10) (controller.body_safe)\n"
     "  --max-step S                             variable step up to S seconds; 0 = fixed (simulation.max_step)\n"
+    "  --tangential true|false                  tangential escape (controller.tangential_avoidance)\n"
+    "  --moving-obstacles true|false            obstacle velocities in (10) (controller.moving_obstacles)\n"
+    "  --compensate true|false                  predict_target and compensate_pose_age together\n"
+    "  --target-delay S                         target measurement delay [s] (target.delay)\n"
+    "  --target-period S                        target sampling period [s] (target.sample_period)\n"
+    "  --pose-delay S                           robot pose delay [s] (localization.delay)\n"
+    "  --pose-period S                          robot pose sampling period [s] (localization.sample_period)\n"
+    "  --obstacle-speed S                       Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s\n"
     "  --control-period S                       the fine step [s] (simulation.control_period)\n"
     "  --log-period S                           CSV row spacing [s]; 0 = every step (simulation.log_period)\n"
     "  --no-plot                                write CSV and JSON only\n"
@@ -50,6 +58,18 @@ double toNumber(const std::string& flag, const std::string& text) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v)) throw sim::ScenarioError(flag + ": not a number: '" + text + "'");
+  return v;
+}
+
+bool toBool(const std::string& flag, const std::string& text) {
+  if (text != "true" && text != "false") throw sim::ScenarioError(flag + ": expected true or false, got '" + text + "'");
+  return text == "true";
+}
+
+// A number >= 0 (delays, periods, speeds).
+double toNonNegative(const std::string& flag, const std::string& text) {
+  const double v = toNumber(flag, text);
+  if (v < 0.0) throw sim::ScenarioError(flag + ": must be >= 0, got '" + text + "'");
   return v;
 }
 
@@ -95,7 +115,9 @@ int main(int argc, char** argv) {
     }
   }
   static const char* known[] = {"--scenario", "--out", "--variant", "--estimator", "--body-safe", "--max-step",
-                                "--control-period", "--log-period", "--monte-carlo", "--seed", "--benchmark"};
+                                "--control-period", "--log-period", "--monte-carlo", "--seed", "--benchmark",
+                                "--tangential", "--moving-obstacles", "--compensate", "--target-delay",
+                                "--target-period", "--pose-delay", "--pose-period", "--obstacle-speed"};
   for (const auto& [flag, value] : opt) {
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       return usage("unknown option '" + flag + "'");
@@ -105,6 +127,7 @@ int main(int argc, char** argv) {
 
   sim::Scenario scenario;
   int monte_carlo = 0, benchmark = 0;
+  double obstacle_speed = 0.0;
   std::uint64_t seed = 1;
   try {
     scenario = sim::loadScenario(opt["--scenario"]);
@@ -119,11 +142,18 @@ int main(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
       throw sim::ScenarioError(std::string("--estimator: ") + e.what());
     }
-    if (opt.count("--body-safe")) {
-      const std::string v = opt["--body-safe"];
-      if (v != "true" && v != "false") throw sim::ScenarioError("--body-safe: expected true or false, got '" + v + "'");
-      setup.controller.body_safe = v == "true";
-    }
+    core::ControllerConfig& c = setup.controller;
+    if (opt.count("--body-safe")) c.body_safe = toBool("--body-safe", opt["--body-safe"]);
+    if (opt.count("--tangential")) c.tangential_avoidance = toBool("--tangential", opt["--tangential"]);
+    if (opt.count("--moving-obstacles")) c.moving_obstacles = toBool("--moving-obstacles", opt["--moving-obstacles"]);
+    if (opt.count("--compensate"))
+      c.predict_target = c.compensate_pose_age = toBool("--compensate", opt["--compensate"]);
+    if (opt.count("--target-delay")) setup.sensor.delay = toNonNegative("--target-delay", opt["--target-delay"]);
+    if (opt.count("--target-period")) setup.sample_period = toNonNegative("--target-period", opt["--target-period"]);
+    if (opt.count("--pose-delay")) setup.pose_sensor.delay = toNonNegative("--pose-delay", opt["--pose-delay"]);
+    if (opt.count("--pose-period"))
+      setup.pose_sensor.sample_period = toNonNegative("--pose-period", opt["--pose-period"]);
+    if (opt.count("--obstacle-speed")) obstacle_speed = toNonNegative("--obstacle-speed", opt["--obstacle-speed"]);
     if (opt.count("--max-step")) setup.max_step = toNumber("--max-step", opt["--max-step"]);
     if (opt.count("--control-period")) setup.control_period = toNumber("--control-period", opt["--control-period"]);
     if (opt.count("--log-period")) scenario.log_period = toNumber("--log-period", opt["--log-period"]);
@@ -164,6 +194,7 @@ int main(int argc, char** argv) {
       sim::MonteCarloOptions mc;
       mc.runs = monte_carlo;
       mc.seed = seed;
+      mc.obstacle_speed = obstacle_speed;
       const std::string json = sim::runMonteCarlo(scenario, mc);
       sim::writeText(out + "/monte_carlo.json", json);
       std::printf("%s", json.substr(0, json.find("\"per_run\"")).c_str());

@@ -54,7 +54,7 @@ struct TangentialResult {
 };
 TangentialResult tangentialTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
                                 double robot_radius, double delta, const Eigen::Vector2d& e_hat,
-                                int previous_side, double hysteresis = 0.2, double min_margin = 1e-4);
+                                int previous_side, double hysteresis = 0.6, double min_margin = 1e-4);
 
 // Distance from a disk (centre, radius) to the nearest obstacle surface [m]; +inf if none.
 double clearance(const Eigen::Vector2d& center, double radius, const std::vector<Disk>& obstacles);

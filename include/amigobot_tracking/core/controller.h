@@ -61,6 +61,7 @@ struct ControllerOutput {
   Eigen::Vector2d u_c = Eigen::Vector2d::Zero();     // repulsive term (10), before k_o
   Eigen::Vector2d u_t = Eigen::Vector2d::Zero();     // tangential escape term, before k_o (extension)
   Eigen::Vector2d u_r = Eigen::Vector2d::Zero();     // offset-point velocity (9)
+  int passing_side = 0;           // latched side of the tangential term (+1 ccw, -1 cw, 0 released)
   int detected_obstacles = 0;
   double min_clearance = 0.0;     // of the effective disk around p_r [m]; +inf if none
   ActiveConstraints active;
