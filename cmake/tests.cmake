@@ -44,3 +44,7 @@ target_link_libraries(test_sim_closed_loop amigobot_tracking_sim)
 target_compile_definitions(test_sim_closed_loop PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 amigobot_add_unit_test(test_baselines test/unit/test_baselines.cpp)
 target_link_libraries(test_baselines amigobot_tracking_core)
+# Issue 8 in the simulator: pose sensor, pose-age replay, closed-loop targets on the shipped scenarios.
+amigobot_add_unit_test(test_beyond_paper_sim test/unit/test_beyond_paper_sim.cpp)
+target_link_libraries(test_beyond_paper_sim amigobot_tracking_sim)
+target_compile_definitions(test_beyond_paper_sim PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

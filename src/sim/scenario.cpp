@@ -117,6 +117,11 @@ double positive(Section& s, const std::string& name, double value) {
   return value;
 }
 
+double nonNegative(Section& s, const std::string& name, double value) {
+  if (!(value >= 0.0)) fail(s.file(), s.node()[name], s.key(name), "must be >= 0, got " + std::to_string(value));
+  return value;
+}
+
 void parseRobot(Section s, core::ClosedLoopSetup& setup) {
   core::ControllerConfig& c = setup.controller;
   c.robot_radius = positive(s, "radius", s.number("radius"));
@@ -149,13 +154,16 @@ void parseController(Section s, core::ClosedLoopSetup& setup) {
   c.estimator.jump_threshold = s.number("jump_threshold", c.estimator.jump_threshold);
   // Beyond the paper (issue 8), all optional; the defaults are the paper's law.
   c.tangential_avoidance = s.boolean("tangential_avoidance", c.tangential_avoidance);
-  c.k_t = s.number("k_t", c.k_t);
-  c.tangential_hysteresis = s.number("tangential_hysteresis", c.tangential_hysteresis);
+  c.k_t = nonNegative(s, "k_t", s.number("k_t", c.k_t));
+  c.tangential_hysteresis = nonNegative(s, "tangential_hysteresis", s.number("tangential_hysteresis", c.tangential_hysteresis));
+  if (c.tangential_hysteresis >= 1.0)
+    fail(s.file(), s.node()["tangential_hysteresis"], s.key("tangential_hysteresis"),
+         "must be < 1 (a sine margin), got " + std::to_string(c.tangential_hysteresis));
   c.moving_obstacles = s.boolean("moving_obstacles", c.moving_obstacles);
-  c.obstacle_horizon = s.number("obstacle_horizon", c.obstacle_horizon);
+  c.obstacle_horizon = nonNegative(s, "obstacle_horizon", s.number("obstacle_horizon", c.obstacle_horizon));
   c.predict_target = s.boolean("predict_target", c.predict_target);
   c.compensate_pose_age = s.boolean("compensate_pose_age", c.compensate_pose_age);
-  c.max_prediction = s.number("max_prediction", c.max_prediction);
+  c.max_prediction = nonNegative(s, "max_prediction", s.number("max_prediction", c.max_prediction));
   const std::string variant = s.text("variant", "paper");
   try {
     setup.law = parseControlLaw(variant);
@@ -277,12 +285,9 @@ void parseTarget(Section s, core::ClosedLoopSetup& setup) {
 }
 
 void parseLocalization(Section s, core::ClosedLoopSetup& setup) {
-  setup.pose_sensor.sample_period = s.number("sample_period", 0.0);
-  setup.pose_sensor.delay = s.number("delay", 0.0);
+  setup.pose_sensor.sample_period = nonNegative(s, "sample_period", s.number("sample_period", 0.0));
+  setup.pose_sensor.delay = nonNegative(s, "delay", s.number("delay", 0.0));
   s.finish();
-  if (setup.pose_sensor.sample_period < 0.0)
-    fail(s.file(), s.node()["sample_period"], s.key("sample_period"), "must be >= 0 (0 = continuous)");
-  if (setup.pose_sensor.delay < 0.0) fail(s.file(), s.node()["delay"], s.key("delay"), "must be >= 0");
 }
 
 std::string stem(const std::string& path) {

@@ -36,7 +36,8 @@ const char* kUsage =
     "  --max-step S                             variable step up to S seconds; 0 = fixed (simulation.max_step)\n"
     "  --tangential true|false                  tangential escape (controller.tangential_avoidance)\n"
     "  --moving-obstacles true|false            obstacle velocities in (10) (controller.moving_obstacles)\n"
-    "  --compensate true|false                  predict_target and compensate_pose_age together\n"
+    "  --predict-target true|false              p_d + v_hat * sample age (controller.predict_target)\n"
+    "  --compensate-pose-age true|false         replay the commands over the pose's age (controller.compensate_pose_age)\n"
     "  --target-delay S                         target measurement delay [s] (target.delay)\n"
     "  --target-period S                        target sampling period [s] (target.sample_period)\n"
     "  --pose-delay S                           robot pose delay [s] (localization.delay)\n"
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
   }
   static const char* known[] = {"--scenario", "--out", "--variant", "--estimator", "--body-safe", "--max-step",
                                 "--control-period", "--log-period", "--monte-carlo", "--seed", "--benchmark",
-                                "--tangential", "--moving-obstacles", "--compensate", "--target-delay",
+                                "--tangential", "--moving-obstacles", "--predict-target", "--compensate-pose-age", "--target-delay",
                                 "--target-period", "--pose-delay", "--pose-period", "--obstacle-speed"};
   for (const auto& [flag, value] : opt) {
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
@@ -146,8 +147,9 @@ int main(int argc, char** argv) {
     if (opt.count("--body-safe")) c.body_safe = toBool("--body-safe", opt["--body-safe"]);
     if (opt.count("--tangential")) c.tangential_avoidance = toBool("--tangential", opt["--tangential"]);
     if (opt.count("--moving-obstacles")) c.moving_obstacles = toBool("--moving-obstacles", opt["--moving-obstacles"]);
-    if (opt.count("--compensate"))
-      c.predict_target = c.compensate_pose_age = toBool("--compensate", opt["--compensate"]);
+    if (opt.count("--predict-target")) c.predict_target = toBool("--predict-target", opt["--predict-target"]);
+    if (opt.count("--compensate-pose-age"))
+      c.compensate_pose_age = toBool("--compensate-pose-age", opt["--compensate-pose-age"]);
     if (opt.count("--target-delay")) setup.sensor.delay = toNonNegative("--target-delay", opt["--target-delay"]);
     if (opt.count("--target-period")) setup.sample_period = toNonNegative("--target-period", opt["--target-period"]);
     if (opt.count("--pose-delay")) setup.pose_sensor.delay = toNonNegative("--pose-delay", opt["--pose-delay"]);

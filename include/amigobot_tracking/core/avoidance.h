@@ -47,7 +47,9 @@ AvoidanceResult movingRepulsiveTerm(const Eigen::Vector2d& p_r, const std::vecto
 // side (+1 = counter-clockwise around the obstacle, -1 = clockwise) is the one that turns
 // toward the target; it is latched (`previous_side`) and only switches when the weighted
 // sine of the angle between -n and e_hat exceeds `hysteresis` on the other side, so an
-// exactly symmetric case does not chatter. 0 = no conflict (released).
+// exactly symmetric case does not chatter. 0 = no conflict (released). The controller caps
+// k_o |u_t| at k_t times the attraction of (9) (controller.cpp: near contact an uncapped
+// escape crowds the radial barrier out of the saturated command).
 struct TangentialResult {
   Eigen::Vector2d u_t = Eigen::Vector2d::Zero();
   int side = 0;

@@ -8,7 +8,9 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -95,6 +97,10 @@ class PerformanceController {
 
  private:
   ControllerOutput invalid(double t, std::string why);
+  // The pose moved from its stamp to t along the commands applied meanwhile (at most
+  // max_prediction seconds of them): exact for the unicycle, what odometry would give.
+  Pose2 compensatedPose(double t, const PoseSample& robot) const;
+  void remember(double t, const Twist2& u);
 
   ControllerConfig config_;
   DiamondSet diamond_;
@@ -105,7 +111,9 @@ class PerformanceController {
   double rho_ = 0.0;
   double conflict_ = 0.0;  // second argument of the min in (13), from the last step
   int passing_side_ = 0;   // latched side of the tangential term (0 = released)
-  Twist2 last_u_;          // last applied command, for pose-age compensation
+  // Applied commands, each held from its time to the next one's (zero before the first),
+  // over the last max_prediction seconds: pose-age compensation replays them.
+  std::deque<std::pair<double, Twist2>> commands_;
   std::uint64_t envelope_widenings_ = 0;
 };
 
