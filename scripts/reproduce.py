@@ -82,7 +82,7 @@ def no_obstacle_copy(name, out_root):
     src = scenario_path(name)
     dst = os.path.join(out_root, name + "_no_obstacles.yaml")
     text = open(src).read()
-    text = re.sub(r"obstacles:.*?\nsimulation:", "obstacles: []\nsimulation:", text, flags=re.S)
+    text = re.sub(r"^obstacles:.*?\nsimulation:", "obstacles: []\nsimulation:", text, flags=re.S | re.M)
     with open(dst, "w") as f_out:
         f_out.write(text)
     return dst

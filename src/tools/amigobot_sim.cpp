@@ -209,10 +209,19 @@ int main(int argc, char** argv) {
     const core::RunMetrics& m = result.summary.metrics;
     char ratio[32] = "- (no rho)";
     if (scenario.setup.law != core::ControlLaw::kProportional) std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
-    std::printf("%s [%s, estimator %s, body_safe %s]: ASE %.5f AAE %.5f TEC %.4f max|e|/rho %s\n",
+    const core::ControllerConfig& c = scenario.setup.controller;
+    std::string beyond;  // the switches beyond the paper that are on
+    for (const auto& [on, name] : {std::pair<bool, const char*>{c.tangential_avoidance, "tangential"},
+                                   {c.moving_obstacles, "moving_obstacles"},
+                                   {c.predict_target, "predict_target"},
+                                   {c.compensate_pose_age, "compensate_pose_age"}})
+      if (on) beyond += std::string(", ") + name;
+    std::printf("%s [%s, estimator %s, body_safe %s%s]: ASE %.5f AAE %.5f TEC %.4f max|e|/rho %s\n",
                 scenario.name.c_str(), sim::toString(scenario.setup.law).c_str(),
-                sim::toString(scenario.setup.velocity_source).c_str(),
-                scenario.setup.controller.body_safe ? "true" : "false", m.ase, m.aae, m.tec, ratio);
+                sim::toString(scenario.setup.velocity_source).c_str(), c.body_safe ? "true" : "false",
+                beyond.c_str(), m.ase, m.aae, m.tec, ratio);
+    std::printf("  true error (true target, true robot): ASE %.5f, peak %.4f m; longest stall %.2f s\n", m.true_ase,
+                m.max_true_error, m.longest_stall);
     std::printf("  clearance offset %.4f m, body %.4f m; collisions offset %llu, body %llu; diamond violations %llu; "
                 "NaN %llu\n",
                 m.min_clearance_offset, m.min_clearance_body, static_cast<unsigned long long>(m.offset_collisions),

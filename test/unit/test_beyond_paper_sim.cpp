@@ -142,6 +142,21 @@ TEST(SaddleScenario, EscapeMeetsTheIssueTargets) {
   EXPECT_LT(escape.final_error, 0.2);  // caught up again
 }
 
+// The same with SLAM-like measurements (1 cm noise at 10 Hz), which free the paper's law after a while.
+TEST(SaddleScenario, EscapeMeetsTheTargetsWithNoisySamples) {
+  sim::Scenario s = shipped("saddle_line");
+  s.setup.sample_period = 0.1;
+  s.setup.sensor.noise_std = 0.01;
+  s.setup.sensor.seed = 3;
+  const core::RunMetrics paper = withTangential(s, false);
+  const core::RunMetrics escape = withTangential(s, true);
+  EXPECT_GT(paper.longest_stall, 0.5);
+  EXPECT_LE(escape.longest_stall, 0.5);
+  EXPECT_LE(escape.max_true_error, 0.5 * paper.max_true_error);
+  EXPECT_EQ(escape.side_flips, 0u);
+  EXPECT_EQ(escape.offset_collisions + escape.body_collisions, 0u);
+}
+
 // The clearance the law guarantees (offset point, R) on every shipped scenario as shipped,
 // and the body's with the body-safe radius. (With the paper's radius on 5.1 and 5.2 the body
 // touches with and without the escape: docs/beyond_paper.md.)
