@@ -81,6 +81,8 @@ Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, s
 std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
   int body_runs = 0, offset_runs = 0, violation_runs = 0, nan_runs = 0, bound_runs = 0;
   std::uint64_t body_episodes = 0, offset_episodes = 0;
+  int stall_runs = 0;  // runs with a stall longer than 0.5 s (metrics.h)
+  double worst_stall = 0.0;
   double sum_true_ase = 0.0;
   double worst_body = std::numeric_limits<double>::infinity(), worst_offset = worst_body;
   double worst_ratio = 0.0, sim_time = 0.0, wall = 0.0, sum_ase = 0.0, sum_aae = 0.0;
@@ -93,6 +95,8 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
     body_episodes += m.body_collisions;
     offset_episodes += m.offset_collisions;
     sum_true_ase += m.true_ase;
+    stall_runs += m.longest_stall > 0.5;
+    worst_stall = std::max(worst_stall, m.longest_stall);
     offset_runs += m.offset_collisions > 0;
     violation_runs += m.diamond_violations > 0;
     nan_runs += m.nan_count > 0;
@@ -106,7 +110,9 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
     sum_aae += m.aae;
     per_run << (i ? ",\n" : "") << "    {\"index\": " << i << ", \"initial_pose\": [" << jsonNumber(s.setup.initial_pose.x)
             << ", " << jsonNumber(s.setup.initial_pose.y) << ", " << jsonNumber(s.setup.initial_pose.theta)
-            << "], \"ase\": " << jsonNumber(m.ase) << ", \"true_ase\": " << jsonNumber(m.true_ase) << ", \"aae\": " << jsonNumber(m.aae)
+            << "], \"ase\": " << jsonNumber(m.ase) << ", \"true_ase\": " << jsonNumber(m.true_ase)
+            << ", \"max_true_error\": " << jsonNumber(m.max_true_error)
+            << ", \"longest_stall_s\": " << jsonNumber(m.longest_stall) << ", \"aae\": " << jsonNumber(m.aae)
             << ", \"max_e_over_rho\": " << jsonNumber(m.max_e_over_rho)
             << ", \"min_clearance_offset\": " << jsonNumber(m.min_clearance_offset)
             << ", \"min_clearance_body\": " << jsonNumber(m.min_clearance_body)
@@ -125,6 +131,7 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
     << ",\n  \"moving_obstacles\": " << (base.setup.controller.moving_obstacles ? "true" : "false")
     << ",\n  \"body_collision_episodes\": " << body_episodes
     << ",\n  \"offset_collision_episodes\": " << offset_episodes
+    << ",\n  \"runs_with_stall_over_0_5s\": " << stall_runs << ",\n  \"worst_stall_s\": " << jsonNumber(worst_stall)
     << ",\n  \"runs_with_body_collision\": " << body_runs << ",\n  \"runs_with_offset_collision\": " << offset_runs
     << ",\n  \"runs_with_diamond_violation\": " << violation_runs << ",\n  \"runs_with_nan\": " << nan_runs
     << ",\n  \"runs_with_e_over_rho_ge_1\": " << bound_runs

@@ -38,7 +38,8 @@ RunResult runScenario(const Scenario& scenario, bool log) {
                              o.active.avoiding ? 1.0 : 0.0, o.active.envelope_widened ? 1.0 : 0.0,
                              std::abs(o.u.v) / scenario.setup.controller.v_max +
                                  std::abs(o.u.omega) / scenario.setup.controller.w_max,
-                             o.u_t.x(), o.u_t.y(), s.p_r_true.x(), s.p_r_true.y()});
+                             o.u_t.x(), o.u_t.y(), s.p_r_true.x(), s.p_r_true.y(),
+                             static_cast<double>(o.passing_side)});
     };
   }
   const auto start = std::chrono::steady_clock::now();
