@@ -81,7 +81,8 @@ struct ClosedLoopSummary {
   std::uint64_t steps = 0;
   double max_error_ratio = 0.0;      // max |e|/rho over the steps
   double final_error = 0.0;          // |e| at the end [m]
-  double min_clearance_offset = 0.0; // disk of the effective radius around p_r [m]
+  double min_clearance_offset = 0.0; // disk of the effective radius around p_r as the controller
+                                     // sees it (its pose may be late) [m]
   double min_clearance_body = 0.0;   // disk of radius R around the centre [m]
   std::uint64_t diamond_violations = 0;
   std::uint64_t invalid_steps = 0;   // NaN or unusable inputs
