@@ -45,10 +45,9 @@ double solveImplicitStage(double c, double rho, double k, double eta_guess) {
     return Eval{rho * (e2 - 1.0) / (e2 + 1.0) + k * eta * cosh2 - target,
                 rho / cosh2 + k * (cosh2 + eta * 0.5 * (e2 - inv_e2))};
   };
-  // Bracket: k*eta <= g(eta) gives eta <= c/k; cosh^2 >= e^(2 eta)/4 gives
-  // eta <= ln(4c/k)/2 whenever eta >= 1. Past kMaxEta the root is capped.
+  // Bracket: k*eta <= g(eta) gives eta <= c/k. Past kMaxEta the root is capped.
   double lo = 0.0;
-  double hi = std::min(target / k, std::max(1.0, 0.5 * std::log(4.0 * target / k)));
+  double hi = target / k;
   if (hi >= kMaxEta) {
     if (eval(kMaxEta).g <= 0.0) return sign * kMaxEta;
     hi = kMaxEta;
