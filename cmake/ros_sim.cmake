@@ -1,0 +1,25 @@
+# Layer 3 (simulation part): nodes that stand in for the lab's sensors and localisation on
+# the emulated robot: sim_laser (ray-cast world) and ground_truth_localization (map -> odom).
+add_library(amigobot_tracking_ros_sim
+  src/ros/sim_laser.cpp
+  src/ros/ground_truth.cpp
+)
+target_link_libraries(amigobot_tracking_ros_sim amigobot_tracking_ros amigobot_tracking_aria ${catkin_LIBRARIES})
+target_compile_options(amigobot_tracking_ros_sim PRIVATE ${AMIGOBOT_WARNINGS})
+install(TARGETS amigobot_tracking_ros_sim LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+
+amigobot_add_tool(sim_laser src/ros/nodes/sim_laser_node.cpp)
+target_link_libraries(sim_laser amigobot_tracking_ros_sim)
+amigobot_add_tool(ground_truth_localization src/ros/nodes/ground_truth_localization_node.cpp)
+target_link_libraries(ground_truth_localization amigobot_tracking_ros_sim)
+
+if(CATKIN_ENABLE_TESTING)
+  amigobot_add_unit_test(test_sim_laser test/unit/test_sim_laser.cpp)
+  target_link_libraries(test_sim_laser amigobot_tracking_ros_sim)
+  # The status client against the real emulator executable (free ports, killed on exit).
+  amigobot_add_unit_test(test_ground_truth test/unit/test_ground_truth.cpp)
+  target_link_libraries(test_ground_truth amigobot_tracking_ros_sim)
+  target_include_directories(test_ground_truth PRIVATE test/aria)
+  target_compile_definitions(test_ground_truth PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
+  add_dependencies(test_ground_truth amigobot_emulator)
+endif()
