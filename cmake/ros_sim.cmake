@@ -1,8 +1,10 @@
 # Layer 3 (simulation part): nodes that stand in for the lab's sensors and localisation on
-# the emulated robot: sim_laser (ray-cast world) and ground_truth_localization (map -> odom).
+# the emulated robot: sim_laser (ray-cast world) and ground_truth_localization (map -> odom);
+# trail_publisher (rviz trails of the robot and the target) is used on the real robot too.
 add_library(amigobot_tracking_ros_sim
   src/ros/sim_laser.cpp
   src/ros/ground_truth.cpp
+  src/ros/trail.cpp
 )
 target_link_libraries(amigobot_tracking_ros_sim amigobot_tracking_ros amigobot_tracking_aria ${catkin_LIBRARIES})
 target_compile_options(amigobot_tracking_ros_sim PRIVATE ${AMIGOBOT_WARNINGS})
@@ -10,10 +12,14 @@ install(TARGETS amigobot_tracking_ros_sim LIBRARY DESTINATION ${CATKIN_PACKAGE_L
 
 amigobot_add_tool(sim_laser src/ros/nodes/sim_laser_node.cpp)
 target_link_libraries(sim_laser amigobot_tracking_ros_sim)
+amigobot_add_tool(trail_publisher src/ros/nodes/trail_publisher_node.cpp)
+target_link_libraries(trail_publisher amigobot_tracking_ros_sim)
 amigobot_add_tool(ground_truth_localization src/ros/nodes/ground_truth_localization_node.cpp)
 target_link_libraries(ground_truth_localization amigobot_tracking_ros_sim)
 
 if(CATKIN_ENABLE_TESTING)
+  amigobot_add_unit_test(test_trail test/unit/test_trail.cpp)
+  target_link_libraries(test_trail amigobot_tracking_ros_sim)
   amigobot_add_unit_test(test_sim_laser test/unit/test_sim_laser.cpp)
   target_link_libraries(test_sim_laser amigobot_tracking_ros_sim)
   # The status client against the real emulator executable (free ports, killed on exit).
