@@ -45,3 +45,17 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_unit_test(test_recorded_run test/unit/test_recorded_run.cpp)
   target_link_libraries(test_recorded_run amigobot_tracking_ros_report ${catkin_LIBRARIES})
 endif()
+
+# issue 6: every launch file passes roslaunch's checks (nodes resolve to executables,
+# parameters load), and sim.launch really runs.
+if(CATKIN_ENABLE_TESTING)
+  set(check_launch /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/check_launch.py ${PROJECT_SOURCE_DIR}/launch)
+  amigobot_add_check(launch_amigobot ${check_launch}/amigobot.launch)
+  amigobot_add_check(launch_amigobot_args ${check_launch}/amigobot.launch port:=/dev/ttyACM0 controller:=sim laser_x:=0.2 virtual_obstacles:=${PROJECT_SOURCE_DIR}/config/virtual_obstacles.yaml)
+  amigobot_add_check(launch_amigobot_driver ${check_launch}/amigobot_driver.launch)
+  amigobot_add_check(launch_sim ${check_launch}/sim.launch)
+  amigobot_add_check(launch_sim_pty_rviz ${check_launch}/sim.launch pty:=/tmp/amigobot controller:=sim rviz:=true tracking_params:=${PROJECT_SOURCE_DIR}/config/demo_tracking.yaml)
+  amigobot_add_check(launch_two_robots ${check_launch}/two_robots.launch)
+  amigobot_add_check(launch_rviz ${check_launch}/rviz.launch ns:=tracker)
+  add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
+endif()
