@@ -59,3 +59,10 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(launch_rviz ${check_launch}/rviz.launch ns:=tracker)
   add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
 endif()
+
+# The shipped rviz display under Xvfb shows the rho circle, the offset point and a virtual
+# obstacle (checked by colour against a baseline screenshot; screenshots in build/rviz_check).
+if(CATKIN_ENABLE_TESTING)
+  amigobot_add_check(rviz_markers_visible /usr/bin/python3 ${PROJECT_SOURCE_DIR}/test/rviz/check_rviz_markers.py
+    --ws ${CATKIN_DEVEL_PREFIX}/.. --out ${CMAKE_BINARY_DIR}/rviz_check)
+endif()
