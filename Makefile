@@ -32,10 +32,12 @@ test: build
 	-$(ROOT)/scripts/run_fuzz.sh 30 $(RESULTS)
 	@$(ROOT)/scripts/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
 
-# Until the whole simulated stack runs (issue 6): the offline closed loop on the paper's rose.
+# The whole stack on the emulated robot, headless (scripts/run_demo.py): private master,
+# sim.launch with rviz under Xvfb, a virtual obstacle through the topic, a rosbag, and a
+# scored report in report/demo (non-zero exit on a collision, a command outside the
+# diamond, or a run that did not happen). DEMO_ARGS="--paper-law": the paper's law alone.
 demo: build
-	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --out $(ROOT)/out/demo
-	@echo "demo: trajectory.csv, metrics.json and the paper's Figs 3-8 are in $(ROOT)/out/demo"
+	$(ROOT)/scripts/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
 bench: build
 	$(CATKIN) bench_core

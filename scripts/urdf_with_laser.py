@@ -13,7 +13,7 @@ import xml.etree.ElementTree as ET
 DEFAULT_URDF = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "urdf", "amigobot.urdf")
 
 
-def build(urdf_path, laser_xyz, laser_yaw, prefix):
+def build(urdf_path, laser_xyz, laser_yaw, prefix, fixed_wheels=False):
     try:
         tree = ET.parse(urdf_path)
     except (OSError, ET.ParseError) as err:
@@ -25,6 +25,14 @@ def build(urdf_path, laser_xyz, laser_yaw, prefix):
     origin = joint.find("origin")
     origin.set("xyz", " ".join(f"{v:g}" for v in laser_xyz))
     origin.set("rpy", f"0 0 {laser_yaw:g}")
+    if fixed_wheels:
+        # The driver publishes no joint_states: fixed wheels let robot_state_publisher
+        # place them (on /tf_static) so rviz draws the whole robot.
+        for element in robot.iter("joint"):
+            if element.get("type") == "continuous":
+                element.set("type", "fixed")
+                for axis in element.findall("axis"):
+                    element.remove(axis)
     if prefix:
         for link in robot.iter("link"):
             link.set("name", prefix + link.get("name"))
@@ -44,9 +52,11 @@ def main():
     parser.add_argument("--laser-z", type=float, default=0.2, help="laser z in base_link [m]")
     parser.add_argument("--laser-yaw", type=float, default=0.0, help="laser yaw in base_link [rad]")
     parser.add_argument("--prefix", default="", help="prefix for every link and joint name, e.g. robot1/")
+    parser.add_argument("--fixed-wheels", action="store_true",
+                        help="make the wheel joints fixed (no joint_states publisher needed)")
     # roslaunch appends __name:= style arguments to some commands; ignore them.
     args, _ = parser.parse_known_args()
-    print(build(args.urdf, (args.laser_x, args.laser_y, args.laser_z), args.laser_yaw, args.prefix))
+    print(build(args.urdf, (args.laser_x, args.laser_y, args.laser_z), args.laser_yaw, args.prefix, args.fixed_wheels))
 
 
 if __name__ == "__main__":

@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
       }
       return argv[++i];
     };
+    if (a.find(":=") != std::string::npos) continue;  // ROS remappings roslaunch appends (__name:=, __log:=)
     if (a == "--tcp-port") server.tcp_port = static_cast<int>(number(a, value()));
     else if (a == "--bind") server.bind_address = value();
     else if (a == "--pty") server.pty_link = value();

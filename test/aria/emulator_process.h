@@ -139,6 +139,7 @@ class EmulatorProcess {
   }
 
   int tcpPort() const { return tcp_port_; }
+  int statusPort() const { return status_port_; }
   std::string address() const { return "127.0.0.1:" + std::to_string(tcp_port_); }
 
   // Ground truth from the status socket.

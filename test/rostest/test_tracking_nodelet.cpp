@@ -498,6 +498,22 @@ TEST(TrackingParams, ShippedConfigLoads) {
   EXPECT_GT(scan.max_range, 1e6);
   ASSERT_EQ(list.size(), 1u);
   EXPECT_EQ(list[0].id, "box");
+  EXPECT_DOUBLE_EQ(controller.k_d, 0.15);  // controller_experiment.yaml: Section 5.3
+  EXPECT_DOUBLE_EQ(controller.v_max, 0.3);
+}
+
+// config/controller_sim.yaml (Table 1) loads over tracking.yaml and gives Table 1's values.
+TEST(TrackingParams, ShippedSimControllerLoads) {
+  ros::NodeHandle shipped("/shipped_sim");
+  ros_layer::TrackingNodeConfig node;
+  core::ControllerConfig controller;
+  ASSERT_TRUE(shipped.hasParam("k_d"));
+  EXPECT_EQ(ros_layer::loadNodeConfig(shipped, &node), "");
+  EXPECT_EQ(ros_layer::loadControllerConfig(shipped, node, &controller), "");
+  EXPECT_DOUBLE_EQ(controller.k_d, 3.0);
+  EXPECT_DOUBLE_EQ(controller.v_max, 5.0);
+  EXPECT_DOUBLE_EQ(controller.delta, 0.016);
+  EXPECT_DOUBLE_EQ(controller.rho_0, 1.84);
 }
 
 int main(int argc, char** argv) {

@@ -1,0 +1,94 @@
+// Figures of merit of a run recorded on the ROS stack (rosbag of sim.launch), computed
+// with the offline simulator's definitions (core/metrics.h) so the two compare: the
+// controller's view from TrackingState, safety from the emulator's ground truth, and the
+// diamond check of every cmd_vel the driver received.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "amigobot_tracking/TrackingState.h"
+#include "amigobot_tracking/core/metrics.h"
+#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/sim/simulator.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+struct RecordedRunConfig {
+  std::vector<core::Disk> world;  // physical obstacles (the emulator's world file)
+  double robot_radius = 0.18;     // [m] R
+  double offset = 0.3;            // [m] r, offset of the controlled point p_r
+  double rho_inf = 0.1;           // [m] for the plots' metadata
+  double v_max = 0.3;             // [m/s] diamond half-width
+  double w_max = 0.8;             // [rad/s]
+  double settle_time = 0.5;       // [s] estimator transient left out of its "settled" figure
+
+  std::string validate() const;   // empty when valid, else names the bad field
+};
+
+// What the run shows beyond core::RunMetrics.
+struct RecordedRunSummary {
+  core::RunMetrics metrics;           // enabled control steps; clearances from ground truth
+  std::uint64_t states = 0;           // TrackingState messages seen (any)
+  std::uint64_t truth_samples = 0;    // ground-truth poses seen
+  std::uint64_t commands = 0;         // cmd_vel messages
+  std::uint64_t command_violations = 0;  // cmd_vel outside the diamond
+  double max_command_norm = 0.0;      // max |v|/v_max + |w|/w_max over cmd_vel
+  double min_clearance_world = std::numeric_limits<double>::infinity();    // [m] true body to physical disks
+  double min_clearance_virtual = std::numeric_limits<double>::infinity();  // [m] true body to virtual disks
+  std::uint64_t virtual_obstacles = 0;  // most virtual obstacles present at once
+  double within_rho_fraction = 0.0;   // share of enabled steps with |e| < rho
+  double path_length = 0.0;           // [m] true distance travelled while enabled
+
+  bool collided() const { return metrics.body_collisions > 0; }
+  bool ran() const { return metrics.steps >= 20 && truth_samples > 0 && path_length > 0.2; }
+};
+
+class RecordedRun {
+ public:
+  explicit RecordedRun(RecordedRunConfig config);
+
+  void addTruth(double t, const core::Pose2& pose);     // [s] stamp, true pose of base_link in map
+  void addVirtualObstacles(std::vector<core::Disk> disks);
+  // Every obstacle seen: the world and each virtual obstacle ever present (for the plots).
+  std::vector<core::Disk> allObstacles() const;
+  void addCommand(double v, double w);                  // every cmd_vel
+  void addState(const TrackingState& state);            // one control step
+  // Closes the last step. Rows and summary are complete afterwards.
+  void finish();
+
+  const std::vector<sim::CsvRow>& rows() const { return rows_; }
+  RecordedRunSummary summary() const;
+
+ private:
+  struct Step {
+    double t = 0.0;
+    core::MetricSample sample;
+    sim::CsvRow row{};
+  };
+  void flush(double next_t);
+
+  RecordedRunConfig config_;
+  core::MetricsAccumulator accumulator_;
+  RecordedRunSummary summary_;
+  std::vector<core::Disk> virtual_, virtual_seen_;
+  std::vector<sim::CsvRow> rows_;
+  bool have_truth_ = false, have_pending_ = false, have_previous_p_d_ = false;
+  core::Pose2 truth_, last_path_pose_;
+  bool have_path_pose_ = false;
+  double t0_ = -1.0, previous_t_ = 0.0;
+  Eigen::Vector2d previous_p_d_ = Eigen::Vector2d::Zero();
+  Step pending_;
+  std::uint64_t within_rho_ = 0;
+};
+
+// metrics.json of a recorded run (same keys as the offline simulator's where they mean
+// the same, plus the recorded-run ones); `scenario` gives plot_run.py its metadata.
+std::string recordedRunJson(const RecordedRunSummary& summary, const RecordedRunConfig& config,
+                            const std::vector<core::Disk>& all_obstacles, const std::string& name);
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

@@ -1,0 +1,44 @@
+// Simulated planar laser for the emulated robot: ray casts the emulator's world (disks of a
+// world YAML, aria/emulator.h) from the laser frame's pose in the global frame into a
+// sensor_msgs/LaserScan (REP 117: +inf no return, -inf closer than range_min).
+#pragma once
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include <ros/node_handle.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include "amigobot_tracking/core/types.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+struct SimLaserConfig {
+  std::string world_file;          // world YAML (obstacles: [{center, radius}]); required
+  std::string global_frame = "map";
+  std::string laser_frame = "laser";
+  int beams = 360;                 // [-] beams per scan, >= 2
+  double angle_min = -3.14159265358979;  // [rad] first beam, laser frame
+  double angle_max = 3.14159265358979;   // [rad] last beam (> angle_min)
+  double range_min = 0.05;         // [m]
+  double range_max = 8.0;          // [m] > range_min
+  double rate = 10.0;              // [Hz] scans per second
+  double noise_std = 0.005;        // [m] Gaussian range noise (0: exact)
+  int seed = 1;                    // noise seed
+
+  // Empty when valid, else names the bad field.
+  std::string validate() const;
+};
+
+// Reads the private parameters (each logged), then validates. Empty string when valid.
+std::string loadSimLaserConfig(const ros::NodeHandle& pnh, SimLaserConfig* config);
+
+// One scan of `disks` seen from `laser` (pose of the laser frame in the global frame).
+// Noise is added to finite ranges only and clamped into [range_min, range_max].
+sensor_msgs::LaserScan simulateScan(const core::Pose2& laser, const std::vector<core::Disk>& disks,
+                                    const SimLaserConfig& config, std::mt19937* rng);
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

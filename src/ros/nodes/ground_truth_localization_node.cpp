@@ -1,0 +1,76 @@
+// ground_truth_localization: asks the emulator's status socket for the true pose of the
+// robot and broadcasts map -> odom so that map -> base_link is that pose (REP 105), and
+// publishes the true pose as `ground_truth` (nav_msgs/Odometry in map) for recording.
+// When the socket goes away it says so, stops broadcasting (consumers see the pose age
+// and stop the robot) and reconnects. Parameters: ros/ground_truth.h (GroundTruthConfig).
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "amigobot_tracking/ros/conversions.h"
+#include "amigobot_tracking/ros/ground_truth.h"
+
+using namespace amigobot_tracking;
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "ground_truth_localization");
+  ros::NodeHandle nh, pnh("~");
+  ros_layer::GroundTruthConfig config;
+  const std::string error = ros_layer::loadGroundTruthConfig(pnh, &config);
+  if (!error.empty()) {
+    ROS_FATAL_STREAM("ground_truth_localization: " << error);
+    return 1;
+  }
+  tf2_ros::Buffer tf;
+  tf2_ros::TransformListener listener(tf);
+  tf2_ros::TransformBroadcaster broadcaster;
+  ros::Publisher truth_pub = nh.advertise<nav_msgs::Odometry>("ground_truth", 10);
+  ros_layer::StatusClient client(config.host, config.port, config.socket_timeout);
+
+  ros::Rate rate(config.rate);
+  ros::Time next_connect;
+  bool was_up = false;
+  while (ros::ok()) {
+    rate.sleep();
+    if (!client.connected() && ros::Time::now() < next_connect) continue;
+    ros_layer::EmulatorStatus status;
+    const std::string problem = client.query(&status);
+    if (!problem.empty()) {
+      next_connect = ros::Time::now() + ros::Duration(config.reconnect_period);
+      if (was_up) ROS_ERROR_STREAM("ground_truth_localization: lost the emulator: " << problem << "; map -> odom stops");
+      else ROS_ERROR_STREAM_THROTTLE(10.0, "ground_truth_localization: " << problem << " (retrying every "
+                                                                          << config.reconnect_period << " s)");
+      was_up = false;
+      continue;
+    }
+    if (!was_up) ROS_INFO_STREAM("ground_truth_localization: connected to " << config.host << ":" << config.port);
+    was_up = true;
+    const ros::Time now = ros::Time::now();
+    nav_msgs::Odometry truth;
+    truth.header.stamp = now;
+    truth.header.frame_id = config.global_frame;
+    truth.child_frame_id = config.base_frame;
+    truth.pose.pose.position.x = status.pose.x;
+    truth.pose.pose.position.y = status.pose.y;
+    truth.pose.pose.orientation.z = std::sin(status.pose.theta / 2.0);
+    truth.pose.pose.orientation.w = std::cos(status.pose.theta / 2.0);
+    truth.twist.twist.linear.x = status.v;
+    truth.twist.twist.angular.z = status.w;
+    truth_pub.publish(truth);
+
+    geometry_msgs::TransformStamped odom_base;
+    try {
+      odom_base = tf.lookupTransform(config.odom_frame, config.base_frame, ros::Time(0));
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(5.0, "ground_truth_localization: no %s -> %s from the driver yet: %s",
+                        config.odom_frame.c_str(), config.base_frame.c_str(), e.what());
+      continue;
+    }
+    const core::Pose2 correction = ros_layer::mapToOdom(status.pose, ros_layer::toPose2(odom_base.transform));
+    broadcaster.sendTransform(ros_layer::toTransform(config.global_frame, config.odom_frame, correction,
+                                                     now + ros::Duration(config.transform_tolerance)));
+  }
+  return 0;
+}

@@ -1,0 +1,60 @@
+// sim_laser: a planar laser for the emulated robot. Ray casts the emulator's world (the
+// same world YAML as amigobot_emulator --world) from the pose of laser_frame in
+// global_frame (tf) and publishes `scan` stamped with that pose's time.
+// Parameters (private): include/amigobot_tracking/ros/sim_laser.h (SimLaserConfig).
+#include <random>
+
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "amigobot_tracking/aria/emulator.h"
+#include "amigobot_tracking/ros/conversions.h"
+#include "amigobot_tracking/ros/sim_laser.h"
+
+using namespace amigobot_tracking;
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "sim_laser");
+  ros::NodeHandle nh, pnh("~");
+  ros_layer::SimLaserConfig config;
+  const std::string error = ros_layer::loadSimLaserConfig(pnh, &config);
+  if (!error.empty()) {
+    ROS_FATAL_STREAM("sim_laser: " << error);
+    return 1;
+  }
+  aria::EmulatorOptions world;
+  try {
+    aria::loadWorld(config.world_file, world);
+  } catch (const std::exception& e) {
+    ROS_FATAL_STREAM("sim_laser: " << e.what());
+    return 1;
+  }
+  ROS_INFO_STREAM("sim_laser: " << world.obstacles.size() << " obstacles from " << config.world_file << ", "
+                                << config.beams << " beams in '" << config.laser_frame << "' at " << config.rate
+                                << " Hz");
+
+  tf2_ros::Buffer tf;
+  tf2_ros::TransformListener listener(tf);
+  ros::Publisher pub = nh.advertise<sensor_msgs::LaserScan>("scan", 5);
+  std::mt19937 rng(static_cast<std::uint32_t>(config.seed));
+  ros::Time last_stamp;
+  ros::Rate rate(config.rate);
+  while (ros::ok()) {
+    rate.sleep();
+    geometry_msgs::TransformStamped pose;
+    try {
+      pose = tf.lookupTransform(config.global_frame, config.laser_frame, ros::Time(0));
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(5.0, "sim_laser: no pose of '%s' in '%s' yet: %s", config.laser_frame.c_str(),
+                        config.global_frame.c_str(), e.what());
+      continue;
+    }
+    if (pose.header.stamp == last_stamp) continue;  // no new pose: no new scan (tf stalled)
+    last_stamp = pose.header.stamp;
+    sensor_msgs::LaserScan scan = ros_layer::simulateScan(ros_layer::toPose2(pose.transform), world.obstacles, config, &rng);
+    scan.header.stamp = pose.header.stamp;
+    pub.publish(scan);
+  }
+  return 0;
+}

@@ -1,0 +1,56 @@
+// trail_publisher: the recent path of one tf frame in global_frame as nav_msgs/Path on
+// `trail`, for rviz (robot and target trails). Parameters (private): frame (base_link),
+// global_frame (map), rate [Hz] (5), min_distance [m] (0.02), max_poses (3000).
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "amigobot_tracking/ros/logged_param.h"
+#include "amigobot_tracking/ros/trail.h"
+
+using namespace amigobot_tracking;
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "trail_publisher");
+  ros::NodeHandle nh, pnh("~");
+  std::string frame = "base_link", global_frame = "map";
+  double rate = 5.0;
+  ros_layer::TrailConfig config;
+  ros_layer::loggedParam(pnh, "frame", &frame);
+  ros_layer::loggedParam(pnh, "global_frame", &global_frame);
+  ros_layer::loggedParam(pnh, "rate", &rate);
+  ros_layer::loggedParam(pnh, "min_distance", &config.min_distance);
+  ros_layer::loggedParam(pnh, "max_poses", &config.max_poses);
+  std::string error = config.validate();
+  if (error.empty() && !(rate > 0.0)) error = "rate must be > 0";
+  if (!error.empty()) {
+    ROS_FATAL_STREAM("trail_publisher: parameter " << pnh.getNamespace() << "/" << error);
+    return 1;
+  }
+  tf2_ros::Buffer tf;
+  tf2_ros::TransformListener listener(tf);
+  ros::Publisher pub = nh.advertise<nav_msgs::Path>("trail", 1, true);
+  nav_msgs::Path path;
+  path.header.frame_id = global_frame;
+  ros::Rate r(rate);
+  while (ros::ok()) {
+    r.sleep();
+    geometry_msgs::TransformStamped t;
+    try {
+      t = tf.lookupTransform(global_frame, frame, ros::Time(0));
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(10.0, "trail_publisher: no %s in %s yet: %s", frame.c_str(), global_frame.c_str(), e.what());
+      continue;
+    }
+    geometry_msgs::PoseStamped pose;
+    pose.header = t.header;
+    pose.pose.position.x = t.transform.translation.x;
+    pose.pose.position.y = t.transform.translation.y;
+    pose.pose.position.z = t.transform.translation.z;
+    pose.pose.orientation = t.transform.rotation;
+    if (!ros_layer::appendToTrail(config, pose, &path)) continue;
+    path.header.stamp = t.header.stamp;
+    pub.publish(path);
+  }
+  return 0;
+}

@@ -1,0 +1,181 @@
+#include "amigobot_tracking/ros/recorded_run.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/offset_point.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+std::string RecordedRunConfig::validate() const {
+  if (!(std::isfinite(robot_radius) && robot_radius > 0.0)) return "robot_radius must be > 0";
+  if (!(std::isfinite(offset) && offset > 0.0)) return "offset must be > 0";
+  if (!(std::isfinite(v_max) && v_max > 0.0)) return "v_max must be > 0";
+  if (!(std::isfinite(w_max) && w_max > 0.0)) return "w_max must be > 0";
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    if (!(world[i].radius > 0.0)) return "world obstacle " + std::to_string(i) + " needs a radius > 0";
+  }
+  return "";
+}
+
+RecordedRun::RecordedRun(RecordedRunConfig config) : config_(std::move(config)) {}
+
+void RecordedRun::addTruth(double, const core::Pose2& pose) {
+  truth_ = pose;
+  have_truth_ = true;
+  ++summary_.truth_samples;
+}
+
+void RecordedRun::addVirtualObstacles(std::vector<core::Disk> disks) {
+  for (const core::Disk& d : disks) {
+    bool known = false;
+    for (const core::Disk& s : virtual_seen_) known = known || ((s.center - d.center).norm() < 1e-9 && s.radius == d.radius);
+    if (!known) virtual_seen_.push_back(d);
+  }
+  virtual_ = std::move(disks);
+  summary_.virtual_obstacles = std::max<std::uint64_t>(summary_.virtual_obstacles, virtual_.size());
+}
+
+std::vector<core::Disk> RecordedRun::allObstacles() const {
+  std::vector<core::Disk> all = config_.world;
+  all.insert(all.end(), virtual_seen_.begin(), virtual_seen_.end());
+  return all;
+}
+
+void RecordedRun::addCommand(double v, double w) {
+  ++summary_.commands;
+  const double norm = std::abs(v) / config_.v_max + std::abs(w) / config_.w_max;
+  summary_.max_command_norm = std::max(summary_.max_command_norm, norm);
+  if (!(norm <= 1.0 + core::kDiamondTolerance)) ++summary_.command_violations;
+}
+
+void RecordedRun::addState(const TrackingState& s) {
+  ++summary_.states;
+  if (!s.enabled || !have_truth_) return;  // before enabling (or ground truth) there is no run to score
+  const double stamp = s.header.stamp.toSec();
+  if (t0_ < 0.0) t0_ = stamp;
+  const double t = stamp - t0_;
+  if (have_pending_) flush(t);
+
+  const Eigen::Vector2d p_d(s.p_d.x, s.p_d.y), v_hat(s.v_hat.x, s.v_hat.y), e(s.e.x, s.e.y);
+  Eigen::Vector2d v_d = Eigen::Vector2d::Zero();  // the target's true velocity, by finite difference
+  if (have_previous_p_d_ && t > previous_t_) v_d = (p_d - previous_p_d_) / (t - previous_t_);
+  previous_p_d_ = p_d;
+  previous_t_ = t;
+  have_previous_p_d_ = true;
+
+  std::vector<core::Disk> obstacles = config_.world;
+  obstacles.insert(obstacles.end(), virtual_.begin(), virtual_.end());
+  const Eigen::Vector2d body = truth_.position();
+  const Eigen::Vector2d p_r_true = core::offsetPoint(truth_, config_.offset);
+  const double clearance_world = core::clearance(body, config_.robot_radius, config_.world);
+  const double clearance_virtual = core::clearance(body, config_.robot_radius, virtual_);
+  summary_.min_clearance_world = std::min(summary_.min_clearance_world, clearance_world);
+  summary_.min_clearance_virtual = std::min(summary_.min_clearance_virtual, clearance_virtual);
+  if (have_path_pose_) summary_.path_length += (body - last_path_pose_.position()).norm();
+  last_path_pose_ = truth_;
+  have_path_pose_ = true;
+
+  core::MetricSample m;
+  m.e = e;
+  m.rho = s.rho;
+  m.u = core::Twist2{s.v, s.omega};
+  m.diamond_norm = std::abs(s.v) / config_.v_max + std::abs(s.omega) / config_.w_max;
+  m.clearance_offset = core::clearance(p_r_true, config_.robot_radius, obstacles);
+  m.clearance_body = std::min(clearance_world, clearance_virtual);
+  m.velocity_error = v_d - v_hat;
+  m.estimator_settled = t > config_.settle_time;
+  m.valid = s.valid;
+  m.saturated = s.saturated;
+  m.envelope_widened = s.envelope_widened;
+  if (s.valid && s.rho > 0.0 && e.norm() < s.rho) ++within_rho_;
+
+  pending_.t = t;
+  pending_.sample = m;
+  pending_.row = {t,          truth_.x,      truth_.y,      truth_.theta, s.p_r.x,   s.p_r.y,   p_d.x(),
+                  p_d.y(),    p_d.x(),       p_d.y(),       v_hat.x(),    v_hat.y(), v_d.x(),   v_d.y(),
+                  e.x(),      e.y(),         e.norm(),      s.rho,        s.v,       s.omega,   s.v_d,
+                  s.omega_d,  s.u_c.x,       s.u_c.y,       m.clearance_offset,     m.clearance_body,
+                  0.0,        s.saturated ? 1.0 : 0.0,      s.avoiding ? 1.0 : 0.0,
+                  s.envelope_widened ? 1.0 : 0.0,           m.diamond_norm};
+  have_pending_ = true;
+}
+
+void RecordedRun::flush(double next_t) {
+  pending_.sample.h = std::max(0.0, next_t - pending_.t);
+  pending_.row[26] = pending_.sample.h;
+  accumulator_.add(pending_.sample);
+  rows_.push_back(pending_.row);
+  have_pending_ = false;
+}
+
+void RecordedRun::finish() {
+  if (have_pending_) flush(pending_.t);  // the last step holds for no time
+}
+
+RecordedRunSummary RecordedRun::summary() const {
+  RecordedRunSummary s = summary_;
+  s.metrics = accumulator_.result();
+  s.within_rho_fraction = s.metrics.steps > 0 ? static_cast<double>(within_rho_) / s.metrics.steps : 0.0;
+  return s;
+}
+
+std::string recordedRunJson(const RecordedRunSummary& s, const RecordedRunConfig& config,
+                            const std::vector<core::Disk>& all_obstacles, const std::string& name) {
+  using sim::jsonNumber;
+  const core::RunMetrics& m = s.metrics;
+  std::ostringstream j;
+  auto num = [&](const char* key, double value) { j << "  \"" << key << "\": " << jsonNumber(value) << ",\n"; };
+  j << "{\n";
+  j << "  \"safe\": " << (s.collided() || s.command_violations > 0 ? "false" : "true") << ",\n";
+  j << "  \"ran\": " << (s.ran() ? "true" : "false") << ",\n";
+  num("ase", m.ase);
+  num("aae", m.aae);
+  num("tec", m.tec);
+  num("max_e_over_rho", m.max_e_over_rho);
+  num("within_rho_fraction", s.within_rho_fraction);
+  num("max_rho", m.max_rho);
+  num("final_error", m.final_error);
+  num("min_clearance_body", m.min_clearance_body);
+  num("min_clearance_offset", m.min_clearance_offset);
+  num("min_clearance_world", s.min_clearance_world);
+  num("min_clearance_virtual", s.min_clearance_virtual);
+  num("body_collisions", static_cast<double>(m.body_collisions));
+  num("body_contact_time_s", m.body_contact_time);
+  num("diamond_violations", static_cast<double>(m.diamond_violations));
+  num("commands", static_cast<double>(s.commands));
+  num("command_diamond_violations", static_cast<double>(s.command_violations));
+  num("max_command_diamond_norm", s.max_command_norm);
+  num("saturated_steps", static_cast<double>(m.saturated_steps));
+  num("envelope_widenings", static_cast<double>(m.envelope_widenings));
+  num("invalid_steps", static_cast<double>(m.nan_count));
+  num("estimator_rms_error", m.estimator_rms_error);
+  num("estimator_max_error_settled", m.estimator_max_error_settled);
+  num("steps", static_cast<double>(m.steps));
+  num("tracking_time_s", m.sim_time);
+  num("path_length", s.path_length);
+  num("virtual_obstacles", static_cast<double>(s.virtual_obstacles));
+  num("truth_samples", static_cast<double>(s.truth_samples));
+  j << "  \"scenario\": {\n"
+    << "    \"name\": \"" << name << "\",\n"
+    << "    \"variant\": \"recorded\",\n"
+    << "    \"estimator\": \"paper\",\n"
+    << "    \"robot_radius\": " << jsonNumber(config.robot_radius) << ",\n"
+    << "    \"offset\": " << jsonNumber(config.offset) << ",\n"
+    << "    \"v_max\": " << jsonNumber(config.v_max) << ",\n"
+    << "    \"w_max\": " << jsonNumber(config.w_max) << ",\n"
+    << "    \"rho_inf\": " << jsonNumber(config.rho_inf) << ",\n"
+    << "    \"obstacles\": [";
+  for (std::size_t i = 0; i < all_obstacles.size(); ++i) {
+    const core::Disk& d = all_obstacles[i];
+    j << (i ? ", " : "") << "{\"center\": [" << jsonNumber(d.center.x()) << ", " << jsonNumber(d.center.y())
+      << "], \"radius\": " << jsonNumber(d.radius) << ", \"velocity\": [0, 0]}";
+  }
+  j << "]\n  }\n}\n";
+  return j.str();
+}
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

@@ -1,0 +1,107 @@
+// RecordedRun: scoring a recorded run from its messages (ground truth, states, commands,
+// virtual obstacles) with the offline simulator's metrics.
+#include <gtest/gtest.h>
+
+#include "amigobot_tracking/ros/recorded_run.h"
+
+using namespace amigobot_tracking;
+
+namespace {
+
+TrackingState state(double t, bool enabled, double e, double rho, double v = 0.2, double w = 0.0) {
+  TrackingState s;
+  s.header.stamp = ros::Time(100.0 + t);
+  s.enabled = enabled;
+  s.valid = enabled;
+  s.e.x = e;
+  s.e_norm = e;
+  s.rho = rho;
+  s.v = v;
+  s.omega = w;
+  s.p_d.x = 0.1 * t;  // target moving at 0.1 m/s along x
+  return s;
+}
+
+core::Disk disk(double x, double y, double r) {
+  core::Disk d;
+  d.center = {x, y};
+  d.radius = r;
+  return d;
+}
+
+// 4 s at 20 Hz driving along x at 0.1 m/s from (0, 0); `error` the tracking error.
+void drive(ros_layer::RecordedRun* run, double error, double rho) {
+  for (int k = 0; k <= 80; ++k) {
+    const double t = 0.05 * k;
+    run->addTruth(100.0 + t, core::Pose2{0.1 * t, 0.0, 0.0});
+    run->addCommand(0.2, 0.0);
+    run->addState(state(t, true, error, rho));
+  }
+  run->finish();
+}
+
+}  // namespace
+
+TEST(RecordedRun, ScoresACleanRunLikeTheSimulator) {
+  ros_layer::RecordedRunConfig config;
+  config.world = {disk(0.0, 3.0, 0.2)};
+  ros_layer::RecordedRun run(config);
+  run.addTruth(99.0, core::Pose2{0, 0, 0});
+  run.addState(state(-1.0, false, 5.0, 1.0));  // disabled: not scored
+  drive(&run, 0.05, 0.1);
+  const auto s = run.summary();
+  EXPECT_EQ(s.metrics.steps, 81u);
+  EXPECT_NEAR(s.metrics.sim_time, 4.0, 1e-6);
+  EXPECT_NEAR(s.metrics.aae, 0.05, 1e-9);
+  EXPECT_NEAR(s.metrics.max_e_over_rho, 0.5, 1e-9);
+  EXPECT_DOUBLE_EQ(s.within_rho_fraction, 1.0);
+  EXPECT_NEAR(s.path_length, 0.4, 1e-9);
+  EXPECT_NEAR(s.min_clearance_world, 3.0 - 0.2 - config.robot_radius, 1e-9);
+  EXPECT_EQ(s.metrics.body_collisions, 0u);
+  EXPECT_EQ(s.command_violations, 0u);
+  EXPECT_TRUE(s.ran());
+  EXPECT_FALSE(s.collided());
+  ASSERT_EQ(run.rows().size(), 81u);
+  EXPECT_NEAR(run.rows()[40][12], 0.1, 1e-9);  // v_d_x: the target's velocity by finite difference
+}
+
+TEST(RecordedRun, CountsContactWithAVirtualObstacleFromTheGroundTruth) {
+  ros_layer::RecordedRun run(ros_layer::RecordedRunConfig{});
+  run.addVirtualObstacles({disk(0.3, 0.0, 0.1)});  // on the path
+  drive(&run, 0.05, 0.1);
+  const auto s = run.summary();
+  EXPECT_EQ(s.metrics.body_collisions, 1u);
+  EXPECT_LT(s.min_clearance_virtual, 0.0);
+  EXPECT_TRUE(s.collided());
+  EXPECT_EQ(s.virtual_obstacles, 1u);
+  EXPECT_EQ(run.allObstacles().size(), 1u);
+}
+
+TEST(RecordedRun, FlagsCommandsOutsideTheDiamond) {
+  ros_layer::RecordedRun run(ros_layer::RecordedRunConfig{});
+  run.addCommand(0.3, 0.0);   // on the edge: inside
+  run.addCommand(0.2, 0.5);   // 0.667 + 0.625 > 1
+  const auto s = run.summary();
+  EXPECT_EQ(s.commands, 2u);
+  EXPECT_EQ(s.command_violations, 1u);
+  EXPECT_NEAR(s.max_command_norm, 0.2 / 0.3 + 0.5 / 0.8, 1e-12);
+}
+
+TEST(RecordedRun, ANeverEnabledRunDidNotRun) {
+  ros_layer::RecordedRun run(ros_layer::RecordedRunConfig{});
+  run.addTruth(0.0, core::Pose2{});
+  for (int k = 0; k < 50; ++k) run.addState(state(0.05 * k, false, 0.0, 1.0));
+  run.finish();
+  EXPECT_FALSE(run.summary().ran());
+  EXPECT_EQ(run.summary().states, 50u);
+}
+
+TEST(RecordedRun, ValidateNamesTheBadField) {
+  ros_layer::RecordedRunConfig c;
+  EXPECT_EQ(c.validate(), "");
+  c.v_max = 0.0;
+  EXPECT_NE(c.validate().find("v_max"), std::string::npos);
+  c = ros_layer::RecordedRunConfig{};
+  c.world = {disk(0, 0, -1)};
+  EXPECT_NE(c.validate().find("world obstacle 0"), std::string::npos);
+}
