@@ -16,8 +16,10 @@ RESULTS := $(WS)/build/test_results
 deps:
 	@$(ROOT)/scripts/install_deps.sh
 
+# catkin caches the test environment at the first configure and keeps only folders that
+# exist then: without these, a fresh clone's tests run with empty PYTHONPATH/LD_LIBRARY_PATH.
 $(WS)/src/amigobot_tracking:
-	mkdir -p $(WS)/src
+	mkdir -p $(WS)/src $(WS)/devel/lib/python3/dist-packages $(WS)/devel/lib/pkgconfig
 	ln -sfn $(ROOT) $(WS)/src/amigobot_tracking
 
 build: deps $(WS)/src/amigobot_tracking
