@@ -68,3 +68,7 @@ target_link_libraries(test_conversions amigobot_tracking_ros)
 amigobot_add_unit_test(test_markers test/unit/test_markers.cpp)
 target_link_libraries(test_markers amigobot_tracking_ros)
 include(cmake/aria_tests.cmake)
+# Issue 8 in the simulator: pose sensor, pose-age replay, closed-loop targets on the shipped scenarios.
+amigobot_add_unit_test(test_beyond_paper_sim test/unit/test_beyond_paper_sim.cpp)
+target_link_libraries(test_beyond_paper_sim amigobot_tracking_sim)
+target_compile_definitions(test_beyond_paper_sim PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

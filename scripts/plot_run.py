@@ -48,6 +48,7 @@ def save(fig, out_dir, name, dpi):
 def fig3_xy(d, meta, out_dir, dpi, title):
     fig, ax = plt.subplots(figsize=(6, 6))
     t_end = d["t"][-1]
+    worst = int(np.argmin(d["clearance_body"]))
     for obs in meta.get("obstacles", []):
         c, r, v = obs["center"], obs["radius"], obs.get("velocity", [0, 0])
         moving = any(abs(x) > 0 for x in v)
@@ -56,14 +57,21 @@ def fig3_xy(d, meta, out_dir, dpi, title):
             end = [c[0] + v[0] * t_end, c[1] + v[1] * t_end]
             ax.add_patch(plt.Circle(end, r, color="0.5", alpha=0.25))
             ax.plot([c[0], end[0]], [c[1], end[1]], ":", color="0.5")
+            at = [c[0] + v[0] * d["t"][worst], c[1] + v[1] * d["t"][worst]]  # where it was at the closest call
+            ax.add_patch(plt.Circle(at, r, fill=False, color="0.3", ls="--", lw=0.8))
     ax.plot(d["p_d_x"], d["p_d_y"], "g-", lw=1.2, label="reference $p_d$")
     ax.plot(d["x"], d["y"], "r-", lw=1.0, label="robot centre $p$")
-    ax.plot(d["p_r_x"], d["p_r_y"], "b--", lw=0.6, label="offset point $p_r$")
+    # The true offset point (p_r_x is the controller's belief, late when the pose is).
+    ax.plot(d.get("p_r_true_x", d["p_r_x"]), d.get("p_r_true_y", d["p_r_y"]), "b--", lw=0.6, label="offset point $p_r$")
     radius = meta.get("robot_radius")
     if radius:
-        worst = int(np.argmin(d["clearance_body"]))
         ax.add_patch(plt.Circle((d["x"][worst], d["y"][worst]), radius, fill=False, color="r", lw=0.8,
                                 label=f"body at min clearance ({d['clearance_body'][worst]:.3f} m)"))
+    if any(any(abs(x) > 0 for x in o.get("velocity", [0, 0])) for o in meta.get("obstacles", [])):
+        # Moving obstacles come from far away: frame the robot's path, not their whole walks.
+        xs, ys = np.concatenate([d["x"], d["p_d_x"]]), np.concatenate([d["y"], d["p_d_y"]])
+        ax.set_xlim(xs.min() - 1.5, xs.max() + 1.5)
+        ax.set_ylim(ys.min() - 1.5, ys.max() + 1.5)
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")

@@ -4,7 +4,8 @@
 Usage: scripts/reproduce.py --sim PATH/amigobot_sim [--out out/reproduce] [--docs docs]
 (`make reproduce` calls it). Runs the three shipped scenarios with the proposed law and every
 baseline, the body-safe variant, fixed-step references for the variable step, Monte Carlo
-batches and the speed benchmark; copies the proposed runs' figures to docs/figures/.
+batches and the speed benchmark; copies the proposed runs' figures to docs/figures/. Then the
+measurements beyond the paper (scripts/beyond_paper.py -> docs/beyond_paper.md).
 """
 import argparse
 import json
@@ -13,6 +14,8 @@ import re
 import shutil
 import subprocess
 import sys
+
+import beyond_paper
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENARIOS = {
@@ -79,7 +82,7 @@ def no_obstacle_copy(name, out_root):
     src = scenario_path(name)
     dst = os.path.join(out_root, name + "_no_obstacles.yaml")
     text = open(src).read()
-    text = re.sub(r"obstacles:.*?\nsimulation:", "obstacles: []\nsimulation:", text, flags=re.S)
+    text = re.sub(r"^obstacles:.*?\nsimulation:", "obstacles: []\nsimulation:", text, flags=re.S | re.M)
     with open(dst, "w") as f_out:
         f_out.write(text)
     return dst
@@ -141,11 +144,12 @@ def main():
         "paper_5_2_rose (body_safe true)": monte_carlo(sim, "paper_5_2_rose", 50, 1, ["--body-safe", "true"], out_root,
                                                        "mc_true"),
     }
-    write_results(os.path.join(args.docs, "results.md"), results, fidelity, speed_free, mc)
+    beyond = beyond_paper.main(sim, out_root, os.path.abspath(args.docs))
+    write_results(os.path.join(args.docs, "results.md"), results, fidelity, speed_free, mc, beyond)
     print(f"wrote {os.path.join(args.docs, 'results.md')}")
 
 
-def write_results(path, results, fidelity, speed_free, mc):
+def write_results(path, results, fidelity, speed_free, mc, beyond):
     L = []
     w = L.append
     w("# Reproducing Section 5 of Trakas et al. (Sensors 2024)")
@@ -319,6 +323,14 @@ def write_results(path, results, fidelity, speed_free, mc):
     w("")
     w("Real-time factors are wall-clock figures of this machine (2 shared cores), the closed loop alone (CSV")
     w("written afterwards); `make bench` prints them again. See the report text above the tables for what they mean.")
+    w("")
+    w("## Beyond the paper")
+    w("")
+    w("Issue 8's switches (all off above): tangential escape from the saddle, moving obstacles, delayed measurements.")
+    w("Definitions, every table and the plots: [beyond_paper.md](beyond_paper.md) (scripts/beyond_paper.py). In short:")
+    w("")
+    for line in beyond:
+        w(line)
     with open(path, "w") as f_out:
         f_out.write("\n".join(L) + "\n")
 

@@ -419,6 +419,9 @@ void AriaClient::updateCommand(Clock::time_point now) {
   if (!((changed && since >= config_.min_command_interval) || since >= config_.command_refresh)) return;
   if (q->mode == CommandMode::kVel2) {
     send(vel2Packet(q->first, q->second));
+  } else if (rotationFirst(sent_ ? sent_->twist : core::Twist2(), q->twist, diamond_)) {
+    send(commandPacket(Command::kRVel, q->second));  // the robot never holds a pair outside the diamond
+    send(commandPacket(Command::kVel, q->first));
   } else {
     send(commandPacket(Command::kVel, q->first));
     send(commandPacket(Command::kRVel, q->second));

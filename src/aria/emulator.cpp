@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iomanip>
 #include <stdexcept>
 
 #include <mrpt/poses/CPose2D.h>
@@ -63,7 +64,7 @@ void RobotEmulator::close() {
   sync_stage_ = 0;
   motors_ = false;
   sonar_on_ = true;
-  target_v_ = target_w_ = 0.0;
+  setTarget(0.0, 0.0);
   max_v_ = options_.robot.max_velocity;
   max_w_ = options_.robot.max_rot_velocity;
   accel_ = options_.robot.trans_accel;
@@ -79,6 +80,8 @@ void RobotEmulator::clientDisconnected() {
 }
 
 void RobotEmulator::setTarget(double v, double w) {
+  requested_v_ = v;
+  requested_w_ = w;
   target_v_ = std::clamp(v, -max_v_, max_v_);
   target_w_ = std::clamp(w, -max_w_, max_w_);
 }
@@ -135,7 +138,7 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       break;
     case Command::kEnable:
       motors_ = value != 0;
-      target_v_ = target_w_ = 0.0;
+      setTarget(0.0, 0.0);
       break;
     case Command::kSetA:
       if (value > 0) accel_ = value * 1e-3;
@@ -155,11 +158,13 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       odo_x_mm_ = odo_y_mm_ = odo_th_ = 0.0;
       break;
     case Command::kVel:
-      setTarget(value * 1e-3, target_w_);
+      setTarget(value * 1e-3, requested_w_);
+      journal(now, "VEL");
       break;
     case Command::kRVel:
     case Command::kRotate:
-      setTarget(target_v_, value * kDegToRad);
+      setTarget(requested_v_, value * kDegToRad);
+      journal(now, "RVEL");
       break;
     case Command::kVel2: {
       int left = 0, right = 0;
@@ -167,13 +172,17 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       const double l = left * options_.robot.vel2_divisor * 1e-3;
       const double r = right * options_.robot.vel2_divisor * 1e-3;
       setTarget(0.5 * (l + r), 0.5 * (r - l) / b);
+      journal(now, "VEL2");
       break;
     }
     case Command::kStop:
-      target_v_ = target_w_ = 0.0;
+      setTarget(0.0, 0.0);
+      journal(now, "STOP");
       break;
     case Command::kEStop:
-      target_v_ = target_w_ = v_ = w_ = 0.0;
+      setTarget(0.0, 0.0);
+      v_ = w_ = 0.0;
+      journal(now, "ESTOP");
       break;
     case Command::kSonar:
       sonar_on_ = value != 0;
@@ -205,6 +214,12 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       break;
   }
   return {};
+}
+
+void RobotEmulator::journal(double now, const char* command) const {
+  if (!command_log_) return;
+  *command_log_ << std::fixed << std::setprecision(4) << now << ' ' << command << ' ' << std::setprecision(6)
+                << requested_v_ << ' ' << requested_w_ << std::endl;
 }
 
 void RobotEmulator::checkWatchdog(double now) {

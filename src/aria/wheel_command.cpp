@@ -71,5 +71,10 @@ std::optional<QuantizedCommand> quantizeCommand(const core::Twist2& desired, Com
   return cmd;
 }
 
+bool rotationFirst(const core::Twist2& held, const core::Twist2& next, const core::DiamondSet& diamond) {
+  return diamond.normalizedNorm({next.v, held.omega}) > 1.0 &&
+         diamond.normalizedNorm({held.v, next.omega}) <= 1.0;
+}
+
 }  // namespace aria
 }  // namespace amigobot_tracking

@@ -28,8 +28,10 @@ class Law {
       paper_ = std::make_unique<PerformanceController>(config);
     }
   }
-  ControllerOutput step(double t, const Pose2& pose, const TargetSample& sample, const std::vector<Disk>& obstacles) {
-    return paper_ ? paper_->step(t, pose, sample, obstacles) : proportional_->step(t, pose, sample, obstacles);
+  ControllerOutput step(double t, const PoseSample& robot, const TargetSample& sample,
+                        const std::vector<Disk>& obstacles) {
+    return paper_ ? paper_->stepStamped(t, robot, sample, obstacles)
+                  : proportional_->step(t, robot.pose, sample, obstacles);
   }
   const DiamondSet& diamond() const { return paper_ ? paper_->diamond() : proportional_->diamond(); }
 
@@ -52,14 +54,14 @@ std::unique_ptr<TargetVelocityFilter> makeFilter(const ClosedLoopSetup& setup) {
 }
 
 // Where the robot stands relative to the obstacles, for the step choice.
-StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const ControllerConfig& c,
-                          const std::vector<Disk>& obstacles, double max_speed) {
+StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const Eigen::Vector2d& p_r,
+                          const ControllerConfig& c, const std::vector<Disk>& obstacles, double max_speed) {
   StepSituation s;
   s.max_speed = max_speed;
   s.error_ratio = out.rho > 0.0 ? out.e.norm() / out.rho : 0.0;
   s.distance = std::numeric_limits<double>::infinity();
   for (const Disk& o : obstacles) {
-    const double band = (out.p_r - o.center).norm() - (c.effectiveRadius() + o.radius + c.delta);
+    const double band = (p_r - o.center).norm() - (c.effectiveRadius() + o.radius + c.delta);
     s.in_band = s.in_band || band <= 0.0;
     s.distance = std::min({s.distance, std::max(band, 0.0),
                            (pose.position() - o.center).norm() - (c.robot_radius + o.radius)});
@@ -75,6 +77,8 @@ std::string validateSetup(const ClosedLoopSetup& setup) {
   if (!controller.empty()) return controller;
   const std::string sensor = setup.sensor.validate();
   if (!sensor.empty()) return sensor;
+  const std::string pose_sensor = setup.pose_sensor.validate();
+  if (!pose_sensor.empty()) return pose_sensor;
   if (!setup.initial_pose.isFinite()) err << "initial_pose must be finite";
   else if (!(std::isfinite(setup.duration) && setup.duration > 0.0)) err << "duration must be > 0, got " << setup.duration;
   else if (!(std::isfinite(setup.control_period) && setup.control_period > 0.0))
@@ -108,6 +112,8 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
   TargetSensorConfig sensor_config = setup.sensor;
   sensor_config.sample_period = setup.sample_period;
   TargetSensor sensor(sensor_config, reference);
+  PoseSensor pose_sensor(setup.pose_sensor);
+  const bool pose_sensed = setup.pose_sensor.active();
   const ControllerConfig& config = setup.controller;
   StepPolicy policy = setup.step_policy;
   policy.min_step = setup.control_period;
@@ -127,8 +133,10 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
   double t = 0.0;
   double last_filter_stamp = -std::numeric_limits<double>::infinity();
   auto moveObstacles = [&](double at) {
-    for (size_t j = 0; j < setup.obstacle_velocities.size(); ++j)
+    for (size_t j = 0; j < setup.obstacle_velocities.size(); ++j) {
       obstacles[j].center = setup.obstacles[j].center + setup.obstacle_velocities[j] * at;
+      obstacles[j].velocity = setup.obstacle_velocities[j];
+    }
   };
   // The newest target sample at time `at`, with the baseline filter's velocity when one is used.
   auto measure = [&](double at) {
@@ -150,17 +158,26 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     moveObstacles(t);
     const ReferenceState ref = reference.at(t);
     const TargetSample sample = measure(t);
-    const ControllerOutput out = law.step(t, pose, sample, obstacles);
+    PoseSample robot{t, pose};
+    if (pose_sensed) {
+      pose_sensor.record(t, pose);
+      robot = pose_sensor.at(t);
+    }
+    const ControllerOutput out = law.step(t, robot, sample, obstacles);
+    if (pose_sensed) pose_sensor.hold(out.u);
+    const Eigen::Vector2d p_r = offsetPoint(pose, config.offset);
 
     double h = 0.0;
     if (!last) {
       if (fixed_step) {
         h = setup.control_period;
       } else {
-        h = chooseStep(policy, situationOf(out, pose, config, obstacles, max_speed));
+        h = chooseStep(policy, situationOf(out, pose, p_r, config, obstacles, max_speed));
         // Land on the next sample delivery (when samples are sparser than steps) and on the end.
         const double delivery = sensor.nextDelivery(t);
         if (land_on_samples && delivery - t > 1e-9) h = std::min(h, delivery - t);
+        const double pose_delivery = pose_sensor.nextDelivery(t);
+        if (pose_delivery - t > 1e-9) h = std::min(h, pose_delivery - t);
         h = std::min(h, setup.duration - t);
       }
     }
@@ -170,9 +187,10 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     step.pose = pose;
     step.reference = ref;
     step.sample = sample;
+    step.pose_sample = robot;
     step.output = out;
-    step.clearance_offset =
-        clearance(out.valid ? out.p_r : offsetPoint(pose, config.offset), config.robot_radius, obstacles);
+    step.p_r_true = p_r;
+    step.clearance_offset = clearance(p_r, config.robot_radius, obstacles);
     step.clearance_body = clearance(pose.position(), config.robot_radius, obstacles);
     step.obstacles = &obstacles;
 
@@ -199,6 +217,12 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     m.valid = out.valid;
     m.saturated = out.active.saturated;
     m.envelope_widened = out.active.envelope_widened;
+    m.e_true = ref.position - p_r;
+    m.t = t;
+    m.p_r = p_r;
+    m.conflict = out.active.conflict;
+    m.escaping = !out.u_t.isZero(0.0);
+    m.passing_side = out.passing_side;
     metrics.add(m);
 
     if (observer) observer(step);

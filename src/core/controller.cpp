@@ -29,7 +29,7 @@ void PerformanceController::reset() {
   rho_ = 0.0;
   conflict_ = 0.0;
   passing_side_ = 0;
-  last_u_ = Twist2();
+  commands_.clear();
 }
 
 void PerformanceController::setConfig(const ControllerConfig& config) {
@@ -45,12 +45,30 @@ void PerformanceController::setConfig(const ControllerConfig& config) {
 }
 
 ControllerOutput PerformanceController::invalid(double t, std::string why) {
-  last_u_ = Twist2();  // the caller commands zero
+  remember(t, Twist2());  // the caller commands zero
   ControllerOutput out;
   out.t = t;
   out.rho = rho_;
   out.error = std::move(why);
   return out;
+}
+
+void PerformanceController::remember(double t, const Twist2& u) {
+  if (!std::isfinite(t) || (!commands_.empty() && t < commands_.back().first)) return;
+  if (!commands_.empty() && t == commands_.back().first) commands_.pop_back();  // same instant: the newer one
+  commands_.emplace_back(t, u);
+  while (commands_.size() > 1 && commands_[1].first <= t - config_.max_prediction) commands_.pop_front();
+}
+
+Pose2 PerformanceController::compensatedPose(double t, const PoseSample& robot) const {
+  const double from = std::max(robot.stamp, t - config_.max_prediction);
+  Pose2 pose = robot.pose;
+  for (size_t i = 0; i < commands_.size(); ++i) {
+    const double start = std::max(commands_[i].first, from);
+    const double end = i + 1 < commands_.size() ? std::min(commands_[i + 1].first, t) : t;
+    if (end > start) pose = integrateUnicycle(pose, commands_[i].second, end - start);
+  }
+  return pose;
 }
 
 ControllerOutput PerformanceController::step(double t, const Pose2& pose, const TargetSample& target,
@@ -71,8 +89,7 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
 
   // Measurement ages, extrapolated over at most max_prediction seconds.
   auto age = [&](double stamp) { return std::clamp(t - stamp, 0.0, config_.max_prediction); };
-  const Pose2 pose = config_.compensate_pose_age ? integrateUnicycle(robot.pose, last_u_, age(robot.stamp))
-                                                 : robot.pose;
+  const Pose2 pose = config_.compensate_pose_age ? compensatedPose(t, robot) : robot.pose;
 
   ControllerOutput out;
   out.valid = true;
@@ -117,20 +134,28 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
                                                        passing_side_, config_.tangential_hysteresis,
                                                        config_.min_margin);
     passing_side_ = tangential.side;
+    out.passing_side = tangential.side;
     out.u_t = config_.k_t * tangential.u_t;
   }
+  // The tracking part of (9).
+  const Eigen::Vector2d attraction =
+      config_.k_d * t_ratio * e_hat + out.v_hat + config_.lambda * (rho_ - config_.rho_inf) * out.e / rho_;
+  // The escape redirects the attraction the barrier cancels; it needs no more than k_t times
+  // that. Uncapped it grows like u_c (1/margin) and, after the diamond's radial scaling, takes
+  // the radial barrier's share: 3 contacts with crossing obstacles on crossing_obstacles.yaml.
+  const double escape_cap = config_.k_t * attraction.norm() / config_.k_o;
+  if (out.u_t.norm() > escape_cap) out.u_t *= escape_cap / out.u_t.norm();
   out.detected_obstacles = avoidance.detected;
   out.min_clearance = avoidance.min_clearance;
   out.active.avoiding = avoidance.detected > 0;
 
   // (9): u_r = k_d T e_hat + v_hat + lambda (rho - rho_inf) e / rho + k_o u_c.
-  out.u_r = config_.k_d * t_ratio * e_hat + out.v_hat + config_.lambda * (rho_ - config_.rho_inf) * out.e / rho_ +
-            config_.k_o * (out.u_c + out.u_t);
+  out.u_r = attraction + config_.k_o * (out.u_c + out.u_t);
   out.u_d = offsetVelocityToTwist(out.u_r, pose.theta, config_.offset);  // (11)
   const auto saturated = diamond_.saturate(out.u_d);                     // (12)
   if (!saturated) return invalid(t, "desired command is not finite");
   out.u = *saturated;
-  last_u_ = out.u;
+  remember(t, out.u);
 
   const double alignment = e_hat.dot(out.u_c);
   const double clipping = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega);

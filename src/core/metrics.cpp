@@ -11,7 +11,7 @@ void MetricsAccumulator::add(const MetricSample& s) {
   const double e_norm = s.e.norm();
   const bool finite = s.valid && std::isfinite(e_norm) && s.u.isFinite() && std::isfinite(s.h) &&
                       !std::isnan(s.rho) && !std::isnan(s.clearance_offset) && !std::isnan(s.clearance_body) &&
-                      s.velocity_error.allFinite();
+                      s.velocity_error.allFinite() && s.e_true.allFinite();
   if (!finite) {
     ++m_.nan_count;
     return;  // a NaN must not poison the averages; it is reported by its count
@@ -42,6 +42,26 @@ void MetricsAccumulator::add(const MetricSample& s) {
     m_.estimator_max_error_settled = std::max(m_.estimator_max_error_settled, s.velocity_error.norm());
   }
   m_.final_error = e_norm;
+  const double true_norm = s.e_true.norm();
+  sum_true_e2_ += h * true_norm * true_norm;
+  sum_true_e_ += h * true_norm;
+  m_.max_true_error = std::max(m_.max_true_error, true_norm);
+  // Headway over the window ending now: drop samples while the next one still starts it.
+  recent_.emplace_back(s.t, s.p_r);
+  while (recent_.size() > 1 && recent_[1].first <= s.t - kStallWindow + 1e-9) recent_.pop_front();
+  const double span = s.t - recent_.front().first;
+  const bool stalled = span >= kStallWindow - 1e-9 && true_norm > kStallError &&
+                       (s.p_r - recent_.front().second).norm() < kStallSpeed * span;
+  if (!stalled) {
+    stall_start_ = -1.0;
+  } else {
+    if (stall_start_ < 0.0) stall_start_ = s.t;
+    m_.longest_stall = std::max(m_.longest_stall, s.t - stall_start_ + kStallWindow);
+  }
+  if (s.conflict) ++m_.conflict_steps;
+  if (s.escaping) ++m_.escape_steps;
+  if (s.passing_side * last_side_ < 0) ++m_.side_flips;
+  last_side_ = s.passing_side;
 }
 
 RunMetrics MetricsAccumulator::result() const {
@@ -50,6 +70,8 @@ RunMetrics MetricsAccumulator::result() const {
     r.ase = sum_e2_ / r.sim_time;
     r.aae = sum_e_ / r.sim_time;
     r.estimator_rms_error = std::sqrt(sum_v2_ / r.sim_time);
+    r.true_ase = sum_true_e2_ / r.sim_time;
+    r.true_aae = sum_true_e_ / r.sim_time;
   }
   return r;
 }

@@ -1,8 +1,11 @@
 #include "amigobot_tracking/core/target_sensor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+
+#include "amigobot_tracking/core/unicycle.h"
 
 namespace amigobot_tracking {
 namespace core {
@@ -60,6 +63,39 @@ double TargetSensor::nextDelivery(double t) const {
   if (config_.sample_period <= 0.0) return std::numeric_limits<double>::infinity();
   const double taken_by = t - config_.delay;
   const double next_index = std::floor(taken_by / config_.sample_period + 1e-9) + 1.0;
+  return std::max(0.0, next_index) * config_.sample_period + config_.delay;
+}
+
+std::string PoseSensorConfig::validate() const {
+  std::ostringstream err;
+  if (!std::isfinite(sample_period) || sample_period < 0.0)
+    err << "pose_sample_period must be >= 0 (0 = continuous), got " << sample_period;
+  else if (!std::isfinite(delay) || delay < 0.0)
+    err << "pose_delay must be >= 0, got " << delay;
+  return err.str();
+}
+
+void PoseSensor::record(double t, const Pose2& pose) { history_.push_back({t, pose, Twist2()}); }
+
+void PoseSensor::hold(const Twist2& u) {
+  if (!history_.empty()) history_.back().u = u;
+}
+
+PoseSample PoseSensor::at(double t) {
+  if (history_.empty()) return {};
+  double stamp = t - config_.delay;
+  if (config_.sample_period > 0.0)  // same tolerance as the target sensor
+    stamp = std::floor(stamp / config_.sample_period + 1e-9) * config_.sample_period;
+  stamp = std::clamp(stamp, history_.front().t, t);
+  // Stamps only grow: records before the one that holds this stamp are no longer needed.
+  while (history_.size() > 1 && history_[1].t <= stamp) history_.pop_front();
+  const Record& r = history_.front();
+  return {stamp, stamp > r.t ? integrateUnicycle(r.pose, r.u, stamp - r.t) : r.pose};
+}
+
+double PoseSensor::nextDelivery(double t) const {
+  if (config_.sample_period <= 0.0) return std::numeric_limits<double>::infinity();
+  const double next_index = std::floor((t - config_.delay) / config_.sample_period + 1e-9) + 1.0;
   return std::max(0.0, next_index) * config_.sample_period + config_.delay;
 }
 

@@ -33,12 +33,41 @@ bool acceptable(const Scenario& s) {
 
 }  // namespace
 
+double encounterTime(const core::Disk& obstacle, const Eigen::Vector2d& velocity, const core::Reference& reference,
+                     double duration) {
+  double best_t = 0.0, best = std::numeric_limits<double>::infinity();
+  const int n = static_cast<int>(std::ceil(duration / 0.01));
+  for (int k = 0; k <= n; ++k) {
+    const double t = std::min(duration, 0.01 * k);
+    const double d = (obstacle.center + velocity * t - reference.at(t).position).norm();
+    if (d < best) best = d, best_t = t;
+  }
+  return best_t;
+}
+
 Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, std::uint64_t index) {
   std::mt19937_64 rng(options.seed * 1000003ULL + index);
   std::uniform_real_distribution<double> heading(-options.heading_shift, options.heading_shift);
+  std::uniform_real_distribution<double> speed(0.0, options.obstacle_speed);
+  const bool retime = options.obstacle_speed > 0.0 && !base.setup.obstacle_velocities.empty();
+  std::vector<double> encounter(base.setup.obstacles.size(), 0.0);
+  if (retime) {
+    const auto reference = base.makeReference();
+    for (size_t j = 0; j < encounter.size(); ++j)
+      encounter[j] = encounterTime(base.setup.obstacles[j], base.setup.obstacle_velocities[j], *reference,
+                                   base.setup.duration);
+  }
   for (int attempt = 0; attempt < 100; ++attempt) {
     Scenario s = base;
-    for (core::Disk& d : s.setup.obstacles) d.center += inDisk(rng, options.obstacle_shift);
+    for (size_t j = 0; j < s.setup.obstacles.size(); ++j) {
+      core::Disk& d = s.setup.obstacles[j];
+      d.center += inDisk(rng, options.obstacle_shift);
+      if (!retime || base.setup.obstacle_velocities[j].isZero(0.0)) continue;
+      Eigen::Vector2d& v = s.setup.obstacle_velocities[j];
+      const Eigen::Vector2d meet = d.center + v * encounter[j];
+      v = v.normalized() * speed(rng);
+      d.center = meet - v * encounter[j];
+    }
     const Eigen::Vector2d shift = inDisk(rng, options.pose_shift);
     s.setup.initial_pose.x += shift.x();
     s.setup.initial_pose.y += shift.y();
@@ -51,6 +80,10 @@ Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, s
 
 std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
   int body_runs = 0, offset_runs = 0, violation_runs = 0, nan_runs = 0, bound_runs = 0;
+  std::uint64_t body_episodes = 0, offset_episodes = 0;
+  int stall_runs = 0;  // runs with a stall longer than 0.5 s (metrics.h)
+  double worst_stall = 0.0;
+  double sum_true_ase = 0.0;
   double worst_body = std::numeric_limits<double>::infinity(), worst_offset = worst_body;
   double worst_ratio = 0.0, sim_time = 0.0, wall = 0.0, sum_ase = 0.0, sum_aae = 0.0;
   std::ostringstream per_run;
@@ -59,6 +92,11 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
     const RunResult r = runScenario(s, false);
     const core::RunMetrics& m = r.summary.metrics;
     body_runs += m.body_collisions > 0;
+    body_episodes += m.body_collisions;
+    offset_episodes += m.offset_collisions;
+    sum_true_ase += m.true_ase;
+    stall_runs += m.longest_stall > 0.5;
+    worst_stall = std::max(worst_stall, m.longest_stall);
     offset_runs += m.offset_collisions > 0;
     violation_runs += m.diamond_violations > 0;
     nan_runs += m.nan_count > 0;
@@ -72,7 +110,9 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
     sum_aae += m.aae;
     per_run << (i ? ",\n" : "") << "    {\"index\": " << i << ", \"initial_pose\": [" << jsonNumber(s.setup.initial_pose.x)
             << ", " << jsonNumber(s.setup.initial_pose.y) << ", " << jsonNumber(s.setup.initial_pose.theta)
-            << "], \"ase\": " << jsonNumber(m.ase) << ", \"aae\": " << jsonNumber(m.aae)
+            << "], \"ase\": " << jsonNumber(m.ase) << ", \"true_ase\": " << jsonNumber(m.true_ase)
+            << ", \"max_true_error\": " << jsonNumber(m.max_true_error)
+            << ", \"longest_stall_s\": " << jsonNumber(m.longest_stall) << ", \"aae\": " << jsonNumber(m.aae)
             << ", \"max_e_over_rho\": " << jsonNumber(m.max_e_over_rho)
             << ", \"min_clearance_offset\": " << jsonNumber(m.min_clearance_offset)
             << ", \"min_clearance_body\": " << jsonNumber(m.min_clearance_body)
@@ -86,13 +126,19 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
     << (base.setup.controller.body_safe ? "true" : "false") << ",\n  \"obstacle_shift\": "
     << jsonNumber(options.obstacle_shift) << ",\n  \"pose_shift\": " << jsonNumber(options.pose_shift)
     << ",\n  \"heading_shift\": " << jsonNumber(options.heading_shift)
+    << ",\n  \"obstacle_speed\": " << jsonNumber(options.obstacle_speed)
+    << ",\n  \"tangential_avoidance\": " << (base.setup.controller.tangential_avoidance ? "true" : "false")
+    << ",\n  \"moving_obstacles\": " << (base.setup.controller.moving_obstacles ? "true" : "false")
+    << ",\n  \"body_collision_episodes\": " << body_episodes
+    << ",\n  \"offset_collision_episodes\": " << offset_episodes
+    << ",\n  \"runs_with_stall_over_0_5s\": " << stall_runs << ",\n  \"worst_stall_s\": " << jsonNumber(worst_stall)
     << ",\n  \"runs_with_body_collision\": " << body_runs << ",\n  \"runs_with_offset_collision\": " << offset_runs
     << ",\n  \"runs_with_diamond_violation\": " << violation_runs << ",\n  \"runs_with_nan\": " << nan_runs
     << ",\n  \"runs_with_e_over_rho_ge_1\": " << bound_runs
     << ",\n  \"worst_min_clearance_body\": " << jsonNumber(worst_body)
     << ",\n  \"worst_min_clearance_offset\": " << jsonNumber(worst_offset)
     << ",\n  \"worst_max_e_over_rho\": " << jsonNumber(worst_ratio) << ",\n  \"mean_ase\": " << jsonNumber(sum_ase / n)
-    << ",\n  \"mean_aae\": " << jsonNumber(sum_aae / n) << ",\n  \"sim_time_s\": " << jsonNumber(sim_time)
+    << ",\n  \"mean_aae\": " << jsonNumber(sum_aae / n) << ",\n  \"mean_true_ase\": " << jsonNumber(sum_true_ase / n) << ",\n  \"sim_time_s\": " << jsonNumber(sim_time)
     << ",\n  \"wall_time_s\": " << jsonNumber(wall)
     << ",\n  \"realtime_factor\": " << jsonNumber(wall > 0.0 ? sim_time / wall : 0.0) << ",\n  \"per_run\": [\n"
     << per_run.str() << "\n  ]\n}\n";

@@ -117,6 +117,11 @@ double positive(Section& s, const std::string& name, double value) {
   return value;
 }
 
+double nonNegative(Section& s, const std::string& name, double value) {
+  if (!(value >= 0.0)) fail(s.file(), s.node()[name], s.key(name), "must be >= 0, got " + std::to_string(value));
+  return value;
+}
+
 void parseRobot(Section s, core::ClosedLoopSetup& setup) {
   core::ControllerConfig& c = setup.controller;
   c.robot_radius = positive(s, "radius", s.number("radius"));
@@ -147,6 +152,18 @@ void parseController(Section s, core::ClosedLoopSetup& setup) {
   c.min_margin = s.number("min_margin", 1e-3);
   c.max_error_ratio = s.number("max_error_ratio", c.max_error_ratio);
   c.estimator.jump_threshold = s.number("jump_threshold", c.estimator.jump_threshold);
+  // Beyond the paper (issue 8), all optional; the defaults are the paper's law.
+  c.tangential_avoidance = s.boolean("tangential_avoidance", c.tangential_avoidance);
+  c.k_t = nonNegative(s, "k_t", s.number("k_t", c.k_t));
+  c.tangential_hysteresis = nonNegative(s, "tangential_hysteresis", s.number("tangential_hysteresis", c.tangential_hysteresis));
+  if (c.tangential_hysteresis >= 1.0)
+    fail(s.file(), s.node()["tangential_hysteresis"], s.key("tangential_hysteresis"),
+         "must be < 1 (a sine margin), got " + std::to_string(c.tangential_hysteresis));
+  c.moving_obstacles = s.boolean("moving_obstacles", c.moving_obstacles);
+  c.obstacle_horizon = nonNegative(s, "obstacle_horizon", s.number("obstacle_horizon", c.obstacle_horizon));
+  c.predict_target = s.boolean("predict_target", c.predict_target);
+  c.compensate_pose_age = s.boolean("compensate_pose_age", c.compensate_pose_age);
+  c.max_prediction = nonNegative(s, "max_prediction", s.number("max_prediction", c.max_prediction));
   const std::string variant = s.text("variant", "paper");
   try {
     setup.law = parseControlLaw(variant);
@@ -267,6 +284,12 @@ void parseTarget(Section s, core::ClosedLoopSetup& setup) {
   if (setup.sample_period < 0.0) fail(s.file(), s.node()["sample_period"], s.key("sample_period"), "must be >= 0");
 }
 
+void parseLocalization(Section s, core::ClosedLoopSetup& setup) {
+  setup.pose_sensor.sample_period = nonNegative(s, "sample_period", s.number("sample_period", 0.0));
+  setup.pose_sensor.delay = nonNegative(s, "delay", s.number("delay", 0.0));
+  s.finish();
+}
+
 std::string stem(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
@@ -324,6 +347,8 @@ static std::string keyOf(const std::string& message) {
     if (field == simulation) return "simulation." + field;
   for (const char* target : {"sample_period", "noise_std", "delay", "jumps:"})
     if (field == target) return "target." + field.substr(0, field.find(':'));
+  if (field == "pose_sample_period") return "localization.sample_period";
+  if (field == "pose_delay") return "localization.delay";
   if (field == "obstacles:" || field == "obstacle_velocities") return "obstacles";
   return "controller." + field;
 }
@@ -365,6 +390,8 @@ Scenario parseScenario(const std::string& text, const std::string& file) {
   parseSimulation(Section(top.required("simulation"), "simulation", file), scenario);
   if (top.has("target")) parseTarget(Section(top.optional("target"), "target", file), scenario.setup);
   else top.optional("target");
+  if (top.has("localization")) parseLocalization(Section(top.optional("localization"), "localization", file), scenario.setup);
+  else top.optional("localization");
   top.finish();
   checkScenario(scenario);
   return scenario;

@@ -37,7 +37,9 @@ RunResult runScenario(const Scenario& scenario, bool log) {
                              s.clearance_offset, s.clearance_body, s.h, o.active.saturated ? 1.0 : 0.0,
                              o.active.avoiding ? 1.0 : 0.0, o.active.envelope_widened ? 1.0 : 0.0,
                              std::abs(o.u.v) / scenario.setup.controller.v_max +
-                                 std::abs(o.u.omega) / scenario.setup.controller.w_max});
+                                 std::abs(o.u.omega) / scenario.setup.controller.w_max,
+                             o.u_t.x(), o.u_t.y(), s.p_r_true.x(), s.p_r_true.y(),
+                             static_cast<double>(o.passing_side)});
     };
   }
   const auto start = std::chrono::steady_clock::now();
@@ -92,6 +94,13 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   num("estimator_rms_error", m.estimator_rms_error);
   num("estimator_max_error_settled", m.estimator_max_error_settled);
   num("final_error", m.final_error);
+  num("true_ase", m.true_ase);
+  num("true_aae", m.true_aae);
+  num("max_true_error", m.max_true_error);
+  num("longest_stall_s", m.longest_stall);
+  num("conflict_steps", static_cast<double>(m.conflict_steps));
+  num("escape_steps", static_cast<double>(m.escape_steps));
+  num("side_flips", static_cast<double>(m.side_flips));
   num("steps", static_cast<double>(m.steps));
   num("sim_time_s", m.sim_time);
   num("wall_time_s", result.wall_time);
@@ -103,6 +112,14 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
     << "    \"variant\": \"" << toString(setup.law) << "\",\n"
     << "    \"estimator\": \"" << toString(setup.velocity_source) << "\",\n"
     << "    \"body_safe\": " << (c.body_safe ? "true" : "false") << ",\n"
+    << "    \"tangential_avoidance\": " << (c.tangential_avoidance ? "true" : "false") << ",\n"
+    << "    \"moving_obstacles\": " << (c.moving_obstacles ? "true" : "false") << ",\n"
+    << "    \"predict_target\": " << (c.predict_target ? "true" : "false") << ",\n"
+    << "    \"compensate_pose_age\": " << (c.compensate_pose_age ? "true" : "false") << ",\n"
+    << "    \"target_delay\": " << jsonNumber(setup.sensor.delay) << ",\n"
+    << "    \"target_sample_period\": " << jsonNumber(setup.sample_period) << ",\n"
+    << "    \"pose_delay\": " << jsonNumber(setup.pose_sensor.delay) << ",\n"
+    << "    \"pose_sample_period\": " << jsonNumber(setup.pose_sensor.sample_period) << ",\n"
     << "    \"robot_radius\": " << jsonNumber(c.robot_radius) << ",\n"
     << "    \"offset\": " << jsonNumber(c.offset) << ",\n"
     << "    \"effective_radius\": " << jsonNumber(c.effectiveRadius()) << ",\n"

@@ -4,7 +4,9 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "amigobot_tracking/aria/emulator.h"
@@ -32,6 +34,7 @@ const char* kUsage =
     "  --seed N            noise seed (default 1)\n"
     "  --time-scale K      emulated seconds per wall second (default 1)\n"
     "  --corrupt P         noisy line: each robot packet is damaged with probability P\n"
+    "  --command-log FILE  journal of every motion command received: 't command v w' per line\n"
     "  --simulator-mode    behave like an ARIA simulator (MobileSim): motors start enabled,\n"
     "                      SIPs always 0x32, watchdog only warns, CLOSE drops the connection\n"
     "Prints 'READY tcp=PORT status=PORT pty=PATH' on stdout once it listens.\n";
@@ -51,7 +54,7 @@ double number(const std::string& flag, const char* text) {
 int main(int argc, char** argv) {
   EmulatorOptions robot;
   EmulatorServerOptions server;
-  std::string model = "amigo", params_file, world_file, name;
+  std::string model = "amigo", params_file, world_file, name, command_log;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> const char* {
@@ -74,6 +77,7 @@ int main(int argc, char** argv) {
     else if (a == "--seed") robot.seed = server.corrupt_seed = static_cast<std::uint32_t>(number(a, value()));
     else if (a == "--time-scale") server.time_scale = number(a, value());
     else if (a == "--corrupt") server.corrupt_probability = number(a, value());
+    else if (a == "--command-log") command_log = value();
     else if (a == "--simulator-mode") robot.simulator_mode = true;
     else if (a == "-h" || a == "--help") {
       std::cout << kUsage;
@@ -88,6 +92,12 @@ int main(int argc, char** argv) {
     if (!world_file.empty()) loadWorld(world_file, robot);
     robot.name = !name.empty() ? name : (robot.simulator_mode ? "MobileSim" : "amigo-emulator");
     RobotEmulator emulator(robot);
+    std::ofstream journal;
+    if (!command_log.empty()) {
+      journal.open(command_log);
+      if (!journal) throw std::runtime_error("amigobot_emulator: --command-log: cannot write " + command_log);
+      emulator.setCommandLog(&journal);
+    }
     EmulatorServer io(emulator, server);
     io.open();
     std::signal(SIGINT, onSignal);

@@ -34,6 +34,15 @@ const char* kUsage =
     "  --estimator paper|finite_difference|kalman  target velocity source (controller.estimator)\n"
     "  --body-safe true|false                   effective radius R + r in (10) (controller.body_safe)\n"
     "  --max-step S                             variable step up to S seconds; 0 = fixed (simulation.max_step)\n"
+    "  --tangential true|false                  tangential escape (controller.tangential_avoidance)\n"
+    "  --moving-obstacles true|false            obstacle velocities in (10) (controller.moving_obstacles)\n"
+    "  --predict-target true|false              p_d + v_hat * sample age (controller.predict_target)\n"
+    "  --compensate-pose-age true|false         replay the commands over the pose's age (controller.compensate_pose_age)\n"
+    "  --target-delay S                         target measurement delay [s] (target.delay)\n"
+    "  --target-period S                        target sampling period [s] (target.sample_period)\n"
+    "  --pose-delay S                           robot pose delay [s] (localization.delay)\n"
+    "  --pose-period S                          robot pose sampling period [s] (localization.sample_period)\n"
+    "  --obstacle-speed S                       Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s\n"
     "  --control-period S                       the fine step [s] (simulation.control_period)\n"
     "  --log-period S                           CSV row spacing [s]; 0 = every step (simulation.log_period)\n"
     "  --no-plot                                write CSV and JSON only\n"
@@ -50,6 +59,18 @@ double toNumber(const std::string& flag, const std::string& text) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v)) throw sim::ScenarioError(flag + ": not a number: '" + text + "'");
+  return v;
+}
+
+bool toBool(const std::string& flag, const std::string& text) {
+  if (text != "true" && text != "false") throw sim::ScenarioError(flag + ": expected true or false, got '" + text + "'");
+  return text == "true";
+}
+
+// A number >= 0 (delays, periods, speeds).
+double toNonNegative(const std::string& flag, const std::string& text) {
+  const double v = toNumber(flag, text);
+  if (v < 0.0) throw sim::ScenarioError(flag + ": must be >= 0, got '" + text + "'");
   return v;
 }
 
@@ -95,7 +116,9 @@ int main(int argc, char** argv) {
     }
   }
   static const char* known[] = {"--scenario", "--out", "--variant", "--estimator", "--body-safe", "--max-step",
-                                "--control-period", "--log-period", "--monte-carlo", "--seed", "--benchmark"};
+                                "--control-period", "--log-period", "--monte-carlo", "--seed", "--benchmark",
+                                "--tangential", "--moving-obstacles", "--predict-target", "--compensate-pose-age", "--target-delay",
+                                "--target-period", "--pose-delay", "--pose-period", "--obstacle-speed"};
   for (const auto& [flag, value] : opt) {
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       return usage("unknown option '" + flag + "'");
@@ -105,6 +128,7 @@ int main(int argc, char** argv) {
 
   sim::Scenario scenario;
   int monte_carlo = 0, benchmark = 0;
+  double obstacle_speed = 0.0;
   std::uint64_t seed = 1;
   try {
     scenario = sim::loadScenario(opt["--scenario"]);
@@ -119,11 +143,19 @@ int main(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
       throw sim::ScenarioError(std::string("--estimator: ") + e.what());
     }
-    if (opt.count("--body-safe")) {
-      const std::string v = opt["--body-safe"];
-      if (v != "true" && v != "false") throw sim::ScenarioError("--body-safe: expected true or false, got '" + v + "'");
-      setup.controller.body_safe = v == "true";
-    }
+    core::ControllerConfig& c = setup.controller;
+    if (opt.count("--body-safe")) c.body_safe = toBool("--body-safe", opt["--body-safe"]);
+    if (opt.count("--tangential")) c.tangential_avoidance = toBool("--tangential", opt["--tangential"]);
+    if (opt.count("--moving-obstacles")) c.moving_obstacles = toBool("--moving-obstacles", opt["--moving-obstacles"]);
+    if (opt.count("--predict-target")) c.predict_target = toBool("--predict-target", opt["--predict-target"]);
+    if (opt.count("--compensate-pose-age"))
+      c.compensate_pose_age = toBool("--compensate-pose-age", opt["--compensate-pose-age"]);
+    if (opt.count("--target-delay")) setup.sensor.delay = toNonNegative("--target-delay", opt["--target-delay"]);
+    if (opt.count("--target-period")) setup.sample_period = toNonNegative("--target-period", opt["--target-period"]);
+    if (opt.count("--pose-delay")) setup.pose_sensor.delay = toNonNegative("--pose-delay", opt["--pose-delay"]);
+    if (opt.count("--pose-period"))
+      setup.pose_sensor.sample_period = toNonNegative("--pose-period", opt["--pose-period"]);
+    if (opt.count("--obstacle-speed")) obstacle_speed = toNonNegative("--obstacle-speed", opt["--obstacle-speed"]);
     if (opt.count("--max-step")) setup.max_step = toNumber("--max-step", opt["--max-step"]);
     if (opt.count("--control-period")) setup.control_period = toNumber("--control-period", opt["--control-period"]);
     if (opt.count("--log-period")) scenario.log_period = toNumber("--log-period", opt["--log-period"]);
@@ -164,6 +196,7 @@ int main(int argc, char** argv) {
       sim::MonteCarloOptions mc;
       mc.runs = monte_carlo;
       mc.seed = seed;
+      mc.obstacle_speed = obstacle_speed;
       const std::string json = sim::runMonteCarlo(scenario, mc);
       sim::writeText(out + "/monte_carlo.json", json);
       std::printf("%s", json.substr(0, json.find("\"per_run\"")).c_str());
@@ -176,10 +209,19 @@ int main(int argc, char** argv) {
     const core::RunMetrics& m = result.summary.metrics;
     char ratio[32] = "- (no rho)";
     if (scenario.setup.law != core::ControlLaw::kProportional) std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
-    std::printf("%s [%s, estimator %s, body_safe %s]: ASE %.5f AAE %.5f TEC %.4f max|e|/rho %s\n",
+    const core::ControllerConfig& c = scenario.setup.controller;
+    std::string beyond;  // the switches beyond the paper that are on
+    for (const auto& [on, name] : {std::pair<bool, const char*>{c.tangential_avoidance, "tangential"},
+                                   {c.moving_obstacles, "moving_obstacles"},
+                                   {c.predict_target, "predict_target"},
+                                   {c.compensate_pose_age, "compensate_pose_age"}})
+      if (on) beyond += std::string(", ") + name;
+    std::printf("%s [%s, estimator %s, body_safe %s%s]: ASE %.5f AAE %.5f TEC %.4f max|e|/rho %s\n",
                 scenario.name.c_str(), sim::toString(scenario.setup.law).c_str(),
-                sim::toString(scenario.setup.velocity_source).c_str(),
-                scenario.setup.controller.body_safe ? "true" : "false", m.ase, m.aae, m.tec, ratio);
+                sim::toString(scenario.setup.velocity_source).c_str(), c.body_safe ? "true" : "false",
+                beyond.c_str(), m.ase, m.aae, m.tec, ratio);
+    std::printf("  true error (true target, true robot): ASE %.5f, peak %.4f m; longest stall %.2f s\n", m.true_ase,
+                m.max_true_error, m.longest_stall);
     std::printf("  clearance offset %.4f m, body %.4f m; collisions offset %llu, body %llu; diamond violations %llu; "
                 "NaN %llu\n",
                 m.min_clearance_offset, m.min_clearance_body, static_cast<unsigned long long>(m.offset_collisions),

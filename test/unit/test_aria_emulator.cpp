@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <unistd.h>
 
 #include "amigobot_tracking/aria/commands.h"
@@ -197,4 +198,39 @@ TEST(AriaEmulator, WorldFileLoadsAndBadEntriesAreNamed) {
   }
   std::remove(path.c_str());
   EXPECT_THROW(loadWorld("/nonexistent/world.yaml", bad), std::runtime_error);
+}
+
+TEST(AriaEmulator, CommandLogJournalsEverySetpointPairAsDecoded) {
+  RobotEmulator robot({});
+  std::ostringstream log;
+  robot.setCommandLog(&log);
+  openRobot(robot, 0.0);
+  robot.handle(packetOf(commandPacket(Command::kEnable, 1)), 0.0);
+  robot.handle(packetOf(commandPacket(Command::kVel, 200)), 0.5);   // 0.2 m/s
+  robot.handle(packetOf(commandPacket(Command::kRVel, -30)), 0.5);  // -30 deg/s
+  robot.handle(packetOf(vel2Packet(-5, 10)), 1.0);
+  robot.handle(packetOf(commandPacket(Command::kStop)), 1.5);
+  std::istringstream lines(log.str());
+  struct Row {
+    double t;
+    std::string command;
+    double v, w;
+  };
+  std::vector<Row> rows;
+  Row r;
+  while (lines >> r.t >> r.command >> r.v >> r.w) rows.push_back(r);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0].command, "VEL");
+  EXPECT_NEAR(rows[0].v, 0.2, 1e-9);
+  EXPECT_NEAR(rows[0].w, 0.0, 1e-9);
+  EXPECT_EQ(rows[1].command, "RVEL");  // the pair the robot holds after the second packet
+  EXPECT_NEAR(rows[1].v, 0.2, 1e-9);
+  EXPECT_NEAR(rows[1].w, -30.0 * M_PI / 180.0, 1e-6);
+  const double b = robot.options().robot.halfTrack();
+  EXPECT_EQ(rows[2].command, "VEL2");
+  EXPECT_NEAR(rows[2].v, 0.05, 1e-9);
+  EXPECT_NEAR(rows[2].w, 0.15 / b, 1e-6);
+  EXPECT_EQ(rows[3].command, "STOP");
+  EXPECT_EQ(rows[3].v, 0.0);
+  EXPECT_DOUBLE_EQ(rows[3].t, 1.5);
 }

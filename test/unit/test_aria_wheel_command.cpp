@@ -90,3 +90,24 @@ TEST(AriaWheelCommand, VelRvelIsExactOnTheLattice) {
   EXPECT_EQ(cmd->first, 100);
   EXPECT_EQ(cmd->second, -10);
 }
+
+TEST(WheelCommand, VelAndRvelOrderNeverLeavesTheRobotOutsideTheDiamond) {
+  const DiamondSet diamond(0.3, 0.8);
+  // Turning on the spot -> straight at full speed: VEL first would hold (0.3, 0.8).
+  EXPECT_TRUE(rotationFirst({0.0, 0.8}, {0.3, 0.0}, diamond));
+  // Straight -> turning on the spot: VEL first holds (0, 0), which is inside.
+  EXPECT_FALSE(rotationFirst({0.3, 0.0}, {0.0, 0.8}, diamond));
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto randomInside = [&]() {
+    const Twist2 u{0.3 * unit(rng), 0.8 * unit(rng)};
+    return *diamond.saturate(u);
+  };
+  for (int i = 0; i < 20000; ++i) {
+    const Twist2 held = randomInside(), next = randomInside();
+    const Twist2 between = rotationFirst(held, next, diamond) ? Twist2{held.v, next.omega}
+                                                                    : Twist2{next.v, held.omega};
+    ASSERT_LE(diamond.normalizedNorm(between), 1.0 + 1e-12) << "held " << held.v << "," << held.omega
+                                                            << " next " << next.v << "," << next.omega;
+  }
+}

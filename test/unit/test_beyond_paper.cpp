@@ -97,14 +97,17 @@ TEST(Tangential, SideIsLatchedWithHysteresis) {
   TangentialResult r = tangentialTerm(p_r, {disk}, 0.18, 0.25, {1.0, 0.0}, 0);
   EXPECT_EQ(r.side, 1);
   EXPECT_LT(r.u_t.y(), 0.0);
-  // Target slightly above (sine 0.1 < hysteresis): the latched side holds.
-  r = tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.1), 1);
+  // Target slightly above (sine 0.1 < hysteresis 0.2): the latched side holds.
+  r = tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.1), 1, 0.2);
   EXPECT_EQ(r.side, 1);
   // Without a latch the same target picks the side that passes above.
-  EXPECT_EQ(tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.1), 0).side, -1);
+  EXPECT_EQ(tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.1), 0, 0.2).side, -1);
   // Clearly above (sine 0.5): switches.
-  r = tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.52), 1);
+  r = tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.52), 1, 0.2);
   EXPECT_EQ(r.side, -1);
+  // The default margin (0.6) holds the side at sine 0.5 and lets it go at sine 0.7.
+  EXPECT_EQ(tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.52), 1).side, 1);
+  EXPECT_EQ(tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.78), 1).side, -1);
 }
 
 TEST(MovingObstacles, StaticObstaclesGiveExactlyThePaperTerm) {

@@ -158,8 +158,65 @@ TEST(SimScenario, RefusesBrokenYamlAndMissingFiles) {
 }
 
 TEST(SimScenario, ShippedScenariosLoad) {
-  for (const char* name : {"paper_5_1", "paper_5_2_rose", "experiment_5_3"}) {
+  for (const char* name : {"paper_5_1", "paper_5_2_rose", "experiment_5_3", "saddle_line", "crossing_obstacles"}) {
     const std::string path = std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/" + name + ".yaml";
     EXPECT_NO_THROW(sim::loadScenario(path)) << path;
   }
+}
+
+// Issue 8: the switches beyond the paper, the robot pose's timing, moving obstacles.
+TEST(SimScenario, BeyondThePaperSwitchesDefaultToThePaper) {
+  const sim::Scenario s = sim::parseScenario(kMinimum, "min.yaml");
+  const core::ControllerConfig paper;
+  EXPECT_FALSE(s.setup.controller.tangential_avoidance);
+  EXPECT_FALSE(s.setup.controller.moving_obstacles);
+  EXPECT_FALSE(s.setup.controller.predict_target);
+  EXPECT_FALSE(s.setup.controller.compensate_pose_age);
+  EXPECT_EQ(s.setup.controller.k_t, paper.k_t);
+  EXPECT_EQ(s.setup.controller.tangential_hysteresis, paper.tangential_hysteresis);
+  EXPECT_FALSE(s.setup.pose_sensor.active());
+  EXPECT_TRUE(s.setup.obstacle_velocities.empty());
+}
+
+TEST(SimScenario, ReadsBeyondThePaperKeys) {
+  std::string text = replaced(kMinimum, "body_safe: false}",
+                              "body_safe: false, tangential_avoidance: true, k_t: 2.5, tangential_hysteresis: 0.4,\n"
+                              "             moving_obstacles: true, obstacle_horizon: 1.5, predict_target: true,\n"
+                              "             compensate_pose_age: true, max_prediction: 0.8}");
+  text = replaced(text, "{center: [1.5, 0.0], radius: 0.15}", "{center: [1.5, 0.0], radius: 0.15, velocity: [0.1, -0.2]}");
+  text += "localization: {sample_period: 0.1, delay: 0.2}\n";
+  const sim::Scenario s = sim::parseScenario(text, "beyond.yaml");
+  const core::ControllerConfig& c = s.setup.controller;
+  EXPECT_TRUE(c.tangential_avoidance);
+  EXPECT_DOUBLE_EQ(c.k_t, 2.5);
+  EXPECT_DOUBLE_EQ(c.tangential_hysteresis, 0.4);
+  EXPECT_TRUE(c.moving_obstacles);
+  EXPECT_DOUBLE_EQ(c.obstacle_horizon, 1.5);
+  EXPECT_TRUE(c.predict_target);
+  EXPECT_TRUE(c.compensate_pose_age);
+  EXPECT_DOUBLE_EQ(c.max_prediction, 0.8);
+  EXPECT_DOUBLE_EQ(s.setup.pose_sensor.sample_period, 0.1);
+  EXPECT_DOUBLE_EQ(s.setup.pose_sensor.delay, 0.2);
+  ASSERT_EQ(s.setup.obstacle_velocities.size(), 1u);
+  EXPECT_EQ(s.setup.obstacle_velocities[0], Eigen::Vector2d(0.1, -0.2));
+}
+
+TEST(SimScenario, RefusesBadBeyondThePaperKeys) {
+  const auto with = [](const std::string& keys) { return replaced(kMinimum, "body_safe: false}", "body_safe: false, " + keys + "}"); };
+  expectRefused(with("tangential_avoidance: maybe"), "controller.tangential_avoidance");
+  expectRefused(with("moving_obstacles: 1.5"), "controller.moving_obstacles");
+  expectRefused(with("predict_target: [true]"), "controller.predict_target");
+  expectRefused(with("compensate_pose_age: yes please"), "controller.compensate_pose_age");
+  expectRefused(with("k_t: fast"), "controller.k_t");
+  expectRefused(with("k_t: -1"), "controller.k_t");
+  expectRefused(with("tangential_hysteresis: 1.0"), "controller.tangential_hysteresis");
+  expectRefused(with("obstacle_horizon: -0.5"), "controller.obstacle_horizon");
+  expectRefused(with("max_prediction: [0.5]"), "controller.max_prediction");
+  expectRefused(with("tangential: true"), "controller.tangential");  // misspelt switch
+  expectRefused(kMinimum + "localization: {delay: -0.1}\n", "localization.delay");
+  expectRefused(kMinimum + "localization: {sample_period: soon}\n", "localization.sample_period");
+  expectRefused(kMinimum + "localization: {dleay: 0.1}\n", "localization.dleay");
+  expectRefused(kMinimum + "localization: 0.1\n", "localization");
+  expectRefused(replaced(kMinimum, "radius: 0.15}", "radius: 0.15, velocity: [0.3]}"), "obstacles[0].velocity");
+  expectRefused(replaced(kMinimum, "radius: 0.15}", "radius: 0.15, velocity: fast}"), "obstacles[0].velocity");
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <random>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -67,8 +68,13 @@ class RobotEmulator {
   std::string statusLine(double now) const;
   // Sonar ranges [m] for the current true pose.
   std::vector<double> sonarRanges() const;
+  // Journal of what reached the robot on the wire: after every motion command (VEL, RVEL,
+  // ROTATE, VEL2, STOP, E-STOP) one line "t command v w" with the setpoints it now holds
+  // (SI units, before the speed limits), flushed at once. Tests judge the stack by it.
+  void setCommandLog(std::ostream* log) { command_log_ = log; }
 
  private:
+  void journal(double now, const char* command) const;
   void stepPhysics(double dt);
   void checkWatchdog(double now);
   void close();
@@ -83,6 +89,8 @@ class RobotEmulator {
   bool sonar_on_ = true;
   // Setpoints: either (v, w) or wheel speeds from VEL2, all SI.
   double target_v_ = 0.0, target_w_ = 0.0;
+  double requested_v_ = 0.0, requested_w_ = 0.0;  // as decoded, before the speed limits
+  std::ostream* command_log_ = nullptr;
   double max_v_, max_w_;  // SETV / SETRV
   double accel_, decel_, rot_accel_, rot_decel_;
   double v_ = 0.0, w_ = 0.0;  // actual

@@ -36,6 +36,12 @@ struct QuantizedCommand {
 std::optional<QuantizedCommand> quantizeCommand(const core::Twist2& desired, CommandMode mode,
                                                 const RobotParams& params, const core::DiamondSet& diamond);
 
+// VEL and RVEL arrive as two packets, so between them the robot holds (next v, held w) or
+// (held v, next w). One of the two is always inside the diamond (their normalised norms add
+// up to norm(held) + norm(next) <= 2): true when RVEL must go first for that; VEL goes
+// first otherwise.
+bool rotationFirst(const core::Twist2& held, const core::Twist2& next, const core::DiamondSet& diamond);
+
 // The twist a command lattice point stands for.
 core::Twist2 commandTwist(CommandMode mode, int first, int second, const RobotParams& params);
 

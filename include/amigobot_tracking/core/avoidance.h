@@ -47,14 +47,16 @@ AvoidanceResult movingRepulsiveTerm(const Eigen::Vector2d& p_r, const std::vecto
 // side (+1 = counter-clockwise around the obstacle, -1 = clockwise) is the one that turns
 // toward the target; it is latched (`previous_side`) and only switches when the weighted
 // sine of the angle between -n and e_hat exceeds `hysteresis` on the other side, so an
-// exactly symmetric case does not chatter. 0 = no conflict (released).
+// exactly symmetric case does not chatter. 0 = no conflict (released). The controller caps
+// k_o |u_t| at k_t times the attraction of (9) (controller.cpp: near contact an uncapped
+// escape crowds the radial barrier out of the saturated command).
 struct TangentialResult {
   Eigen::Vector2d u_t = Eigen::Vector2d::Zero();
   int side = 0;
 };
 TangentialResult tangentialTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
                                 double robot_radius, double delta, const Eigen::Vector2d& e_hat,
-                                int previous_side, double hysteresis = 0.2, double min_margin = 1e-4);
+                                int previous_side, double hysteresis = 0.6, double min_margin = 1e-4);
 
 // Distance from a disk (centre, radius) to the nearest obstacle surface [m]; +inf if none.
 double clearance(const Eigen::Vector2d& center, double radius, const std::vector<Disk>& obstacles);

@@ -44,6 +44,7 @@ struct ClosedLoopSetup {
   Pose2 initial_pose;
   std::vector<Disk> obstacles;
   // Obstacle velocities [m/s], one per obstacle (centre(t) = centre + velocity t); empty: static.
+  // The controller is given them (Disk::velocity, ground truth; used with moving_obstacles).
   std::vector<Eigen::Vector2d> obstacle_velocities;
   double duration = 10.0;        // [s]
   double control_period = 1e-3;  // [s] controller and integration step (the fine step)
@@ -52,6 +53,7 @@ struct ClosedLoopSetup {
                                  // sample deliveries when sample_period >= max_step.
   StepPolicy step_policy;        // thresholds of the variable step (its min/max come from above)
   TargetSensorConfig sensor;     // noise, delay, jumps (its sample_period is replaced by the one above)
+  PoseSensorConfig pose_sensor;  // how late and how often the robot's own pose arrives
   ControlLaw law = ControlLaw::kPaper;
   VelocitySource velocity_source = VelocitySource::kPaperEstimator;
   BaselineParams baseline;
@@ -65,8 +67,12 @@ struct ClosedLoopStep {
   Pose2 pose;
   ReferenceState reference;        // the true target
   TargetSample sample;             // what the controller was given
+  PoseSample pose_sample;          // the robot pose the controller was given (== pose, stamp t
+                                   // without a pose sensor)
   ControllerOutput output;
-  double clearance_offset = 0.0;   // disk of radius R around p_r to the nearest obstacle [m]
+  Eigen::Vector2d p_r_true = Eigen::Vector2d::Zero();  // the true offset point (output.p_r is
+                                                      // the controller's belief)
+  double clearance_offset = 0.0;   // disk of radius R around the true p_r to the nearest obstacle [m]
   double clearance_body = 0.0;     // disk of radius R around the centre p [m]
   const std::vector<Disk>* obstacles = nullptr;  // where the obstacles are at t
 };
@@ -75,7 +81,8 @@ struct ClosedLoopSummary {
   std::uint64_t steps = 0;
   double max_error_ratio = 0.0;      // max |e|/rho over the steps
   double final_error = 0.0;          // |e| at the end [m]
-  double min_clearance_offset = 0.0; // disk of the effective radius around p_r [m]
+  double min_clearance_offset = 0.0; // disk of the effective radius around p_r as the controller
+                                     // sees it (its pose may be late) [m]
   double min_clearance_body = 0.0;   // disk of radius R around the centre [m]
   std::uint64_t diamond_violations = 0;
   std::uint64_t invalid_steps = 0;   // NaN or unusable inputs

@@ -8,7 +8,9 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -61,6 +63,7 @@ struct ControllerOutput {
   Eigen::Vector2d u_c = Eigen::Vector2d::Zero();     // repulsive term (10), before k_o
   Eigen::Vector2d u_t = Eigen::Vector2d::Zero();     // tangential escape term, before k_o (extension)
   Eigen::Vector2d u_r = Eigen::Vector2d::Zero();     // offset-point velocity (9)
+  int passing_side = 0;           // latched side of the tangential term (+1 ccw, -1 cw, 0 released)
   int detected_obstacles = 0;
   double min_clearance = 0.0;     // of the effective disk around p_r [m]; +inf if none
   ActiveConstraints active;
@@ -94,6 +97,10 @@ class PerformanceController {
 
  private:
   ControllerOutput invalid(double t, std::string why);
+  // The pose moved from its stamp to t along the commands applied meanwhile (at most
+  // max_prediction seconds of them): exact for the unicycle, what odometry would give.
+  Pose2 compensatedPose(double t, const PoseSample& robot) const;
+  void remember(double t, const Twist2& u);
 
   ControllerConfig config_;
   DiamondSet diamond_;
@@ -104,7 +111,9 @@ class PerformanceController {
   double rho_ = 0.0;
   double conflict_ = 0.0;  // second argument of the min in (13), from the last step
   int passing_side_ = 0;   // latched side of the tangential term (0 = released)
-  Twist2 last_u_;          // last applied command, for pose-age compensation
+  // Applied commands, each held from its time to the next one's (zero before the first),
+  // over the last max_prediction seconds: pose-age compensation replays them.
+  std::deque<std::pair<double, Twist2>> commands_;
   std::uint64_t envelope_widenings_ = 0;
 };
 

@@ -37,12 +37,16 @@ struct ControllerConfig {
 
   // Beyond the paper: each switch off reproduces the paper exactly.
   bool tangential_avoidance = false;   // escape the saddle behind a disk (avoidance.h)
-  double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c
-  double tangential_hysteresis = 0.2;  // [-] sine margin before the passing side may switch
+  double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c;
+                                       // k_o |u_t| <= k_t |attraction of (9)|
+  double tangential_hysteresis = 0.6;  // [-] sine margin before the passing side may switch
+                                       // (0.2 flipped sides 4 times in 0.6 s on the saddle:
+                                       // near the disk a short e turns by more than 0.2 as the
+                                       // escape itself moves p_r sideways; docs/beyond_paper.md)
   bool moving_obstacles = false;       // use obstacle velocities in (10) (avoidance.h)
   double obstacle_horizon = 1.0;       // [s] detection band grows by approach speed * horizon
   bool predict_target = false;         // p_d = latest sample + v_hat * (t - sample stamp)
-  bool compensate_pose_age = false;    // move the pose forward by the last command over its age
+  bool compensate_pose_age = false;    // move the pose forward along the commands applied over its age
   double max_prediction = 0.5;         // [s] ages beyond this are not extrapolated further
 
   // The radius used in (10): R, or R + r when body_safe.

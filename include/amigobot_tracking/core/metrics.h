@@ -9,10 +9,21 @@
 //   TEC = sum h_k (v_k^2 + w_k^2)        [m^2/s + rad^2/s, numerically] control energy
 // with T = sum h_k and e = p_d - p_r. A collision is an episode: the step where a
 // clearance turns negative after being >= 0 (or at the start) counts one.
+//
+// The e above is the controller's own error (measured target minus believed offset point).
+// With a delayed or noisy sensor it differs from the true error e* = p_d(t) - p_r(t) (true
+// target, true robot); true_ase, true_aae and max_true_error use e*. A *stall*: the offset
+// point makes no headway although it is far behind. A step at t is stalled when p_r(t) is
+// less than kStallSpeed * kStallWindow from p_r(t - kStallWindow) (net, so chattering in
+// place counts) and |e*(t)| > kStallError; a run of consecutive stalled steps t_a..t_b is a
+// stall over [t_a - kStallWindow, t_b], of length t_b - t_a + kStallWindow. longest_stall is
+// the longest (0 without any stalled step).
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <limits>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -35,6 +46,13 @@ struct MetricSample {
   bool valid = true;              // the controller produced a command
   bool saturated = false;
   bool envelope_widened = false;
+  // Beyond the paper (issue 8).
+  Eigen::Vector2d e_true = Eigen::Vector2d::Zero();  // true error e* [m]
+  double t = 0.0;                 // [s] time of the step
+  Eigen::Vector2d p_r = Eigen::Vector2d::Zero();  // true offset point [m]
+  bool conflict = false;          // e_hat^T u_c < 0 this step
+  bool escaping = false;          // the tangential term was non-zero this step
+  int passing_side = 0;           // its latched side (+1, -1; 0 released)
 };
 
 struct RunMetrics {
@@ -58,6 +76,13 @@ struct RunMetrics {
   double final_error = 0.0;             // [m] |e| at the last step
   double sim_time = 0.0;                // [s] T
   std::uint64_t steps = 0;
+  double true_ase = 0.0;                // [m^2] with the true error e*
+  double true_aae = 0.0;                // [m]
+  double max_true_error = 0.0;          // [m] peak |e*|
+  double longest_stall = 0.0;           // [s]
+  std::uint64_t conflict_steps = 0;     // steps with e_hat^T u_c < 0
+  std::uint64_t escape_steps = 0;       // steps with a non-zero tangential term
+  std::uint64_t side_flips = 0;         // steps whose passing side is the opposite of the last step's
 };
 
 class MetricsAccumulator {
@@ -68,11 +93,17 @@ class MetricsAccumulator {
 
  private:
   RunMetrics m_;
-  double sum_e2_ = 0.0, sum_e_ = 0.0, sum_v2_ = 0.0;
+  double sum_e2_ = 0.0, sum_e_ = 0.0, sum_v2_ = 0.0, sum_true_e2_ = 0.0, sum_true_e_ = 0.0;
+  std::deque<std::pair<double, Eigen::Vector2d>> recent_;  // (t, p_r) over the last window
+  int last_side_ = 0;
+  double stall_start_ = -1.0;                               // t_a of the stall in progress, or < 0
   bool in_offset_contact_ = false, in_body_contact_ = false;
 };
 
 constexpr double kDiamondTolerance = 1e-9;
+constexpr double kStallSpeed = 0.05;   // [m/s] net headway below this counts as standing
+constexpr double kStallWindow = 0.5;   // [s] over which the headway is measured
+constexpr double kStallError = 0.2;    // [m] twice the experiment's rho_inf: clearly not arrived
 
 }  // namespace core
 }  // namespace amigobot_tracking

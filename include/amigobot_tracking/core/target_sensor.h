@@ -1,8 +1,10 @@
 // How the controller sees the target in the offline loop: sampled every sample_period,
-// with Gaussian noise, a transport delay and step jumps (SLAM relocalisations).
+// with Gaussian noise, a transport delay and step jumps (SLAM relocalisations). And how it
+// sees its own pose (PoseSensor): localisation samples, late and slow like the target's.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <random>
 #include <string>
 #include <vector>
@@ -51,6 +53,41 @@ class TargetSensor {
   std::normal_distribution<double> noise_;
   std::int64_t index_ = -1;  // index of the last sample taken (periodic sampling)
   TargetSample sample_;
+};
+
+// The robot's own pose as localisation (SLAM) reports it: the true pose taken every
+// sample_period and delivered `delay` later. Both 0: the true pose at every step.
+struct PoseSensorConfig {
+  double sample_period = 0.0;  // [s] 0: continuous sampling
+  double delay = 0.0;          // [s] a pose taken at t reaches the controller at t + delay
+
+  bool active() const { return sample_period > 0.0 || delay > 0.0; }
+  // Empty when valid, otherwise "field: reason" (fields named pose_sample_period, pose_delay).
+  std::string validate() const;
+};
+
+class PoseSensor {
+ public:
+  explicit PoseSensor(const PoseSensorConfig& config) : config_(config) {}
+
+  // The true trajectory, step by step (monotonic t): the pose at t, then the command held
+  // from t on. The pose at any earlier time is the exact unicycle arc between records.
+  void record(double t, const Pose2& pose);
+  void hold(const Twist2& u);
+  // The newest sample delivered by time t (after record(t, ...)), stamped with its taking
+  // time; before the first delivery, the pose at the first record.
+  PoseSample at(double t);
+  // The next time after t at which a new sample arrives (+inf with continuous sampling).
+  double nextDelivery(double t) const;
+
+ private:
+  struct Record {
+    double t;
+    Pose2 pose;
+    Twist2 u;
+  };
+  PoseSensorConfig config_;
+  std::deque<Record> history_;
 };
 
 }  // namespace core

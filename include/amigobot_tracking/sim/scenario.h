@@ -1,7 +1,7 @@
 // Scenario files of the offline simulator (YAML): robot, controller, reference,
-// obstacles, simulation, and optional target sensor. Parsed strictly: a missing or
-// unknown key, a wrong type, an unknown reference type or an initial error outside rho(0)
-// is refused with a message naming the file and the key, before anything runs.
+// obstacles, simulation, optional target sensor and localization (robot pose timing).
+// Parsed strictly: a missing or unknown key, a wrong type, an unknown reference type or
+// an initial error outside rho(0) is refused with a message naming the file and the key, before anything runs.
 // The format, key by key: config/scenarios/paper_5_2_rose.yaml.
 #pragma once
 

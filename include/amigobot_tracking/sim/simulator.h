@@ -13,11 +13,13 @@ namespace amigobot_tracking {
 namespace sim {
 
 // Columns of trajectory.csv, in order (units: m, rad, s, m/s, rad/s).
-constexpr std::array<const char*, 31> kCsvColumns = {
+// p_r_x/p_r_y are the controller's belief (a delayed pose); p_r_true_* the true offset point.
+constexpr std::array<const char*, 36> kCsvColumns = {
     "t",        "x",          "y",          "theta",     "p_r_x",   "p_r_y",   "p_d_x",   "p_d_y",
     "meas_x",   "meas_y",     "v_hat_x",    "v_hat_y",   "v_d_x",   "v_d_y",   "e_x",     "e_y",
     "e_norm",   "rho",        "v",          "omega",     "v_d",     "omega_d", "u_c_x",   "u_c_y",
-    "clearance_offset", "clearance_body", "h", "saturated", "avoiding", "envelope_widened", "diamond_norm"};
+    "clearance_offset", "clearance_body", "h", "saturated", "avoiding", "envelope_widened", "diamond_norm",
+    "u_t_x",    "u_t_y",      "p_r_true_x", "p_r_true_y", "passing_side"};
 using CsvRow = std::array<double, kCsvColumns.size()>;
 
 struct RunResult {
