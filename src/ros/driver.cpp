@@ -95,12 +95,14 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   });
   client_->setSipCallback([this](const aria::RobotState& state) { onSip(state); });
   client_->start();
+  link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.sip_cycle), [this](const ros::TimerEvent&) { checkLink(); });
   cmd_vel_sub_ = nh_.subscribe("cmd_vel", 1, &AmigobotDriver::onCmdVel, this);
 }
 
 AmigobotDriver::~AmigobotDriver() {
   cmd_vel_sub_.shutdown();
   diagnostics_timer_.stop();
+  link_timer_.stop();
   client_->stop();
 }
 
@@ -145,12 +147,7 @@ void AmigobotDriver::onSip(const aria::RobotState& state) {
   std_msgs::Float64 battery;
   battery.data = state.battery_voltage;
   battery_pub_.publish(battery);
-  if (last_motors_state_ != static_cast<int>(state.motors_enabled)) {
-    std_msgs::Bool motors;
-    motors.data = state.motors_enabled;
-    motors_pub_.publish(motors);
-    last_motors_state_ = state.motors_enabled;
-  }
+  publishMotorsStateLocked(state.motors_enabled);
   // One sensor_msgs/Range per transducer reading in this SIP, in the transducer's frame.
   // REP 117: no echo within the maximum range is +inf.
   const double max_range = 5.0;
@@ -167,6 +164,20 @@ void AmigobotDriver::onSip(const aria::RobotState& state) {
     range.range = r >= max_range ? std::numeric_limits<float>::infinity() : static_cast<float>(r);
     sonar_pub_.publish(range);
   }
+}
+
+void AmigobotDriver::publishMotorsStateLocked(bool enabled) {
+  if (last_motors_state_ == static_cast<int>(enabled)) return;
+  std_msgs::Bool motors;
+  motors.data = enabled;
+  motors_pub_.publish(motors);
+  last_motors_state_ = enabled;
+}
+
+void AmigobotDriver::checkLink() {
+  if (client_->status().link == aria::LinkState::kConnected) return;
+  std::lock_guard<std::mutex> lock(publish_mutex_);
+  publishMotorsStateLocked(false);
 }
 
 void AmigobotDriver::publishSonarTransforms() {

@@ -51,6 +51,10 @@ class AmigobotDriver {
   bool resetOdometry(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   void publishSonarTransforms();
+  // motors_state, latched, published on change only; publish_mutex_ held.
+  void publishMotorsStateLocked(bool enabled);
+  // Without a link the motors are not enabled, whatever the last SIP said (SIP period).
+  void checkLink();
 
   DriverParams params_;
   ros::NodeHandle nh_, pnh_;
@@ -60,7 +64,7 @@ class AmigobotDriver {
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
   diagnostic_updater::Updater updater_;
-  ros::Timer diagnostics_timer_;
+  ros::Timer diagnostics_timer_, link_timer_;
   std::mutex publish_mutex_;
   int last_motors_state_ = -1;  // -1: not yet published
   std::unique_ptr<aria::AriaClient> client_;
