@@ -67,6 +67,26 @@ void writeTrajectoryCsv(const std::string& path, const std::vector<CsvRow>& rows
   if (std::fclose(f) != 0 || !ok) throw std::runtime_error(path + ": write failed");
 }
 
+void writeSharedMetricsJson(std::ostream& j, const core::RunMetrics& m) {
+  auto num = [&](const char* key, double value) { j << "  \"" << key << "\": " << jsonNumber(value) << ",\n"; };
+  num("ase", m.ase);
+  num("aae", m.aae);
+  num("tec", m.tec);
+  num("max_e_over_rho", m.max_e_over_rho);
+  num("max_rho", m.max_rho);
+  num("final_error", m.final_error);
+  num("min_clearance_offset", m.min_clearance_offset);
+  num("min_clearance_body", m.min_clearance_body);
+  num("body_collisions", static_cast<double>(m.body_collisions));
+  num("body_contact_time_s", m.body_contact_time);
+  num("diamond_violations", static_cast<double>(m.diamond_violations));
+  num("saturated_steps", static_cast<double>(m.saturated_steps));
+  num("envelope_widenings", static_cast<double>(m.envelope_widenings));
+  num("estimator_rms_error", m.estimator_rms_error);
+  num("estimator_max_error_settled", m.estimator_max_error_settled);
+  num("steps", static_cast<double>(m.steps));
+}
+
 std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   const core::RunMetrics& m = result.summary.metrics;
   const core::ClosedLoopSetup& setup = scenario.setup;
@@ -76,24 +96,10 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
     j << "  \"" << key << "\": " << jsonNumber(value) << (comma ? ",\n" : "\n");
   };
   j << "{\n";
-  num("ase", m.ase);
-  num("aae", m.aae);
-  num("tec", m.tec);
-  num("max_e_over_rho", m.max_e_over_rho);
-  num("max_rho", m.max_rho);
-  num("min_clearance_offset", m.min_clearance_offset);
-  num("min_clearance_body", m.min_clearance_body);
-  num("body_collisions", static_cast<double>(m.body_collisions));
+  writeSharedMetricsJson(j, m);
   num("offset_collisions", static_cast<double>(m.offset_collisions));
-  num("body_contact_time_s", m.body_contact_time);
   num("offset_contact_time_s", m.offset_contact_time);
-  num("diamond_violations", static_cast<double>(m.diamond_violations));
   num("nan_count", static_cast<double>(m.nan_count));
-  num("saturated_steps", static_cast<double>(m.saturated_steps));
-  num("envelope_widenings", static_cast<double>(m.envelope_widenings));
-  num("estimator_rms_error", m.estimator_rms_error);
-  num("estimator_max_error_settled", m.estimator_max_error_settled);
-  num("final_error", m.final_error);
   num("true_ase", m.true_ase);
   num("true_aae", m.true_aae);
   num("max_true_error", m.max_true_error);
@@ -101,7 +107,6 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   num("conflict_steps", static_cast<double>(m.conflict_steps));
   num("escape_steps", static_cast<double>(m.escape_steps));
   num("side_flips", static_cast<double>(m.side_flips));
-  num("steps", static_cast<double>(m.steps));
   num("sim_time_s", m.sim_time);
   num("wall_time_s", result.wall_time);
   num("realtime_factor", result.realtimeFactor());

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ void writeText(const std::string& path, const std::string& text);
 
 // A JSON number; non-finite values become null (JSON has no infinity).
 std::string jsonNumber(double value);
+// The metrics every run report shares (offline run or recorded run), one `"key": value,`
+// line each, so both metrics.json files keep one schema for plot_run.py and the tests.
+void writeSharedMetricsJson(std::ostream& json, const core::RunMetrics& metrics);
 
 }  // namespace sim
 }  // namespace amigobot_tracking
