@@ -30,26 +30,33 @@ double estimatorBound(const EstimatorConfig& config, double elapsed) {
          config.rho_o;
 }
 
-double solveImplicitStage(double c, double rho, double k, double eta_guess) {
-  if (c == 0.0) return 0.0;
+double solveImplicitStage(double c, double rho, double k, double eta_guess, double* tanh_eta) {
+  if (c == 0.0) {
+    if (tanh_eta) *tanh_eta = 0.0;
+    return 0.0;
+  }
   // g is odd: solve g(eta) = |c| on eta >= 0 and restore the sign.
   const double sign = c > 0.0 ? 1.0 : -1.0;
   const double target = std::abs(c);
   struct Eval {
-    double g, dg;
+    double g, dg, tanh;
   };
   auto eval = [&](double eta) {
     const double e2 = std::exp(2.0 * eta);
     const double inv_e2 = 1.0 / e2;
     const double cosh2 = 0.25 * (e2 + 2.0 + inv_e2);
-    return Eval{rho * (e2 - 1.0) / (e2 + 1.0) + k * eta * cosh2 - target,
-                rho / cosh2 + k * (cosh2 + eta * 0.5 * (e2 - inv_e2))};
+    const double tanh = (e2 - 1.0) / (e2 + 1.0);
+    return Eval{rho * tanh + k * eta * cosh2 - target, rho / cosh2 + k * (cosh2 + eta * 0.5 * (e2 - inv_e2)), tanh};
+  };
+  auto done = [&](double eta, double tanh) {
+    if (tanh_eta) *tanh_eta = sign * tanh;
+    return sign * eta;
   };
   // Bracket: k*eta <= g(eta) gives eta <= c/k. Past kMaxEta the root is capped.
   double lo = 0.0;
   double hi = target / k;
   if (hi >= kMaxEta) {
-    if (eval(kMaxEta).g <= 0.0) return sign * kMaxEta;
+    if (eval(kMaxEta).g <= 0.0) return done(kMaxEta, std::tanh(kMaxEta));
     hi = kMaxEta;
   }
   double eta = std::clamp(sign * eta_guess, lo, hi);
@@ -62,10 +69,14 @@ double solveImplicitStage(double c, double rho, double k, double eta_guess) {
     const bool settled = std::abs(next - eta) <= 1e-13 * (1.0 + eta);
     if (!settled && !(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect.
     const bool converged = settled || std::abs(next - eta) <= 1e-13 * (1.0 + eta) || hi - lo <= 1e-15;
+    if (converged) {
+      // tanh at the final eta from the one just evaluated: d tanh = (1 - tanh^2) d eta, and
+      // d eta is below 1e-13 (1 + eta) here, so the dropped second-order term is below 1e-25.
+      return done(next, v.tanh + (1.0 - v.tanh * v.tanh) * (next - eta));
+    }
     eta = next;
-    if (converged) break;
   }
-  return sign * eta;
+  return done(eta, std::tanh(eta));
 }
 
 AxisEstimator::AxisEstimator(const EstimatorConfig& config) : config_(config) {}
@@ -77,6 +88,7 @@ void AxisEstimator::reset(double t, double chi, double velocity_guess) {
   z2_ = velocity_guess;
   z1_rate_ = velocity_guess;
   eta1_ = eta2_ = 0.0;
+  eta1_change_ = eta2_change_ = last_h_ = 0.0;
 }
 
 bool AxisEstimator::update(double t, double chi) {
@@ -101,13 +113,20 @@ bool AxisEstimator::update(double t, double chi) {
   }
   last_chi_ = chi;
   // Stage 1: z1 follows chi.
-  eta1_ = solveImplicitStage(chi - z1_, rho, h * config_.a1, eta1_);
-  const double z1_next = chi - rho * std::tanh(eta1_);
+  double xi = 0.0;  // tanh(eta), from the solver
+  const double stretch = last_h_ > 0.0 ? std::min(h / last_h_, 4.0) : 0.0;
+  const double eta1 = solveImplicitStage(chi - z1_, rho, h * config_.a1, eta1_ + stretch * eta1_change_, &xi);
+  eta1_change_ = eta1 - eta1_;
+  eta1_ = eta1;
+  const double z1_next = chi - rho * xi;
   z1_rate_ = (z1_next - z1_) / h;
   z1_ = z1_next;
   // Stage 2: z2 follows z1's rate.
-  eta2_ = solveImplicitStage(z1_rate_ - z2_, rho, h * config_.a2, eta2_);
-  z2_ = z1_rate_ - rho * std::tanh(eta2_);
+  const double eta2 = solveImplicitStage(z1_rate_ - z2_, rho, h * config_.a2, eta2_ + stretch * eta2_change_, &xi);
+  eta2_change_ = eta2 - eta2_;
+  eta2_ = eta2;
+  last_h_ = h;
+  z2_ = z1_rate_ - rho * xi;
   last_t_ = t;
   return true;
 }

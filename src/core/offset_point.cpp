@@ -24,8 +24,7 @@ Eigen::Matrix2d offsetJacobianInverse(double theta, double offset) {
 }
 
 Twist2 offsetVelocityToTwist(const Eigen::Vector2d& u_r, double theta, double offset) {
-  const Eigen::Vector2d u = offsetJacobianInverse(theta, offset) * u_r;
-  return {u.x(), u.y()};
+  return offsetVelocityToTwist(u_r, Eigen::Vector2d(std::cos(theta), std::sin(theta)), offset);
 }
 
 Eigen::Vector2d twistToOffsetVelocity(const Twist2& u, double theta, double offset) {

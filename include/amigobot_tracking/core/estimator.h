@@ -50,8 +50,9 @@ struct EstimatorConfig {
 double estimatorBound(const EstimatorConfig& config, double elapsed);
 
 // One implicit step of a stage: returns eta solving rho*tanh(eta) + k*eta*cosh(eta)^2 = c
-// with k = h * gain > 0. Pure; exposed for tests.
-double solveImplicitStage(double c, double rho, double k, double eta_guess);
+// with k = h * gain > 0. Pure; exposed for tests. With tanh_eta, also writes tanh(eta)
+// (from the solver's last evaluation, to rounding: the caller needs no tanh of its own).
+double solveImplicitStage(double c, double rho, double k, double eta_guess, double* tanh_eta = nullptr);
 
 // Maximum |eta| used (tanh(18) < 1 in double precision).
 constexpr double kMaxEta = 18.0;
@@ -90,6 +91,11 @@ class AxisEstimator {
   double z1_rate_ = 0.0;
   double eta1_ = 0.0;
   double eta2_ = 0.0;
+  // Change of eta over the last step and that step's length: the solver's warm start is the
+  // linear extrapolation (one Newton iteration fewer per solve on smooth inputs).
+  double eta1_change_ = 0.0;
+  double eta2_change_ = 0.0;
+  double last_h_ = 0.0;
   std::uint64_t jumps_ = 0;
   std::uint64_t rejected_ = 0;
 };

@@ -17,6 +17,10 @@ Eigen::Matrix2d offsetJacobian(double theta, double offset);
 Eigen::Matrix2d offsetJacobianInverse(double theta, double offset);
 // (v, w) = G^-1 u_r.
 Twist2 offsetVelocityToTwist(const Eigen::Vector2d& u_r, double theta, double offset);
+// The same with heading = (cos th, sin th) already at hand (one sincos per control step).
+inline Twist2 offsetVelocityToTwist(const Eigen::Vector2d& u_r, const Eigen::Vector2d& heading, double offset) {
+  return {heading.x() * u_r.x() + heading.y() * u_r.y(), (-heading.y() * u_r.x() + heading.x() * u_r.y()) / offset};
+}
 // u_r = G (v, w).
 Eigen::Vector2d twistToOffsetVelocity(const Twist2& u, double theta, double offset);
 
