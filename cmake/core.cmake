@@ -4,6 +4,7 @@ add_library(amigobot_tracking_core
   src/core/estimator.cpp
   src/core/offset_point.cpp
   src/core/avoidance.cpp
+  src/core/band_implicit.cpp
   src/core/performance.cpp
   src/core/controller.cpp
   src/core/controller_config.cpp

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/band_implicit.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/core/unicycle.h"
 
@@ -13,6 +14,49 @@ namespace {
 
 PerformanceGains gainsOf(const ControllerConfig& config) {
   return {config.lambda, config.rho_inf, config.k_r};
+}
+
+// setImplicitHorizon: replaces the explicit term of the nearest obstacle the offset point
+// can reach within h by its backward-Euler value (band_implicit.h). `others` is the rest of
+// u_r; the other obstacles keep their explicit terms.
+void applyImplicitBand(const ControllerConfig& config, const DiamondSet& diamond, const Pose2& pose,
+                       const Eigen::Vector2d& others, const std::vector<Disk>& obstacles, double h,
+                       ControllerOutput& out) {
+  const double radius = config.effectiveRadius();
+  const Disk* nearest = nullptr;
+  double nearest_clearance = 0.0;
+  for (const Disk& o : obstacles) {
+    const double c = (out.p_r - o.center).norm() - radius - o.radius;
+    if (!nearest || c < nearest_clearance) {
+      nearest = &o;
+      nearest_clearance = c;
+    }
+  }
+  if (!nearest || nearest_clearance - h * maxOffsetSpeed(diamond, config.offset) > config.delta) return;
+  // Obstacle j's explicit term, as repulsiveTerm added it.
+  Eigen::Vector2d explicit_term = Eigen::Vector2d::Zero();
+  const bool detected = nearest_clearance <= config.delta;
+  if (detected) {
+    explicit_term = (1.0 / std::max(nearest_clearance, config.min_margin) - 1.0 / config.delta) *
+                    (out.p_r - nearest->center);
+  }
+  BandImplicitProblem problem;
+  problem.pose = pose;
+  problem.offset = config.offset;
+  problem.rest = others + config.k_o * (out.u_c - explicit_term);
+  problem.k_o = config.k_o;
+  problem.obstacle = *nearest;
+  problem.robot_radius = radius;
+  problem.delta = config.delta;
+  problem.min_margin = config.min_margin;
+  problem.h = h;
+  const BandImplicitResult implicit = solveBandImplicit(problem, diamond);
+  if (!implicit.solved) return;
+  out.u_c += implicit.u_c - explicit_term;
+  const bool implicit_detected = !implicit.u_c.isZero(0.0);
+  if (implicit_detected && !detected) ++out.detected_obstacles;
+  if (!implicit_detected && detected) --out.detected_obstacles;
+  out.active.avoiding = out.detected_obstacles > 0;
 }
 
 }  // namespace
@@ -94,7 +138,9 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   ControllerOutput out;
   out.valid = true;
   out.t = t;
-  out.p_r = offsetPoint(pose, config_.offset);
+  // cos and sin of the heading once: (5), the heading hint of (10) and G^-1 of (11) share them.
+  const Eigen::Vector2d heading(std::cos(pose.theta), std::sin(pose.theta));
+  out.p_r = pose.position() + config_.offset * heading;  // (5), as offsetPoint()
   out.p_d = target.position;
   if (config_.predict_target) out.p_d += estimator_.velocity() * age(target.stamp);
   out.e = out.p_d - out.p_r;
@@ -121,7 +167,6 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   const double t_ratio = transformT(ratio);
   const Eigen::Vector2d e_hat = error_norm > 1e-12 ? Eigen::Vector2d(out.e / error_norm) : Eigen::Vector2d::Zero();
 
-  const Eigen::Vector2d heading(std::cos(pose.theta), std::sin(pose.theta));
   const double radius = config_.effectiveRadius();
   const AvoidanceResult avoidance =
       config_.moving_obstacles
@@ -148,10 +193,13 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   out.detected_obstacles = avoidance.detected;
   out.min_clearance = avoidance.min_clearance;
   out.active.avoiding = avoidance.detected > 0;
+  if (implicit_horizon_ > 0.0 && !config_.moving_obstacles) {
+    applyImplicitBand(config_, diamond_, pose, attraction + config_.k_o * out.u_t, obstacles, implicit_horizon_, out);
+  }
 
   // (9): u_r = k_d T e_hat + v_hat + lambda (rho - rho_inf) e / rho + k_o u_c.
   out.u_r = attraction + config_.k_o * (out.u_c + out.u_t);
-  out.u_d = offsetVelocityToTwist(out.u_r, pose.theta, config_.offset);  // (11)
+  out.u_d = offsetVelocityToTwist(out.u_r, heading, config_.offset);  // (11)
   const auto saturated = diamond_.saturate(out.u_d);                     // (12)
   if (!saturated) return invalid(t, "desired command is not finite");
   out.u = *saturated;

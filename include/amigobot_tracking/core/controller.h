@@ -85,6 +85,12 @@ class PerformanceController {
 
   // Forget all state: the next step starts afresh (estimator, rho, start rule).
   void reset();
+  // Offline simulation only: the next command will be held for h [s]. h > 0 evaluates the
+  // repulsive term of the nearest obstacle the offset point can reach within h backward-Euler,
+  // at the clearance it has at the end of the step (band_implicit.h), so long steps neither
+  // chatter across the detection band nor enter the disk. 0 (the default, and what the robot
+  // uses): the paper's explicit (10). Ignored with moving_obstacles.
+  void setImplicitHorizon(double h) { implicit_horizon_ = h; }
   // Swap the parameters between steps, keeping the state (rho is re-clamped to its rules).
   void setConfig(const ControllerConfig& config);
 
@@ -115,6 +121,7 @@ class PerformanceController {
   // over the last max_prediction seconds: pose-age compensation replays them.
   std::deque<std::pair<double, Twist2>> commands_;
   std::uint64_t envelope_widenings_ = 0;
+  double implicit_horizon_ = 0.0;
 };
 
 }  // namespace core
