@@ -34,6 +34,10 @@ class Law {
                   : proportional_->step(t, robot.pose, sample, obstacles);
   }
   const DiamondSet& diamond() const { return paper_ ? paper_->diamond() : proportional_->diamond(); }
+  bool implicitBand() const { return paper_ != nullptr; }
+  void setImplicitHorizon(double h) {
+    if (paper_) paper_->setImplicitHorizon(h);
+  }
 
  private:
   std::unique_ptr<PerformanceController> paper_;
@@ -151,6 +155,16 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     }
     return sample;
   };
+  const bool implicit = setup.integrator == Integrator::kBandImplicit && law.implicitBand();
+  double last_ratio = 1.0;  // the first step is the fine one
+  // Land on the next sample delivery (when samples are sparser than steps) and on the end.
+  auto landed = [&](double h) {
+    const double delivery = sensor.nextDelivery(t);
+    if (land_on_samples && delivery - t > 1e-9) h = std::min(h, delivery - t);
+    const double pose_delivery = pose_sensor.nextDelivery(t);
+    if (pose_delivery - t > 1e-9) h = std::min(h, pose_delivery - t);
+    return std::min(h, setup.duration - t);
+  };
   for (std::uint64_t k = 0;; ++k) {
     // Fixed step: t = k h exactly (no drift). Variable step: t accumulates.
     if (fixed_step) t = static_cast<double>(k) * setup.control_period;
@@ -163,23 +177,25 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       pose_sensor.record(t, pose);
       robot = pose_sensor.at(t);
     }
+    const Eigen::Vector2d p_r = offsetPoint(pose, config.offset);
+    // Band-implicit: the step is chosen first (from the last step's |e|/rho; the bands need
+    // no short step) and the controller is told how long its command will be held.
+    double h = 0.0;
+    if (implicit && !last) {
+      StepSituation s;
+      s.max_speed = max_speed;
+      s.error_ratio = last_ratio;
+      s.distance = std::numeric_limits<double>::infinity();
+      h = fixed_step ? setup.control_period : landed(chooseStep(policy, s));
+    }
+    law.setImplicitHorizon(h);
     const ControllerOutput out = law.step(t, robot, sample, obstacles);
     if (pose_sensed) pose_sensor.hold(out.u);
-    const Eigen::Vector2d p_r = offsetPoint(pose, config.offset);
+    last_ratio = out.rho > 0.0 ? out.e.norm() / out.rho : 0.0;
 
-    double h = 0.0;
-    if (!last) {
-      if (fixed_step) {
-        h = setup.control_period;
-      } else {
-        h = chooseStep(policy, situationOf(out, pose, p_r, config, obstacles, max_speed));
-        // Land on the next sample delivery (when samples are sparser than steps) and on the end.
-        const double delivery = sensor.nextDelivery(t);
-        if (land_on_samples && delivery - t > 1e-9) h = std::min(h, delivery - t);
-        const double pose_delivery = pose_sensor.nextDelivery(t);
-        if (pose_delivery - t > 1e-9) h = std::min(h, pose_delivery - t);
-        h = std::min(h, setup.duration - t);
-      }
+    if (!implicit && !last) {
+      h = fixed_step ? setup.control_period
+                     : landed(chooseStep(policy, situationOf(out, pose, p_r, config, obstacles, max_speed)));
     }
     ClosedLoopStep step;
     step.t = t;

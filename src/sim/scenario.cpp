@@ -258,6 +258,15 @@ void parseSimulation(Section s, Scenario& scenario) {
   policy.tight_ratio = s.number("tight_ratio", policy.tight_ratio);
   if (!(policy.comfortable_ratio >= 0.0 && policy.comfortable_ratio < policy.tight_ratio))
     fail(s.file(), s.node()["comfortable_ratio"], s.key("comfortable_ratio"), "must be >= 0 and < tight_ratio");
+  if (s.has("integrator")) {
+    try {
+      setup.integrator = parseIntegrator(s.text("integrator"));
+    } catch (const std::invalid_argument& e) {
+      fail(s.file(), s.node()["integrator"], s.key("integrator"), e.what());
+    }
+  } else {
+    s.optional("integrator");
+  }
   scenario.name = s.text("name", scenario.name);
   s.finish();
 }
@@ -318,6 +327,16 @@ core::VelocitySource parseVelocitySource(const std::string& name) {
   if (name == "finite_difference") return core::VelocitySource::kFiniteDifference;
   if (name == "kalman") return core::VelocitySource::kKalman;
   throw std::invalid_argument("unknown estimator '" + name + "' (paper, finite_difference, kalman)");
+}
+
+core::Integrator parseIntegrator(const std::string& name) {
+  if (name == "explicit") return core::Integrator::kExplicit;
+  if (name == "band_implicit") return core::Integrator::kBandImplicit;
+  throw std::invalid_argument("unknown integrator '" + name + "' (explicit, band_implicit)");
+}
+
+std::string toString(core::Integrator integrator) {
+  return integrator == core::Integrator::kBandImplicit ? "band_implicit" : "explicit";
 }
 
 std::string toString(core::ControlLaw law) {

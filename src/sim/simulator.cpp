@@ -134,6 +134,7 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
     << "    \"rho_o\": " << jsonNumber(c.estimator.rho_o) << ",\n"
     << "    \"control_period\": " << jsonNumber(setup.control_period) << ",\n"
     << "    \"max_step\": " << jsonNumber(setup.max_step) << ",\n"
+    << "    \"integrator\": \"" << toString(setup.integrator) << "\",\n"
     << "    \"duration\": " << jsonNumber(setup.duration) << ",\n"
     << "    \"obstacles\": [";
   for (size_t i = 0; i < setup.obstacles.size(); ++i) {

@@ -44,6 +44,7 @@ const char* kUsage =
     "  --pose-period S                          robot pose sampling period [s] (localization.sample_period)\n"
     "  --obstacle-speed S                       Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s\n"
     "  --control-period S                       the fine step [s] (simulation.control_period)\n"
+    "  --integrator explicit|band_implicit      how the detection band is stepped (simulation.integrator)\n"
     "  --log-period S                           CSV row spacing [s]; 0 = every step (simulation.log_period)\n"
     "  --no-plot                                write CSV and JSON only\n"
     "  --monte-carlo N --seed S                 N randomised variants; writes DIR/monte_carlo.json\n"
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
   static const char* known[] = {"--scenario", "--out", "--variant", "--estimator", "--body-safe", "--max-step",
                                 "--control-period", "--log-period", "--monte-carlo", "--seed", "--benchmark",
                                 "--tangential", "--moving-obstacles", "--predict-target", "--compensate-pose-age", "--target-delay",
-                                "--target-period", "--pose-delay", "--pose-period", "--obstacle-speed"};
+                                "--target-period", "--pose-delay", "--pose-period", "--obstacle-speed", "--integrator"};
   for (const auto& [flag, value] : opt) {
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       return usage("unknown option '" + flag + "'");
@@ -142,6 +143,11 @@ int main(int argc, char** argv) {
       if (opt.count("--estimator")) setup.velocity_source = sim::parseVelocitySource(opt["--estimator"]);
     } catch (const std::invalid_argument& e) {
       throw sim::ScenarioError(std::string("--estimator: ") + e.what());
+    }
+    try {
+      if (opt.count("--integrator")) setup.integrator = sim::parseIntegrator(opt["--integrator"]);
+    } catch (const std::invalid_argument& e) {
+      throw sim::ScenarioError(std::string("--integrator: ") + e.what());
     }
     core::ControllerConfig& c = setup.controller;
     if (opt.count("--body-safe")) c.body_safe = toBool("--body-safe", opt["--body-safe"]);
@@ -180,8 +186,9 @@ int main(int argc, char** argv) {
     }
     std::sort(walls.begin(), walls.end());
     const double median = walls[walls.size() / 2];
-    std::printf("%s: %s, %llu steps for %.3f s simulated; wall median %.3f ms, best %.3f ms over %d runs\n",
+    std::printf("%s: %s, %s, %llu steps for %.3f s simulated; wall median %.3f ms, best %.3f ms over %d runs\n",
                 scenario.name.c_str(), scenario.setup.max_step > scenario.setup.control_period ? "variable step" : "fixed step",
+                sim::toString(scenario.setup.integrator).c_str(),
                 static_cast<unsigned long long>(r.summary.metrics.steps), r.summary.metrics.sim_time, median * 1e3,
                 walls.front() * 1e3, benchmark);
     std::printf("realtime_factor %.0f x (median), %.0f x (best)\n", r.summary.metrics.sim_time / median,

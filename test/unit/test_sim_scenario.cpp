@@ -83,11 +83,29 @@ TEST(SimScenario, ReadsOptionalKeys) {
   EXPECT_DOUBLE_EQ(s.setup.control_period, 0.002);
   EXPECT_DOUBLE_EQ(s.setup.max_step, 0.01);
   EXPECT_EQ(s.setup.sensor.seed, 5u);
+  EXPECT_EQ(s.setup.integrator, core::Integrator::kExplicit);  // the default
   EXPECT_DOUBLE_EQ(s.setup.sample_period, 0.1);
   EXPECT_DOUBLE_EQ(s.setup.sensor.noise_std, 0.01);
   EXPECT_DOUBLE_EQ(s.setup.sensor.delay, 0.05);
   ASSERT_EQ(s.setup.sensor.jumps.size(), 1u);
   EXPECT_DOUBLE_EQ(s.setup.sensor.jumps[0].offset.x(), 0.3);
+}
+
+TEST(SimScenario, ReadsTheIntegrator) {
+  for (const auto& [name, integrator] : {std::pair<const char*, core::Integrator>{"explicit", core::Integrator::kExplicit},
+                                         {"band_implicit", core::Integrator::kBandImplicit}}) {
+    const sim::Scenario s = sim::parseScenario(
+        replaced(kMinimum, "{duration: 6.283}", std::string("{duration: 6.283, integrator: ") + name + "}"), "i.yaml");
+    EXPECT_EQ(s.setup.integrator, integrator) << name;
+    EXPECT_EQ(sim::toString(s.setup.integrator), name);
+  }
+}
+
+TEST(SimScenario, RefusesAnUnknownIntegratorNamingTheKeyAndTheChoices) {
+  expectRefused(replaced(kMinimum, "{duration: 6.283}", "{duration: 6.283, integrator: rk45}"), "simulation.integrator");
+  expectRefused(replaced(kMinimum, "{duration: 6.283}", "{duration: 6.283, integrator: rk45}"), "band_implicit");
+  expectRefused(replaced(kMinimum, "{duration: 6.283}", "{duration: 6.283, integrator: [explicit]}"),
+                "simulation.integrator");
 }
 
 TEST(SimScenario, ProportionalGainDefaultsToTheLinearisedPaperGain) {

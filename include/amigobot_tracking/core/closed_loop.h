@@ -32,6 +32,16 @@ enum class VelocitySource {
   kKalman,            // constant-velocity Kalman filter
 };
 
+// How a step's command is formed from the state (the command is always held over the step).
+enum class Integrator {
+  kExplicit,      // from the state at the step start; with a variable step, the fine step
+                  // inside detection bands, where (10) is stiff
+  kBandImplicit,  // the same, but the repulsive term of the nearest reachable obstacle is
+                  // backward-Euler over the step (band_implicit.h), so the variable step stays
+                  // long in the bands too. The paper and fixed-rho laws only; the proportional
+                  // baseline falls back to kExplicit.
+};
+
 struct BaselineParams {
   double k_p = 30.0;             // [1/s] gain of kProportional
   double lowpass_tau = 0.05;     // [s] time constant of kFiniteDifference
@@ -52,6 +62,7 @@ struct ClosedLoopSetup {
   double sample_period = 0.0;    // [s] target sampling; 0 = every control step. Steps land on
                                  // sample deliveries when sample_period >= max_step.
   StepPolicy step_policy;        // thresholds of the variable step (its min/max come from above)
+  Integrator integrator = Integrator::kExplicit;
   TargetSensorConfig sensor;     // noise, delay, jumps (its sample_period is replaced by the one above)
   PoseSensorConfig pose_sensor;  // how late and how often the robot's own pose arrives
   ControlLaw law = ControlLaw::kPaper;

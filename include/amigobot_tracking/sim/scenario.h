@@ -54,7 +54,9 @@ void checkScenario(const Scenario& scenario);
 // Names of the enumerations as in the YAML files.
 core::ControlLaw parseControlLaw(const std::string& name);          // throws std::invalid_argument
 core::VelocitySource parseVelocitySource(const std::string& name);  // throws std::invalid_argument
+core::Integrator parseIntegrator(const std::string& name);          // throws std::invalid_argument
 std::string toString(core::ControlLaw law);
+std::string toString(core::Integrator integrator);
 std::string toString(core::VelocitySource source);
 
 }  // namespace sim
