@@ -60,10 +60,10 @@ double solveImplicitStage(double c, double rho, double k, double eta_guess, doub
     hi = kMaxEta;
   }
   // Newton converges quadratically: after a step s the root is within about |g''/2g'| s^2,
-  // and |g''/g'| <= ~2 here (tanh and cosh^2 terms), so a step below 1e-8 (1 + eta) leaves
-  // the new iterate within ~1e-16 (1 + eta)^2 of the root: one evaluation fewer than
+  // and |g''/g'| <= ~2 here (tanh and cosh^2 terms), so a step below 1e-6 (1 + eta) leaves
+  // the new iterate within ~1e-12 (1 + eta)^2 of the root (z within rho * 1e-12): fewer evaluations than
   // waiting for a step below that.
-  constexpr double kNewtonStep = 1e-8;
+  constexpr double kNewtonStep = 1e-6;
   double eta = std::clamp(sign * eta_guess, lo, hi);
   for (int iter = 0; iter < 60; ++iter) {
     const Eval v = eval(eta);
@@ -76,7 +76,7 @@ double solveImplicitStage(double c, double rho, double k, double eta_guess, doub
     const bool converged = settled || hi - lo <= 1e-15;
     if (converged) {
       // tanh at the final eta from the one just evaluated: d tanh = (1 - tanh^2) d eta, and
-      // d eta is below 1e-8 (1 + eta) here, so the dropped second-order term is below 1e-16 (1 + eta)^2.
+      // d eta is below 1e-6 (1 + eta) here, so the dropped second-order term is below 1e-12 (1 + eta)^2.
       return done(next, v.tanh + (1.0 - v.tanh * v.tanh) * (next - eta));
     }
     eta = next;
@@ -93,10 +93,14 @@ void AxisEstimator::reset(double t, double chi, double velocity_guess) {
   z2_ = velocity_guess;
   z1_rate_ = velocity_guess;
   eta1_ = eta2_ = 0.0;
-  eta1_change_ = eta2_change_ = last_h_ = 0.0;
+  eta1_change_ = eta2_change_ = eta1_change_before_ = eta2_change_before_ = last_h_ = h_before_ = 0.0;
+  z1_prev_ = z2_prev_ = 0.0;
+  has_prev_ = false;
 }
 
-bool AxisEstimator::update(double t, double chi) {
+bool AxisEstimator::update(double t, double chi) { return update(t, chi, bound(t)); }
+
+bool AxisEstimator::update(double t, double chi, double bound_at_t) {
   if (!std::isfinite(t) || !std::isfinite(chi)) {
     ++rejected_;
     return false;
@@ -110,28 +114,54 @@ bool AxisEstimator::update(double t, double chi) {
     ++rejected_;
     return false;
   }
-  const double rho = bound(t);
+  const double rho = bound_at_t;
   const double predicted = last_chi_ + z2_ * h;
   if (config_.jump_threshold > 0.0 && std::abs(chi - predicted) > config_.jump_threshold) {
     z1_ += chi - predicted;  // relocalisation: move with the jump (error kept), do not differentiate it
+    z1_prev_ += chi - predicted;
     ++jumps_;
   }
   last_chi_ = chi;
-  // Stage 1: z1 follows chi.
+  // y' = a y + a_prev y_prev + b h f(y'): backward Euler (1, 0, 1) or BDF2 for the step ratio w.
+  double a = 1.0, a_prev = 0.0, b = 1.0;
+  const double w = last_h_ > 0.0 ? h / last_h_ : 0.0;
+  if (config_.bdf2 && has_prev_ && w <= 2.4) {
+    b = (1.0 + w) / (1.0 + 2.0 * w);
+    a = (1.0 + w) * b;
+    a_prev = -w * w / (1.0 + 2.0 * w);
+  }
   double xi = 0.0;  // tanh(eta), from the solver
-  const double stretch = last_h_ > 0.0 ? std::min(h / last_h_, 4.0) : 0.0;
-  const double eta1 = solveImplicitStage(chi - z1_, rho, h * config_.a1, eta1_ + stretch * eta1_change_, &xi);
+  // Warm start: the quadratic through the last three etas (Newton form), at t.
+  auto guess = [&](double eta, double change, double change_before) {
+    if (!(last_h_ > 0.0) || w > 4.0) return eta;
+    const double slope = change / last_h_;
+    if (!(h_before_ > 0.0)) return eta + h * slope;
+    const double curvature = (slope - change_before / h_before_) / (last_h_ + h_before_);
+    return eta + h * slope + curvature * h * (h + last_h_);
+  };
+  // Stage 1: z1 follows chi; its rate over the step is the scheme's derivative at t.
+  const double base1 = a * z1_ + a_prev * z1_prev_;
+  const double eta1 =
+      solveImplicitStage(chi - base1, rho, b * h * config_.a1, guess(eta1_, eta1_change_, eta1_change_before_), &xi);
+  eta1_change_before_ = eta1_change_;
   eta1_change_ = eta1 - eta1_;
   eta1_ = eta1;
   const double z1_next = chi - rho * xi;
-  z1_rate_ = (z1_next - z1_) / h;
+  z1_rate_ = (z1_next - base1) / (b * h);
+  z1_prev_ = z1_;
   z1_ = z1_next;
   // Stage 2: z2 follows z1's rate.
-  const double eta2 = solveImplicitStage(z1_rate_ - z2_, rho, h * config_.a2, eta2_ + stretch * eta2_change_, &xi);
+  const double base2 = a * z2_ + a_prev * z2_prev_;
+  const double eta2 = solveImplicitStage(z1_rate_ - base2, rho, b * h * config_.a2,
+                                        guess(eta2_, eta2_change_, eta2_change_before_), &xi);
+  eta2_change_before_ = eta2_change_;
   eta2_change_ = eta2 - eta2_;
   eta2_ = eta2;
-  last_h_ = h;
+  z2_prev_ = z2_;
   z2_ = z1_rate_ - rho * xi;
+  has_prev_ = true;
+  h_before_ = last_h_;
+  last_h_ = h;
   last_t_ = t;
   return true;
 }
@@ -151,8 +181,9 @@ bool VelocityEstimator::update(double t, const Eigen::Vector2d& position) {
     ++rejected_;  // reject the sample as a whole so both axes stay in step
     return false;
   }
-  const bool ok_x = x_.update(t, position.x());
-  const bool ok_y = y_.update(t, position.y());
+  const double bound = x_.initialized() ? x_.bound(t) : 0.0;  // both axes share rho_o(t)
+  const bool ok_x = x_.update(t, position.x(), bound);
+  const bool ok_y = y_.update(t, position.y(), bound);
   return ok_x && ok_y;
 }
 

@@ -207,6 +207,37 @@ TEST(Estimator, ConvergesToTheContinuousSolutionAsSamplingGetsFaster) {
   EXPECT_LT(err_fine, err_coarse / 5.0);
 }
 
+TEST(Estimator, Bdf2KeepsTheBoundsAndConvergesAtSecondOrder) {
+  EstimatorConfig bdf2;
+  bdf2.bdf2 = true;
+  // The guarantees of every step hold as for backward Euler (runAndCheck asserts them).
+  const Signal rose = roseX();
+  for (double h : {1e-3, 1e-2}) {
+    const RunResult r = runAndCheck(rose, h, 2 * M_PI, 0.0, 0.5, bdf2);
+    EXPECT_LT(r.worst_velocity_error, derivedBound(rose, h)) << "h=" << h;
+  }
+  // Velocity error after the transient against a 1 us backward-Euler run (the continuous
+  // solution to ~1e-6), on a sinusoid, with a variable step (h, 2h alternating).
+  const Signal s = sinusoid(1.0, 3.0);
+  auto velocityAt = [&](double h, double t_end, const EstimatorConfig& config) {
+    AxisEstimator est(config);
+    double t = 0.0;
+    for (int k = 0; t < t_end - 1e-12; ++k) {
+      est.update(t, s.value(t));
+      t = std::min(t_end, t + (k % 2 ? 2.0 * h : h));
+    }
+    est.update(t_end, s.value(t_end));
+    return est.velocity();
+  };
+  const double t_end = 1.0;
+  const double reference = velocityAt(1e-6, t_end, EstimatorConfig());
+  const double be_coarse = std::abs(velocityAt(4e-3, t_end, EstimatorConfig()) - reference);
+  const double coarse = std::abs(velocityAt(4e-3, t_end, bdf2) - reference);
+  const double fine = std::abs(velocityAt(2e-3, t_end, bdf2) - reference);
+  EXPECT_LT(coarse, be_coarse / 5.0) << "BDF2 " << coarse << ", backward Euler " << be_coarse;
+  EXPECT_LT(fine, coarse / 3.0) << "halving the step: " << coarse << " -> " << fine;  // ~1/4 at second order
+}
+
 TEST(Estimator, TwoAxesEstimateAPlanarVelocity) {
   VelocityEstimator est;
   const CircleReference circle({0.0, 0.0}, 1.0, 10.0);

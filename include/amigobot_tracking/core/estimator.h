@@ -12,6 +12,13 @@
 // stiff dynamics need (the paper uses ode15s): explicit schemes blow up at 10 Hz.
 // Convergence to the continuous solution is first order in h.
 //
+// With bdf2 (offline simulation only; the robot keeps backward Euler) each stage takes a
+// variable-step BDF2 step instead: y' = a y + a_prev y_prev + b h f(y'), which has the same
+// scalar equation (c = input - a y - a_prev y_prev, k = b h gain), the same bound by
+// construction and is L-stable too, but second order: stage 1's rate is BDF2's derivative,
+// so v_hat no longer lags the target by half a step. The first step, and a step more than
+// 2.4x the previous one (BDF2's zero-stability limit is 1 + sqrt 2), are backward Euler.
+//
 // Stage 1 tracks the sample chi with z1; its rate over the step, z1dot = (z1' - z1)/h,
 // is the input of stage 2, whose state z2 is the velocity estimate.
 //
@@ -36,10 +43,11 @@ struct EstimatorConfig {
   double rho_o = 0.01;          // steady-state bound of both stages ([m], [m/s]).
   double rho_o0 = 1.0;          // initial bound rho_oi(0) of both stages.
   double jump_threshold = 0.5;  // [m] a sample this far from the prediction is a jump; 0 = off.
+  bool bdf2 = false;            // second-order BDF2 steps (offline simulation); false: backward Euler.
 
   bool operator==(const EstimatorConfig& o) const {
     return a1 == o.a1 && a2 == o.a2 && lambda_o == o.lambda_o && rho_o == o.rho_o && rho_o0 == o.rho_o0 &&
-           jump_threshold == o.jump_threshold;
+           jump_threshold == o.jump_threshold && bdf2 == o.bdf2;
   }
 
   // Empty when valid, otherwise "field: reason" for the first bad field.
@@ -67,6 +75,8 @@ class AxisEstimator {
   // Feeds one sample; returns false (and changes nothing) when it is not newer than the
   // last one or not finite. The first sample resets the estimator.
   bool update(double t, double chi);
+  // The same with the bound rho_o(t) already computed (the 2-D wrapper shares it between axes).
+  bool update(double t, double chi, double bound_at_t);
 
   bool initialized() const { return initialized_; }
   double position() const { return z1_; }        // z1
@@ -91,11 +101,15 @@ class AxisEstimator {
   double z1_rate_ = 0.0;
   double eta1_ = 0.0;
   double eta2_ = 0.0;
-  // Change of eta over the last step and that step's length: the solver's warm start is the
-  // linear extrapolation (one Newton iteration fewer per solve on smooth inputs).
-  double eta1_change_ = 0.0;
-  double eta2_change_ = 0.0;
-  double last_h_ = 0.0;
+  // Changes of eta over the last two steps and their lengths: the solver's warm start is the
+  // quadratic through the last three values (one Newton iteration fewer per solve on smooth
+  // inputs than the last value).
+  double eta1_change_ = 0.0, eta1_change_before_ = 0.0;
+  double eta2_change_ = 0.0, eta2_change_before_ = 0.0;
+  double last_h_ = 0.0, h_before_ = 0.0;
+  double z1_prev_ = 0.0;  // z1 and z2 one sample back (BDF2), valid when has_prev_
+  double z2_prev_ = 0.0;
+  bool has_prev_ = false;
   std::uint64_t jumps_ = 0;
   std::uint64_t rejected_ = 0;
 };
