@@ -15,6 +15,8 @@ class Residual {
   Residual(const BandImplicitProblem& p, const DiamondSet& diamond)
       : p_(p), v_max_(diamond.vMax()), w_max_(diamond.wMax()), cos_(std::cos(p.pose.theta)),
         sin_(std::sin(p.pose.theta)), contact_(p.robot_radius + p.obstacle.radius) {
+    const double theta_c = std::isnan(p.command_theta) ? p.pose.theta : p.command_theta;
+    command_heading_ = Eigen::Vector2d(std::cos(theta_c), std::sin(theta_c));
     const Eigen::Vector2d p_r(p.pose.x + p.offset * cos_, p.pose.y + p.offset * sin_);
     const Eigen::Vector2d away = p_r - p.obstacle.center;
     const double distance = away.norm();
@@ -33,7 +35,7 @@ class Residual {
   double operator()(double m) const {
     const Eigen::Vector2d u_r = p_.rest + p_.k_o * term(m);
     // (11) then (12): G(theta)^-1 u_r, scaled radially into the diamond.
-    const Twist2 u_d = offsetVelocityToTwist(u_r, Eigen::Vector2d(cos_, sin_), p_.offset);
+    const Twist2 u_d = offsetVelocityToTwist(u_r, command_heading_, p_.offset);
     double v = u_d.v, w = u_d.omega;
     const double norm = std::abs(v) / v_max_ + std::abs(w) / w_max_;
     if (norm > 1.0) {
@@ -57,7 +59,7 @@ class Residual {
  private:
   const BandImplicitProblem& p_;
   double v_max_, w_max_, cos_, sin_, contact_;
-  Eigen::Vector2d normal_;
+  Eigen::Vector2d normal_, command_heading_;
   double start_clearance_ = 0.0;
 };
 
@@ -75,30 +77,30 @@ BandImplicitResult solveBandImplicit(const BandImplicitProblem& p, const Diamond
   result.end_clearance = m0;
   result.u_c = residual.term(m0);  // the explicit term, kept when there is no bracket
   if (!(p.h > 0.0) || !(m0 > 0.0)) return result;
-  // Bracket: the distance changes at most by the path length h * speed.
+  // Bracket: the residual is < 0 at hi (the distance changes at most by the path length
+  // h * speed, so no evaluation is needed there) and must be > 0 at 0.
   double lo = 0.0, hi = m0 + p.h * maxOffsetSpeed(diamond, p.offset) + 1e-12;
-  double f_lo = residual(lo), f_hi = residual(hi);
-  if (!(f_lo > 0.0) || !(f_hi < 0.0)) return result;
-  constexpr double kTolerance = 1e-10;  // [m] on the residual and on the bracket
-  int side = 0;
-  double m = lo;
+  if (!(residual(lo) > 0.0)) return result;
+  constexpr double kTolerance = 1e-9;  // [m] on the residual and on the bracket
+  // Secant from two points by the start clearance (sliding along a disk, the end clearance is
+  // close to it), kept inside the bracket: a step leaving it, or a flat secant, bisects.
+  double x0 = std::min(m0, 0.5 * (lo + hi)), x1 = x0 + 1e-4;
+  double f0 = residual(x0);
+  double m = x0;
   for (int iter = 1; iter <= 100; ++iter) {
     result.iterations = iter;
-    m = (f_lo * hi - f_hi * lo) / (f_lo - f_hi);
-    if (!(m > lo && m < hi)) m = 0.5 * (lo + hi);
-    const double f = residual(m);
-    if (std::abs(f) <= kTolerance || hi - lo <= kTolerance) break;
-    if (f > 0.0) {
-      lo = m;
-      f_lo = f;
-      if (side == 1) f_hi *= 0.5;  // Illinois: the same end twice, halve the other's weight
-      side = 1;
-    } else {
-      hi = m;
-      f_hi = f;
-      if (side == -1) f_lo *= 0.5;
-      side = -1;
+    (f0 > 0.0 ? lo : hi) = x0;
+    if (std::abs(f0) <= kTolerance || hi - lo <= kTolerance) {
+      m = x0;
+      break;
     }
+    if (!(x1 > lo && x1 < hi)) x1 = 0.5 * (lo + hi);
+    const double f1 = residual(x1);
+    m = x1;
+    double next = f1 != f0 ? x1 - f1 * (x1 - x0) / (f1 - f0) : 0.5 * (lo + hi);
+    x0 = x1;
+    f0 = f1;
+    x1 = next;
   }
   result.solved = true;
   result.end_clearance = m;

@@ -17,39 +17,48 @@ PerformanceGains gainsOf(const ControllerConfig& config) {
 }
 
 // setImplicitHorizon: replaces the explicit term of the nearest obstacle the offset point
-// can reach within h by its backward-Euler value (band_implicit.h). `others` is the rest of
-// u_r; the other obstacles keep their explicit terms.
-void applyImplicitBand(const ControllerConfig& config, const DiamondSet& diamond, const Pose2& pose,
-                       const Eigen::Vector2d& others, const std::vector<Disk>& obstacles, double h,
-                       ControllerOutput& out) {
+// can reach within h by its backward-Euler value (band_implicit.h), for the command held from
+// `start`. `others` is the rest of u_r; the other obstacles keep their explicit terms.
+void applyImplicitBand(const ControllerConfig& config, const DiamondSet& diamond, const Pose2& start,
+                       double command_theta, const Eigen::Vector2d& others, const std::vector<Disk>& obstacles,
+                       double h, ControllerOutput& out) {
   const double radius = config.effectiveRadius();
+  const Eigen::Vector2d p_start = offsetPoint(start, config.offset);
   const Disk* nearest = nullptr;
-  double nearest_clearance = 0.0;
+  double nearest_clearance = 0.0;  // from where the held command starts
   for (const Disk& o : obstacles) {
-    const double c = (out.p_r - o.center).norm() - radius - o.radius;
+    const double c = (p_start - o.center).norm() - radius - o.radius;
     if (!nearest || c < nearest_clearance) {
       nearest = &o;
       nearest_clearance = c;
     }
   }
-  if (!nearest || nearest_clearance - h * maxOffsetSpeed(diamond, config.offset) > config.delta) return;
-  // Obstacle j's explicit term, as repulsiveTerm added it.
+  if (!nearest) return;
+  // Obstacle j's explicit term, as repulsiveTerm added it at the step's p_r.
+  const double clearance_now = (out.p_r - nearest->center).norm() - radius - nearest->radius;
   Eigen::Vector2d explicit_term = Eigen::Vector2d::Zero();
-  const bool detected = nearest_clearance <= config.delta;
+  const bool detected = clearance_now <= config.delta;
   if (detected) {
-    explicit_term = (1.0 / std::max(nearest_clearance, config.min_margin) - 1.0 / config.delta) *
+    explicit_term = (1.0 / std::max(clearance_now, config.min_margin) - 1.0 / config.delta) *
                     (out.p_r - nearest->center);
   }
+  const Eigen::Vector2d rest = others + config.k_o * (out.u_c - explicit_term);
+  // A held command moves the offset point at the constant speed |(v, r w)|: at most the
+  // diamond's bound, and at most |rest| while obstacle j adds nothing (the diamond only
+  // shrinks u_r). Out of the band's reach within h, the zero term is the implicit one too.
+  const double reach = h * std::min(maxOffsetSpeed(diamond, config.offset), rest.norm());
+  if (nearest_clearance - reach > config.delta) return;
   BandImplicitProblem problem;
-  problem.pose = pose;
+  problem.pose = start;
   problem.offset = config.offset;
-  problem.rest = others + config.k_o * (out.u_c - explicit_term);
+  problem.rest = rest;
   problem.k_o = config.k_o;
   problem.obstacle = *nearest;
   problem.robot_radius = radius;
   problem.delta = config.delta;
   problem.min_margin = config.min_margin;
   problem.h = h;
+  problem.command_theta = command_theta;
   const BandImplicitResult implicit = solveBandImplicit(problem, diamond);
   if (!implicit.solved) return;
   out.u_c += implicit.u_c - explicit_term;
@@ -194,7 +203,8 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   out.min_clearance = avoidance.min_clearance;
   out.active.avoiding = avoidance.detected > 0;
   if (implicit_horizon_ > 0.0 && !config_.moving_obstacles) {
-    applyImplicitBand(config_, diamond_, pose, attraction + config_.k_o * out.u_t, obstacles, implicit_horizon_, out);
+    applyImplicitBand(config_, diamond_, implicit_start_given_ ? implicit_start_ : pose, pose.theta,
+                      attraction + config_.k_o * out.u_t, obstacles, implicit_horizon_, out);
   }
 
   // (9): u_r = k_d T e_hat + v_hat + lambda (rho - rho_inf) e / rho + k_o u_c.

@@ -11,6 +11,7 @@ bool Pose2::isFinite() const { return std::isfinite(x) && std::isfinite(y) && st
 bool Twist2::isFinite() const { return std::isfinite(v) && std::isfinite(omega); }
 
 double wrapAngle(double angle) {
+  if (angle > -M_PI && angle <= M_PI) return angle;  // what remainder() gives here, without its cost
   const double wrapped = std::remainder(angle, 2.0 * M_PI);  // in [-pi, pi]
   return wrapped <= -M_PI ? wrapped + 2.0 * M_PI : wrapped;
 }

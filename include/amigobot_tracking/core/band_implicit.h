@@ -7,15 +7,19 @@
 // the band (the explicit loop needs ~0.5 ms steps there). Here the term of one obstacle j is
 // evaluated at the clearance m' the offset point has at the END of the step:
 //     m' = clearance_j(end of the step holding u(m')),
-//     u(m') = sigma(G(theta)^-1 (rest + k_o c(m') (m' + R + r_j) n)),  c(m') = max(0, 1/max(m', min_margin) - 1/delta)
-// with n the outward normal at the start of the step and `rest` everything else of (9).
+//     u(m') = sigma(G(theta_c)^-1 (rest + k_o c(m') (m' + R + r_j) n)),  c(m') = max(0, 1/max(m', min_margin) - 1/delta)
+// with n the outward normal at the start of the step, `rest` everything else of (9) and
+// theta_c the heading the command is computed with (the pose's, unless told otherwise).
 // The end of the step is the exact unicycle arc under the held command, so the clearance the
 // loop reaches is m' (to the solver's tolerance): with m > 0 at the start, the root is > 0 and
 // the step never ends inside the disk, whatever h. The residual
 // clearance_j(end(m')) - m' is positive at m' = 0 (the floored term pushes straight out)
 // and negative at m + h * (fastest offset-point speed), so a root is bracketed; it is found by
-// the Illinois variant of regula falsi.
+// a secant iteration started at the start clearance (sliding along a disk the end clearance is
+// close to it: 3-5 evaluations), bisecting whenever a secant step would leave the bracket.
 #pragma once
+
+#include <limits>
 
 #include <Eigen/Core>
 
@@ -35,6 +39,9 @@ struct BandImplicitProblem {
   double delta = 0.0;                                 // detection band [m]
   double min_margin = 1e-4;                           // floor of the margin in (10) [m]
   double h = 0.0;                                     // how long the command is held [s]
+  // Heading whose G(theta)^-1 turns u_r into the command in (11); NaN: pose.theta. (The
+  // simulator's midpoint evaluation computes the command at a pose half a step ahead.)
+  double command_theta = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct BandImplicitResult {

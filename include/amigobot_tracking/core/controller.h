@@ -90,7 +90,17 @@ class PerformanceController {
   // at the clearance it has at the end of the step (band_implicit.h), so long steps neither
   // chatter across the detection band nor enter the disk. 0 (the default, and what the robot
   // uses): the paper's explicit (10). Ignored with moving_obstacles.
-  void setImplicitHorizon(double h) { implicit_horizon_ = h; }
+  void setImplicitHorizon(double h) {
+    implicit_horizon_ = h;
+    implicit_start_given_ = false;
+  }
+  // The same when the command will be held from `start`, not from the pose of the step (the
+  // simulator's midpoint evaluation: the step's pose is a prediction half a step ahead).
+  void setImplicitHorizon(double h, const Pose2& start) {
+    implicit_horizon_ = h;
+    implicit_start_ = start;
+    implicit_start_given_ = true;
+  }
   // Swap the parameters between steps, keeping the state (rho is re-clamped to its rules).
   void setConfig(const ControllerConfig& config);
 
@@ -122,6 +132,8 @@ class PerformanceController {
   std::deque<std::pair<double, Twist2>> commands_;
   std::uint64_t envelope_widenings_ = 0;
   double implicit_horizon_ = 0.0;
+  Pose2 implicit_start_;
+  bool implicit_start_given_ = false;
 };
 
 }  // namespace core
