@@ -25,6 +25,8 @@ class Law {
     } else {
       ControllerConfig config = setup.controller;
       config.adaptive_rho = setup.law == ControlLaw::kPaper && config.adaptive_rho;
+      implicit_band_ = setup.integrator != Integrator::kExplicit && !config.moving_obstacles;
+      config.estimator.bdf2 = implicit_band_ && setup.integrator == Integrator::kSecondOrder;
       paper_ = std::make_unique<PerformanceController>(config);
     }
   }
@@ -34,14 +36,19 @@ class Law {
                   : proportional_->step(t, robot.pose, sample, obstacles);
   }
   const DiamondSet& diamond() const { return paper_ ? paper_->diamond() : proportional_->diamond(); }
-  bool implicitBand() const { return paper_ != nullptr; }
+  // The setup's integrator applies (otherwise the loop runs kExplicit).
+  bool implicitBand() const { return implicit_band_; }
   void setImplicitHorizon(double h) {
     if (paper_) paper_->setImplicitHorizon(h);
+  }
+  void setImplicitHorizon(double h, const Pose2& start) {
+    if (paper_) paper_->setImplicitHorizon(h, start);
   }
 
  private:
   std::unique_ptr<PerformanceController> paper_;
   std::unique_ptr<ProportionalController> proportional_;
+  bool implicit_band_ = false;
 };
 
 std::unique_ptr<TargetVelocityFilter> makeFilter(const ClosedLoopSetup& setup) {
@@ -71,6 +78,13 @@ StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const 
                            (pose.position() - o.center).norm() - (c.robot_radius + o.radius)});
   }
   return s;
+}
+
+// The pose after holding u for tau, to second order (chord at the mid heading): what the
+// midpoint command needs, for one sin/cos instead of the exact arc's two.
+Pose2 predictPose(const Pose2& pose, const Twist2& u, double tau) {
+  const double mid = pose.theta + 0.5 * u.omega * tau;
+  return {pose.x + u.v * tau * std::cos(mid), pose.y + u.v * tau * std::sin(mid), pose.theta + u.omega * tau};
 }
 
 }  // namespace
@@ -155,8 +169,10 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     }
     return sample;
   };
-  const bool implicit = setup.integrator == Integrator::kBandImplicit && law.implicitBand();
+  const bool implicit = law.implicitBand();
+  const bool midpoint = implicit && setup.integrator == Integrator::kSecondOrder;
   double last_ratio = 1.0;  // the first step is the fine one
+  Twist2 last_u;            // the command held over the last step
   // Land on the next sample delivery (when samples are sparser than steps) and on the end.
   auto landed = [&](double h) {
     const double delivery = sensor.nextDelivery(t);
@@ -171,13 +187,6 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     const bool last = fixed_step ? k >= fixed_steps : t >= setup.duration - 1e-9;
     moveObstacles(t);
     const ReferenceState ref = reference.at(t);
-    const TargetSample sample = measure(t);
-    PoseSample robot{t, pose};
-    if (pose_sensed) {
-      pose_sensor.record(t, pose);
-      robot = pose_sensor.at(t);
-    }
-    const Eigen::Vector2d p_r = offsetPoint(pose, config.offset);
     // Band-implicit: the step is chosen first (from the last step's |e|/rho; the bands need
     // no short step) and the controller is told how long its command will be held.
     double h = 0.0;
@@ -188,34 +197,35 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       s.distance = std::numeric_limits<double>::infinity();
       h = fixed_step ? setup.control_period : landed(chooseStep(policy, s));
     }
-    law.setImplicitHorizon(h);
-    const ControllerOutput out = law.step(t, robot, sample, obstacles);
+    // Second order: the command is computed at the middle of the step it is held over.
+    const double t_cmd = midpoint ? t + 0.5 * h : t;
+    const TargetSample sample = measure(t_cmd);
+    PoseSample robot{t_cmd, t_cmd > t ? predictPose(pose, last_u, t_cmd - t) : pose};
+    if (pose_sensed) {
+      pose_sensor.record(t, pose);
+      robot = pose_sensor.at(t_cmd);
+    }
+    const Eigen::Vector2d p_r = offsetPoint(pose, config.offset);
+    if (t_cmd > t) law.setImplicitHorizon(h, pose);
+    else law.setImplicitHorizon(h);
+    const ControllerOutput out = law.step(t_cmd, robot, sample, obstacles);
     if (pose_sensed) pose_sensor.hold(out.u);
     last_ratio = out.rho > 0.0 ? out.e.norm() / out.rho : 0.0;
+    last_u = out.u;
 
     if (!implicit && !last) {
       h = fixed_step ? setup.control_period
                      : landed(chooseStep(policy, situationOf(out, pose, p_r, config, obstacles, max_speed)));
     }
-    ClosedLoopStep step;
-    step.t = t;
-    step.h = h;
-    step.pose = pose;
-    step.reference = ref;
-    step.sample = sample;
-    step.pose_sample = robot;
-    step.output = out;
-    step.p_r_true = p_r;
-    step.clearance_offset = clearance(p_r, config.robot_radius, obstacles);
-    step.clearance_body = clearance(pose.position(), config.robot_radius, obstacles);
-    step.obstacles = &obstacles;
+    const double clearance_offset = clearance(p_r, config.robot_radius, obstacles);
+    const double clearance_body = clearance(pose.position(), config.robot_radius, obstacles);
 
     ++summary.steps;
     if (!out.valid) ++summary.invalid_steps;
     if (out.rho > 0.0) summary.max_error_ratio = std::max(summary.max_error_ratio, out.e.norm() / out.rho);
     summary.final_error = out.e.norm();
     summary.min_clearance_offset = std::min(summary.min_clearance_offset, out.min_clearance);
-    summary.min_clearance_body = std::min(summary.min_clearance_body, step.clearance_body);
+    summary.min_clearance_body = std::min(summary.min_clearance_body, clearance_body);
     if (!law.diamond().contains(out.u, kDiamondTolerance)) ++summary.diamond_violations;
     if (out.active.envelope_widened) ++summary.envelope_widenings;
     if (out.active.saturated) ++summary.saturated_steps;
@@ -226,10 +236,10 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     m.rho = out.rho;
     m.u = out.u;
     m.diamond_norm = law.diamond().normalizedNorm(out.u);
-    m.clearance_offset = step.clearance_offset;
-    m.clearance_body = step.clearance_body;
-    m.velocity_error = ref.velocity - out.v_hat;
-    m.estimator_settled = t >= setup.estimator_settle_time;
+    m.clearance_offset = clearance_offset;
+    m.clearance_body = clearance_body;
+    m.velocity_error = (t_cmd > t ? reference.at(t_cmd) : ref).velocity - out.v_hat;
+    m.estimator_settled = t_cmd >= setup.estimator_settle_time;
     m.valid = out.valid;
     m.saturated = out.active.saturated;
     m.envelope_widened = out.active.envelope_widened;
@@ -241,7 +251,21 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     m.passing_side = out.passing_side;
     metrics.add(m);
 
-    if (observer) observer(step);
+    if (observer) {  // (filled only for an observer: the benchmark has none)
+      ClosedLoopStep step;
+      step.t = t;
+      step.h = h;
+      step.pose = pose;
+      step.reference = ref;
+      step.sample = sample;
+      step.pose_sample = robot;
+      step.output = out;
+      step.p_r_true = p_r;
+      step.clearance_offset = clearance_offset;
+      step.clearance_body = clearance_body;
+      step.obstacles = &obstacles;
+      observer(step);
+    }
     if (last) break;
     pose = integrateUnicycle(pose, out.u, h);
     if (!fixed_step) t += h;

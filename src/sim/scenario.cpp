@@ -332,11 +332,17 @@ core::VelocitySource parseVelocitySource(const std::string& name) {
 core::Integrator parseIntegrator(const std::string& name) {
   if (name == "explicit") return core::Integrator::kExplicit;
   if (name == "band_implicit") return core::Integrator::kBandImplicit;
-  throw std::invalid_argument("unknown integrator '" + name + "' (explicit, band_implicit)");
+  if (name == "second_order") return core::Integrator::kSecondOrder;
+  throw std::invalid_argument("unknown integrator '" + name + "' (explicit, band_implicit, second_order)");
 }
 
 std::string toString(core::Integrator integrator) {
-  return integrator == core::Integrator::kBandImplicit ? "band_implicit" : "explicit";
+  switch (integrator) {
+    case core::Integrator::kExplicit: return "explicit";
+    case core::Integrator::kBandImplicit: return "band_implicit";
+    case core::Integrator::kSecondOrder: return "second_order";
+  }
+  return "?";
 }
 
 std::string toString(core::ControlLaw law) {

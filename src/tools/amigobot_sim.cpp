@@ -44,7 +44,7 @@ const char* kUsage =
     "  --pose-period S                          robot pose sampling period [s] (localization.sample_period)\n"
     "  --obstacle-speed S                       Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s\n"
     "  --control-period S                       the fine step [s] (simulation.control_period)\n"
-    "  --integrator explicit|band_implicit      how the detection band is stepped (simulation.integrator)\n"
+    "  --integrator explicit|band_implicit|second_order  how steps are formed (simulation.integrator)\n"
     "  --log-period S                           CSV row spacing [s]; 0 = every step (simulation.log_period)\n"
     "  --no-plot                                write CSV and JSON only\n"
     "  --monte-carlo N --seed S                 N randomised variants; writes DIR/monte_carlo.json\n"

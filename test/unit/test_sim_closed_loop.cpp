@@ -251,6 +251,24 @@ TEST(SimFidelity, ShippedRoseSettingsAgreeWithTheFineReference) {
   expectFaithful(m, ref, 0.03, "shipped settings");
 }
 
+// The fast settings of `make bench` (Makefile: --integrator second_order --control-period 0.004
+// --max-step 0.01): ~750 steps for the period, 5x fewer than the shipped explicit settings, and
+// closer to the reference than they are.
+TEST(SimFidelity, SecondOrderRoseSettingsAgreeWithTheFineReference) {
+  sim::Scenario fast = shipped("paper_5_2_rose", 6.2832);
+  sim::Scenario fine = fast;
+  fine.setup.control_period = 62.5e-6;
+  fine.setup.max_step = 0.0;
+  const core::RunMetrics ref = sim::runScenario(fine, false).summary.metrics;
+  fast.setup.integrator = core::Integrator::kSecondOrder;
+  fast.setup.control_period = 0.004;
+  fast.setup.max_step = 0.01;
+  const core::RunMetrics m = sim::runScenario(fast, false).summary.metrics;
+  EXPECT_LT(m.steps, 800u);
+  EXPECT_EQ(m.envelope_widenings, 0u);
+  expectFaithful(m, ref, 0.02, "second_order 4-10 ms");
+}
+
 // The band-implicit integrator stays faithful at a step where the explicit one chatters
 // across the band (1 ms: 16 % on ASE, 12 % more control energy) or enters the disk (2 ms).
 TEST(SimFidelity, BandImplicitStaysFaithfulWhereTheExplicitStepChatters) {

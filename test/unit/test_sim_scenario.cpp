@@ -93,7 +93,8 @@ TEST(SimScenario, ReadsOptionalKeys) {
 
 TEST(SimScenario, ReadsTheIntegrator) {
   for (const auto& [name, integrator] : {std::pair<const char*, core::Integrator>{"explicit", core::Integrator::kExplicit},
-                                         {"band_implicit", core::Integrator::kBandImplicit}}) {
+                                         {"band_implicit", core::Integrator::kBandImplicit},
+                                         {"second_order", core::Integrator::kSecondOrder}}) {
     const sim::Scenario s = sim::parseScenario(
         replaced(kMinimum, "{duration: 6.283}", std::string("{duration: 6.283, integrator: ") + name + "}"), "i.yaml");
     EXPECT_EQ(s.setup.integrator, integrator) << name;

@@ -39,7 +39,12 @@ enum class Integrator {
   kBandImplicit,  // the same, but the repulsive term of the nearest reachable obstacle is
                   // backward-Euler over the step (band_implicit.h), so the variable step stays
                   // long in the bands too. The paper and fixed-rho laws only; the proportional
-                  // baseline falls back to kExplicit.
+                  // baseline, and moving obstacles (whose term stays explicit), fall back to kExplicit.
+  kSecondOrder,   // kBandImplicit, and each command is computed at the middle of its step (the
+                  // pose predicted there with the previous command, the target sampled there)
+                  // with the estimator stepping BDF2 (estimator.h): the held command, the
+                  // estimator and the averages become second order in the step instead of first.
+                  // Falls back to kExplicit where kBandImplicit does.
 };
 
 struct BaselineParams {
