@@ -169,6 +169,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     }
     return sample;
   };
+  const bool ideal_sensor = !filter && sensor_config.ideal();
   const bool implicit = law.implicitBand();
   const bool midpoint = implicit && setup.integrator == Integrator::kSecondOrder;
   double last_ratio = 1.0;  // the first step is the fine one
@@ -199,7 +200,9 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     }
     // Second order: the command is computed at the middle of the step it is held over.
     const double t_cmd = midpoint ? t + 0.5 * h : t;
-    const TargetSample sample = measure(t_cmd);
+    const ReferenceState ref_cmd = t_cmd > t ? reference.at(t_cmd) : ref;
+    // An ideal sensor's sample is the reference just evaluated (what sensor.at would return).
+    const TargetSample sample = ideal_sensor ? TargetSample{t_cmd, ref_cmd.position} : measure(t_cmd);
     PoseSample robot{t_cmd, t_cmd > t ? predictPose(pose, last_u, t_cmd - t) : pose};
     if (pose_sensed) {
       pose_sensor.record(t, pose);
@@ -238,7 +241,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     m.diamond_norm = law.diamond().normalizedNorm(out.u);
     m.clearance_offset = clearance_offset;
     m.clearance_body = clearance_body;
-    m.velocity_error = (t_cmd > t ? reference.at(t_cmd) : ref).velocity - out.v_hat;
+    m.velocity_error = ref_cmd.velocity - out.v_hat;
     m.estimator_settled = t_cmd >= setup.estimator_settle_time;
     m.valid = out.valid;
     m.saturated = out.active.saturated;

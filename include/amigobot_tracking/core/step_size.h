@@ -7,7 +7,9 @@
 // width delta: near obstacles the loop falls back to the fine step. The step also shrinks
 // linearly from max_step at |e|/rho <= comfortable_ratio to min_step at tight_ratio, so the
 // performance bound is resolved finely whenever it is close to active. Inside a detection
-// band, where (10) is stiff (1/margin), only the fine step is used.
+// band, where (10) is stiff (1/margin), only the fine step is used. (That is the explicit
+// integrator's situation; band_implicit and second_order, closed_loop.h, treat the band
+// implicitly and pass only |e|/rho.)
 #pragma once
 
 namespace amigobot_tracking {

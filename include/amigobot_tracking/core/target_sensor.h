@@ -32,6 +32,8 @@ struct TargetSensorConfig {
 
   // Empty when valid, otherwise "field: reason".
   std::string validate() const;
+  // Every sample is the reference at the time asked, exactly (no period, noise, delay or jump).
+  bool ideal() const { return sample_period <= 0.0 && noise_std <= 0.0 && delay <= 0.0 && jumps.empty(); }
 };
 
 class TargetSensor {
