@@ -315,53 +315,51 @@ std::unique_ptr<core::Reference> Scenario::makeReference() const {
   return std::make_unique<core::SplineReference>(r.waypoints, r.duration);
 }
 
-core::ControlLaw parseControlLaw(const std::string& name) {
-  if (name == "paper") return core::ControlLaw::kPaper;
-  if (name == "fixed_rho") return core::ControlLaw::kFixedRho;
-  if (name == "proportional") return core::ControlLaw::kProportional;
-  throw std::invalid_argument("unknown controller variant '" + name + "' (paper, fixed_rho, proportional)");
-}
+namespace {
 
-core::VelocitySource parseVelocitySource(const std::string& name) {
-  if (name == "paper") return core::VelocitySource::kPaperEstimator;
-  if (name == "finite_difference") return core::VelocitySource::kFiniteDifference;
-  if (name == "kalman") return core::VelocitySource::kKalman;
-  throw std::invalid_argument("unknown estimator '" + name + "' (paper, finite_difference, kalman)");
-}
+// The YAML names of an enumeration, in the order the messages list them.
+template <typename E>
+struct Named {
+  const char* name;
+  E value;
+};
 
-core::Integrator parseIntegrator(const std::string& name) {
-  if (name == "explicit") return core::Integrator::kExplicit;
-  if (name == "band_implicit") return core::Integrator::kBandImplicit;
-  if (name == "second_order") return core::Integrator::kSecondOrder;
-  throw std::invalid_argument("unknown integrator '" + name + "' (explicit, band_implicit, second_order)");
-}
+constexpr Named<core::ControlLaw> kLaws[] = {
+    {"paper", core::ControlLaw::kPaper}, {"fixed_rho", core::ControlLaw::kFixedRho},
+    {"proportional", core::ControlLaw::kProportional}};
+constexpr Named<core::VelocitySource> kSources[] = {
+    {"paper", core::VelocitySource::kPaperEstimator}, {"finite_difference", core::VelocitySource::kFiniteDifference},
+    {"kalman", core::VelocitySource::kKalman}};
+constexpr Named<core::Integrator> kIntegrators[] = {
+    {"explicit", core::Integrator::kExplicit}, {"band_implicit", core::Integrator::kBandImplicit},
+    {"second_order", core::Integrator::kSecondOrder}};
 
-std::string toString(core::Integrator integrator) {
-  switch (integrator) {
-    case core::Integrator::kExplicit: return "explicit";
-    case core::Integrator::kBandImplicit: return "band_implicit";
-    case core::Integrator::kSecondOrder: return "second_order";
+// Throws std::invalid_argument("unknown WHAT 'name' (choice, choice, ...)").
+template <typename E, size_t N>
+E byName(const Named<E> (&table)[N], const std::string& name, const std::string& what) {
+  std::string choices;
+  for (const Named<E>& n : table) {
+    if (name == n.name) return n.value;
+    choices += (choices.empty() ? "" : ", ") + std::string(n.name);
   }
+  throw std::invalid_argument("unknown " + what + " '" + name + "' (" + choices + ")");
+}
+
+template <typename E, size_t N>
+std::string nameOf(const Named<E> (&table)[N], E value) {
+  for (const Named<E>& n : table)
+    if (n.value == value) return n.name;
   return "?";
 }
 
-std::string toString(core::ControlLaw law) {
-  switch (law) {
-    case core::ControlLaw::kPaper: return "paper";
-    case core::ControlLaw::kFixedRho: return "fixed_rho";
-    case core::ControlLaw::kProportional: return "proportional";
-  }
-  return "?";
-}
+}  // namespace
 
-std::string toString(core::VelocitySource source) {
-  switch (source) {
-    case core::VelocitySource::kPaperEstimator: return "paper";
-    case core::VelocitySource::kFiniteDifference: return "finite_difference";
-    case core::VelocitySource::kKalman: return "kalman";
-  }
-  return "?";
-}
+core::ControlLaw parseControlLaw(const std::string& name) { return byName(kLaws, name, "controller variant"); }
+core::VelocitySource parseVelocitySource(const std::string& name) { return byName(kSources, name, "estimator"); }
+core::Integrator parseIntegrator(const std::string& name) { return byName(kIntegrators, name, "integrator"); }
+std::string toString(core::ControlLaw law) { return nameOf(kLaws, law); }
+std::string toString(core::VelocitySource source) { return nameOf(kSources, source); }
+std::string toString(core::Integrator integrator) { return nameOf(kIntegrators, integrator); }
 
 // The YAML key of a field named first in a validate() message.
 static std::string keyOf(const std::string& message) {
