@@ -4,7 +4,7 @@
 # test/e2e runs one of its cases. Ports: scripts/with_free_ports.py appends NAME:=PORT for
 # each port arg the .test file declares, just before rostest starts.
 find_package(rostest REQUIRED)
-add_executable(test_e2e EXCLUDE_FROM_ALL test/e2e/test_e2e.cpp)
+add_executable(test_e2e EXCLUDE_FROM_ALL test/e2e/test_e2e.cpp test/e2e/test_two_robots.cpp)
 target_link_libraries(test_e2e amigobot_tracking_ros_sim ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 target_include_directories(test_e2e SYSTEM PRIVATE ${GTEST_INCLUDE_DIRS})
 target_include_directories(test_e2e PRIVATE test/aria)  # emulator_process.h: waitFor
@@ -33,3 +33,4 @@ amigobot_add_e2e_test(test/e2e/watchdog.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/target_loss.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/bad_parameters.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/link_loss.test tcp_port status_port)
+amigobot_add_e2e_test(test/e2e/two_robots.test target_tcp_port target_status_port tracker_tcp_port tracker_status_port)

@@ -7,6 +7,8 @@ endfunction()
 
 amigobot_add_unit_test(test_diamond test/unit/test_diamond.cpp)
 target_link_libraries(test_diamond amigobot_tracking_core)
+amigobot_add_unit_test(test_resume_ramp test/unit/test_resume_ramp.cpp)
+target_link_libraries(test_resume_ramp amigobot_tracking_core)
 amigobot_add_unit_test(test_estimator test/unit/test_estimator.cpp)
 target_link_libraries(test_estimator amigobot_tracking_core)
 amigobot_add_unit_test(test_offset_point test/unit/test_offset_point.cpp)

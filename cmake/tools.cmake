@@ -9,3 +9,6 @@ endfunction()
 amigobot_add_tool(amigobot_sim src/tools/amigobot_sim.cpp)
 target_link_libraries(amigobot_sim amigobot_tracking_sim)
 target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/plot_run.py")
+
+# ROS tool scripts: `rosrun amigobot_tracking scripted_teleop.py` (roslaunch finds them in scripts/).
+catkin_install_python(PROGRAMS scripts/scripted_teleop.py DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

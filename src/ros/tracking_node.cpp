@@ -184,7 +184,31 @@ void TrackingNode::updateScanObstaclesLocked() {
   }
 }
 
-void TrackingNode::publishZeroLocked() { cmd_pub_.publish(geometry_msgs::Twist()); }
+void TrackingNode::publishZeroLocked() {
+  cmd_pub_.publish(geometry_msgs::Twist());
+  last_command_ = {};
+  last_command_time_ = ros::Time::now();
+  ramping_ = true;
+}
+
+core::Twist2 TrackingNode::publishCommandLocked(const ros::Time& now, const core::Twist2& u) {
+  core::Twist2 sent = u;
+  if (ramping_) {
+    // Time since the last command, at most one period: a late cycle does not earn a bigger
+    // step than the period allows, and one that catches up right after earns less.
+    const double period = 1.0 / node_config_.control_rate;
+    const double dt = last_command_time_.isZero() ? period
+                                                  : std::clamp((now - last_command_time_).toSec(), 0.0, period);
+    const core::RampStep step =
+        core::rampTowards(u, last_command_, {node_config_.resume_v_accel, node_config_.resume_w_accel}, dt);
+    sent = step.u;
+    ramping_ = step.limited;
+  }
+  cmd_pub_.publish(toTwist(sent));
+  last_command_ = sent;
+  last_command_time_ = now;
+  return sent;
+}
 
 void TrackingNode::onTimer(const ros::TimerEvent&) { controlCycle(ros::Time::now()); }
 
@@ -292,7 +316,8 @@ bool TrackingNode::stepLocked(const ros::Time& now, const Lookup& pose, const Lo
     ROS_ERROR_THROTTLE(2.0, "tracking: controller command outside the diamond; sent zero");
     return false;
   }
-  cmd_pub_.publish(toTwist(out->u));
+  // The state and markers show what was sent: u is the ramped command while ramping.
+  out->u = publishCommandLocked(now, out->u);
   status_ = "tracking";
   ++window_steps_;
   if (out->active.saturated) ++window_saturated_;
@@ -370,6 +395,7 @@ void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status)
   status.add("target age [s]", last_target_age_);
   status.add("scan age [s]", scan_age_);
   status.add("saturation ratio", saturation_ratio_);
+  status.add("resume ramp on", enabled_ && ramping_);
   status.add("rho [m]", controller_.rho());
   status.add("|e| [m]", last_output_.valid ? last_output_.e.norm() : 0.0);
   status.add("min clearance [m]", last_output_.valid ? last_output_.min_clearance : -1.0);
@@ -392,6 +418,8 @@ bool TrackingNode::onEnable(std_srvs::Trigger::Request&, std_srvs::Trigger::Resp
     restart_rho_ = true;
     lost_ = false;
     enabled_ = true;
+    ramping_ = true;  // the robot is taken as standing: the command leaves zero on the ramp
+    last_command_ = {};
   }
   res.success = true;
   res.message = "tracking enabled";

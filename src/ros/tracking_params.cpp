@@ -96,6 +96,10 @@ std::string TrackingNodeConfig::validate() const {
     err << "robot_w_max must be a finite number > 0, got " << robot_w_max;
   } else if (!(std::isfinite(target_exclusion_radius) && target_exclusion_radius >= 0.0)) {
     err << "target_exclusion_radius must be a finite number >= 0 (0 = off), got " << target_exclusion_radius;
+  } else if (!positiveFinite(resume_v_accel)) {
+    err << "resume_v_accel must be a finite number > 0, got " << resume_v_accel;
+  } else if (!positiveFinite(resume_w_accel)) {
+    err << "resume_w_accel must be a finite number > 0, got " << resume_w_accel;
   }
   return err.str();
 }
@@ -135,7 +139,9 @@ std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* c) {
                   readParam(pnh, "clicked_point_radius", &c->clicked_point_radius, &error) &&
                   readParam(pnh, "robot_v_max", &c->robot_v_max, &error) &&
                   readParam(pnh, "robot_w_max", &c->robot_w_max, &error) &&
-                  readParam(pnh, "target_exclusion_radius", &c->target_exclusion_radius, &error);
+                  readParam(pnh, "target_exclusion_radius", &c->target_exclusion_radius, &error) &&
+                  readParam(pnh, "resume_v_accel", &c->resume_v_accel, &error) &&
+                  readParam(pnh, "resume_w_accel", &c->resume_w_accel, &error);
   if (!ok) return error;
   const std::string invalid = c->validate();
   return invalid.empty() ? "" : "parameter ~" + invalid;

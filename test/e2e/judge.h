@@ -87,6 +87,23 @@ inline std::vector<WireCommand> readCommandLog(const std::string& path) {
   return commands;
 }
 
+// The setpoint pairs the robot held: the driver sends VEL and RVEL back to back, which the
+// journal records as two lines a few ms apart (the first a half-updated pair); lines closer
+// than `merge` [s] (below the driver's 50 ms min_command_interval) are one pair, the last.
+inline std::vector<WireCommand> setpointPairs(const std::vector<WireCommand>& commands, double merge = 0.02) {
+  std::vector<WireCommand> pairs;
+  for (const auto& c : commands) {
+    if (!pairs.empty() && c.t - pairs.back().t < merge) {
+      const double first_t = pairs.back().t;
+      pairs.back() = c;
+      pairs.back().t = first_t;
+    } else {
+      pairs.push_back(c);
+    }
+  }
+  return pairs;
+}
+
 // Emulator time of the first zero setpoint pair (0, 0) held at or after `since`; -1 if none.
 inline double firstZeroSetpoint(const std::vector<WireCommand>& commands, double since) {
   for (const auto& c : commands) {

@@ -298,6 +298,14 @@ TEST(TrackingNodelet, ZeroAfterTheTargetTfStopsAndGentleRestart) {
   for (const auto& c : world->commandsSince(since)) {
     EXPECT_LE(diamondNorm(c.twist, param("tracking/v_max"), param("tracking/w_max")), 1.0 + 1e-9);
   }
+  // The resume ramp: the first motion after the restart is at most one control period
+  // (1/20 s) of the default accelerations (0.3 m/s^2, 1.745 rad/s^2) away from zero.
+  for (const auto& c : world->commandsSince(ros::WallTime(resumed.toSec()))) {
+    if (isZero(c.twist)) continue;
+    EXPECT_LE(std::abs(c.twist.linear.x), 0.3 / 20.0 + 1e-9) << c.twist;
+    EXPECT_LE(std::abs(c.twist.angular.z), 1.745 / 20.0 + 1e-9) << c.twist;
+    break;
+  }
   ASSERT_TRUE(trigger("tracking/disable"));
 }
 

@@ -26,6 +26,8 @@ TEST(TrackingParams, ValidateNamesTheBadField) {
       {"clicked_point_radius", [](TrackingNodeConfig& c) { c.clicked_point_radius = 0.0; }},
       {"robot_v_max", [](TrackingNodeConfig& c) { c.robot_v_max = std::numeric_limits<double>::quiet_NaN(); }},
       {"robot_w_max", [](TrackingNodeConfig& c) { c.robot_w_max = -2.0; }},
+      {"resume_v_accel", [](TrackingNodeConfig& c) { c.resume_v_accel = 0.0; }},
+      {"resume_w_accel", [](TrackingNodeConfig& c) { c.resume_w_accel = std::numeric_limits<double>::quiet_NaN(); }},
   };
   for (const Case& test : cases) {
     TrackingNodeConfig config;

@@ -12,6 +12,11 @@
 // target sample with zero velocity (no spike from differentiating across the gap), and
 // rho restarts at max(rho_0, 2 |e|), so |e|/rho <= 1/2 and T(|e|/rho) <= 0.55 (no
 // saturating burst from an envelope pressed against |e|); rho then decays at lambda.
+// Every zero command of the nodelet's own (stale inputs, disable, a refused step) is
+// immediate and re-arms the resume ramp (core/resume_ramp.h): from the next step the
+// command leaves zero by at most resume_v_accel, resume_w_accel times the time since the
+// last command (capped at one control period), scaled as a whole (direction and diamond
+// kept), until the controller's command is within reach; then it passes unchanged.
 #pragma once
 
 #include <chrono>
@@ -38,6 +43,7 @@
 #include "amigobot_tracking/VirtualObstacle.h"
 #include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/core/obstacle_tracker.h"
+#include "amigobot_tracking/core/resume_ramp.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 #include "amigobot_tracking/core/virtual_obstacles.h"
 #include "amigobot_tracking/ros/tracking_params.h"
@@ -106,7 +112,9 @@ class TrackingNode {
   void publishMarkersLocked(const ros::Time& now, const Lookup& pose, bool have_output,
                             const core::ControllerOutput& out);
   void updateStatsLocked(const ros::Time& now, std::chrono::steady_clock::time_point wall_start);
-  void publishZeroLocked();
+  void publishZeroLocked();  // immediate stop; re-arms the resume ramp
+  // Publishes the controller's command through the resume ramp; returns what was sent.
+  core::Twist2 publishCommandLocked(const ros::Time& now, const core::Twist2& u);
   // With state_mutex_ held (tracking_virtual_obstacles.cpp): latched array + interactive markers.
   void publishVirtualObstaclesLocked(bool refresh_interactive = true);
 
@@ -140,6 +148,9 @@ class TrackingNode {
   bool enabled_ = false;
   bool lost_ = false;          // inputs were stale: reset and restart on the next fresh step
   bool restart_rho_ = false;   // apply the resume rule for rho on the next step
+  bool ramping_ = true;        // the resume ramp is on (from zero, after a stop)
+  core::Twist2 last_command_;  // last command published (zero after a stop)
+  ros::Time last_command_time_;  // when (zero: never)
   std::string status_ = "disabled";
   ros::Time epoch_;
   core::ControllerOutput last_output_;

@@ -33,6 +33,11 @@ struct TrackingNodeConfig {
   // [m] laser disks whose centre is this close to the target are the target itself (another
   // robot being followed), not obstacles; 0 = off. Never applied to virtual obstacles.
   double target_exclusion_radius = 0.0;
+  // Resume ramp (core/resume_ramp.h): after a zero command of the nodelet's own (inputs lost,
+  // disabled, a refused step) the command grows by at most these per second; stops are
+  // immediate. Defaults: the AmigoBot firmware's accelerations (config/robots/amigo.yaml).
+  double resume_v_accel = 0.3;    // [m/s^2]
+  double resume_w_accel = 1.745;  // [rad/s^2]
 
   std::string validate() const;
 };

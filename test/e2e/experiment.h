@@ -1,0 +1,23 @@
+// Values the end-to-end tests judge against, shared by their cases (test_e2e.cpp,
+// test_two_robots.cpp): the paper's experiment gains (config/controller_experiment.yaml,
+// Section 5.3), the robot's, and the tolerances their comments justify.
+#pragma once
+
+namespace e2e {
+
+constexpr double kRhoInf = 0.1;        // [m] steady-state bound of |e|
+constexpr double kVMax = 0.3;          // [m/s] diamond half-width in v
+constexpr double kWMax = 0.8;          // [rad/s] diamond half-width in omega
+constexpr double kSipPeriod = 0.1;     // [s] AmigoBot SIP cycle
+constexpr double kCmdVelTimeout = 0.6; // [s] driver's cmd_vel_timeout (robot.launch)
+// [m] offset r of the controlled point: tracking.yaml's fallback, which the controller uses
+// because the shipped URDF (urdf_with_laser.py) has no control_point link.
+constexpr double kOffset = 0.3;
+
+// How far the controller's view of p_r may be from the truth: its robot pose is the driver's
+// odometry (one SIP, 0.1 s, old at most) corrected by ground_truth_localization's map -> odom
+// (20 Hz, 0.05 s), during which p_r moves at most max(v_max, r w_max) = 0.3 m/s: 0.045 m; the
+// judge's own skew (state callback vs status query, tf's latest target) adds < 0.005 m.
+constexpr double kPoseLagTolerance = 0.05;  // [m]
+
+}  // namespace e2e
