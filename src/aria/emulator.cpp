@@ -88,7 +88,9 @@ void RobotEmulator::setTarget(double v, double w) {
 
 std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now) {
   ++counters_.packets;
-  advance(now);
+  // Kinematics only: a SIP falling due now is left to the next advance() (the server calls
+  // it right after the packets it read), not made here and lost with the reply.
+  stepTo(now);
   const std::optional<int> arg = intArgument(packet);
   const int value = arg.value_or(0);
   if (!open_) {
@@ -262,7 +264,7 @@ void RobotEmulator::stepPhysics(double dt) {
   odo_th_ = odo.theta;
 }
 
-std::vector<std::uint8_t> RobotEmulator::advance(double now) {
+void RobotEmulator::stepTo(double now) {
   if (last_time_ < 0.0) last_time_ = now;
   // The watchdog is checked every physics step, so a long advance() stops the robot at the
   // right moment rather than at the end.
@@ -273,6 +275,10 @@ std::vector<std::uint8_t> RobotEmulator::advance(double now) {
     last_time_ += dt;
   }
   checkWatchdog(now);
+}
+
+std::vector<std::uint8_t> RobotEmulator::advance(double now) {
+  stepTo(now);
   if (!open_) return {};
   if (now < next_sip_) return {};
   next_sip_ += options_.robot.sip_cycle;

@@ -77,6 +77,31 @@ TEST(AriaEmulator, SipsEveryCycleWithTheModelsTail) {
   }
 }
 
+// A command arriving when a SIP is due must not swallow it: the server hands every packet
+// to handle() and then calls advance(), and the SIP was made inside handle() and dropped
+// with the (empty) reply, so odom lost a SIP whenever a command woke the server late (the
+// e2e rates test saw 7.5 Hz on a loaded machine). Here every SIP falls due just before a
+// VEL + RVEL pair, as when the driver sends its setpoints at 20 Hz.
+TEST(AriaEmulator, ACommandWhenASipIsDueDoesNotSwallowIt) {
+  RobotEmulator robot({});
+  openRobot(robot, 0.0);
+  ASSERT_TRUE(sipAt(robot, 0.0)) << "first SIP at OPEN";
+  robot.handle(packetOf(commandPacket(Command::kEnable, 1)), 0.0);
+  int sips = 0;
+  for (int k = 1; k <= 100; ++k) {
+    const double t = 0.1 * k + 0.003;  // 3 ms after the SIP fell due
+    EXPECT_TRUE(robot.handle(packetOf(commandPacket(Command::kVel, 100)), t).empty()) << "VEL has no reply";
+    EXPECT_TRUE(robot.handle(packetOf(commandPacket(Command::kRVel, 10)), t).empty()) << "RVEL has no reply";
+    if (sipAt(robot, t)) {
+      ++sips;
+    } else {
+      ADD_FAILURE() << "SIP due at " << 0.1 * k << " s not sent by advance(" << t << ")";
+    }
+  }
+  EXPECT_EQ(sips, 100);
+  EXPECT_EQ(robot.counters().sips_sent, 101u) << "every SIP counted as sent was returned";
+}
+
 TEST(AriaEmulator, Vel2DrivesTheWheelsItEncodes) {
   RobotEmulator robot({});
   openRobot(robot, 0.0);

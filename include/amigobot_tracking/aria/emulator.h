@@ -48,7 +48,8 @@ class RobotEmulator {
  public:
   explicit RobotEmulator(EmulatorOptions options);
 
-  // A complete client packet at time `now` [s]; returns the bytes to send back.
+  // A complete client packet at time `now` [s]; returns the bytes to send back (its reply;
+  // SIPs come only from advance(), even when one is due at `now`).
   std::vector<std::uint8_t> handle(const Packet& packet, double now);
   // Advances the kinematics to `now`; returns a SIP when one is due (else empty).
   std::vector<std::uint8_t> advance(double now);
@@ -76,6 +77,8 @@ class RobotEmulator {
  private:
   void journal(double now, const char* command) const;
   void stepPhysics(double dt);
+  // Physics and watchdog up to `now`, without sending anything.
+  void stepTo(double now);
   void checkWatchdog(double now);
   void close();
   std::vector<std::uint8_t> makeSip();
