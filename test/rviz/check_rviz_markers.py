@@ -52,6 +52,22 @@ def classes(png):
     }
 
 
+def shoot_until(display, png, done, timeout):
+    """Screenshots into png every second until rviz's view is on the screen and done(counts)
+    holds, or timeout [s] passes; returns the last counts (raises if no view ever showed)."""
+    deadline = time.time() + timeout
+    while True:
+        sp.screenshot(display, png)
+        try:
+            counts = classes(png)
+            if done(counts) or time.time() > deadline:
+                return counts
+        except RuntimeError:
+            if time.time() > deadline:
+                raise
+        time.sleep(1.0)
+
+
 def run(args):
     out = os.path.abspath(args.out or tempfile.mkdtemp(prefix="rviz_check_"))
     os.makedirs(out, exist_ok=True)
@@ -73,21 +89,22 @@ def run(args):
             if time.time() > deadline or launch.poll() is not None:
                 raise RuntimeError("sim.launch did not come up (sim_launch.log)")
             time.sleep(0.5)
-        time.sleep(12)  # rviz: software GL start-up, first frames
+        # rviz with software GL starts in 10-60 s depending on the machine's load: poll.
         baseline = os.path.join(out, "baseline.png")
-        sp.screenshot(env["DISPLAY"], baseline)
+        shoot_until(env["DISPLAY"], baseline, lambda counts: True, 90)
+        time.sleep(2)  # first frames with the fixed frame resolved
+        before = shoot_until(env["DISPLAY"], baseline, lambda counts: True, 30)
         if call(["rosservice", "call", "/tracking/enable"]).returncode != 0:
             raise RuntimeError("tracking/enable failed")
         res = call(["rostopic", "pub", "-1", "/tracking/virtual_obstacle", "amigobot_tracking/VirtualObstacle",
                     VIRTUAL])
         if res.returncode != 0:
             raise RuntimeError("cannot publish the virtual obstacle: " + res.stderr)
-        time.sleep(6)
         shot = os.path.join(out, "tracking.png")
-        sp.screenshot(env["DISPLAY"], shot)
+        after = shoot_until(env["DISPLAY"], shot,
+                            lambda counts: all(counts[n] >= NEEDED[n] for n in NEEDED), 60)
     finally:
         procs.stop()
-    before, after = classes(baseline), classes(shot)
     failures = []
     for name in NEEDED:
         print(f"{name}: {before[name]} px before, {after[name]} px with tracking "
