@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/small_angle.h"
 
 namespace amigobot_tracking {
 namespace core {
@@ -13,10 +13,22 @@ namespace {
 class Residual {
  public:
   Residual(const BandImplicitProblem& p, const DiamondSet& diamond)
-      : p_(p), v_max_(diamond.vMax()), w_max_(diamond.wMax()), cos_(std::cos(p.pose.theta)),
-        sin_(std::sin(p.pose.theta)), contact_(p.robot_radius + p.obstacle.radius) {
-    const double theta_c = std::isnan(p.command_theta) ? p.pose.theta : p.command_theta;
-    command_heading_ = Eigen::Vector2d(std::cos(theta_c), std::sin(theta_c));
+      : p_(p), inv_v_max_(1.0 / diamond.vMax()), inv_w_max_(1.0 / diamond.wMax()), inv_offset_(1.0 / p.offset),
+        inv_delta_(1.0 / p.delta), contact_(p.robot_radius + p.obstacle.radius) {
+    if (std::isnan(p.start_heading.x())) {
+      cos_ = std::cos(p.pose.theta);
+      sin_ = std::sin(p.pose.theta);
+    } else {
+      cos_ = p.start_heading.x();
+      sin_ = p.start_heading.y();
+    }
+    if (!std::isnan(p.command_heading.x())) {
+      command_heading_ = p.command_heading;
+    } else if (std::isnan(p.command_theta)) {
+      command_heading_ = Eigen::Vector2d(cos_, sin_);
+    } else {
+      command_heading_ = Eigen::Vector2d(std::cos(p.command_theta), std::sin(p.command_theta));
+    }
     const Eigen::Vector2d p_r(p.pose.x + p.offset * cos_, p.pose.y + p.offset * sin_);
     const Eigen::Vector2d away = p_r - p.obstacle.center;
     const double distance = away.norm();
@@ -29,26 +41,28 @@ class Residual {
   // Obstacle j's term of (10) at clearance m (zero beyond the band).
   Eigen::Vector2d term(double m) const {
     if (m > p_.delta) return Eigen::Vector2d::Zero();
-    return (1.0 / std::max(m, p_.min_margin) - 1.0 / p_.delta) * (m + contact_) * normal_;
+    return (1.0 / std::max(m, p_.min_margin) - inv_delta_) * (m + contact_) * normal_;
   }
 
   double operator()(double m) const {
     const Eigen::Vector2d u_r = p_.rest + p_.k_o * term(m);
     // (11) then (12): G(theta)^-1 u_r, scaled radially into the diamond.
-    const Twist2 u_d = offsetVelocityToTwist(u_r, command_heading_, p_.offset);
-    double v = u_d.v, w = u_d.omega;
-    const double norm = std::abs(v) / v_max_ + std::abs(w) / w_max_;
+    // (Reciprocals precomputed: the residual is evaluated ~6 times per step.)
+    const Eigen::Vector2d& c = command_heading_;
+    double v = c.x() * u_r.x() + c.y() * u_r.y();
+    double w = (c.x() * u_r.y() - c.y() * u_r.x()) * inv_offset_;
+    const double norm = std::abs(v) * inv_v_max_ + std::abs(w) * inv_w_max_;
     if (norm > 1.0) {
-      v /= norm;
-      w /= norm;
+      const double scale = 1.0 / norm;
+      v *= scale;
+      w *= scale;
     }
     // The exact arc under the held command: centre and heading at the end, then p_r there.
     const double turn = w * p_.h;
-    const double st = std::sin(turn), ct = std::cos(turn);
-    // sin(turn)/turn and (1 - cos(turn))/turn, by series for small turns.
-    const bool small = std::abs(turn) < 1e-4;
-    const double sinc = small ? 1.0 - turn * turn / 6.0 : st / turn;
-    const double cosc = small ? 0.5 * turn * (1.0 - turn * turn / 12.0) : (1.0 - ct) / turn;
+    // sin(turn)/turn and (1 - cos(turn))/turn, by series for the small turns of a step.
+    double sinc, cosc;
+    sincCosc(turn, &sinc, &cosc);
+    const double st = turn * sinc, ct = 1.0 - turn * cosc;
     const double run = v * p_.h;
     const double cos_end = cos_ * ct - sin_ * st, sin_end = sin_ * ct + cos_ * st;
     const Eigen::Vector2d end(p_.pose.x + run * (cos_ * sinc - sin_ * cosc) + p_.offset * cos_end,
@@ -58,7 +72,7 @@ class Residual {
 
  private:
   const BandImplicitProblem& p_;
-  double v_max_, w_max_, cos_, sin_, contact_;
+  double inv_v_max_, inv_w_max_, inv_offset_, inv_delta_, cos_ = 1.0, sin_ = 0.0, contact_;
   Eigen::Vector2d normal_, command_heading_;
   double start_clearance_ = 0.0;
 };

@@ -10,6 +10,7 @@
 #include "amigobot_tracking/core/baseline_controller.h"
 #include "amigobot_tracking/core/baseline_estimators.h"
 #include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/small_angle.h"
 #include "amigobot_tracking/core/unicycle.h"
 
 namespace amigobot_tracking {
@@ -41,8 +42,8 @@ class Law {
   void setImplicitHorizon(double h) {
     if (paper_) paper_->setImplicitHorizon(h);
   }
-  void setImplicitHorizon(double h, const Pose2& start) {
-    if (paper_) paper_->setImplicitHorizon(h, start);
+  void setImplicitHorizon(double h, const Pose2& start, const Eigen::Vector2d& start_heading) {
+    if (paper_) paper_->setImplicitHorizon(h, start, start_heading);
   }
 
  private:
@@ -81,10 +82,11 @@ StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const 
 }
 
 // The pose after holding u for tau, to second order (chord at the mid heading): what the
-// midpoint command needs, for one sin/cos instead of the exact arc's two.
-Pose2 predictPose(const Pose2& pose, const Twist2& u, double tau) {
-  const double mid = pose.theta + 0.5 * u.omega * tau;
-  return {pose.x + u.v * tau * std::cos(mid), pose.y + u.v * tau * std::sin(mid), pose.theta + u.omega * tau};
+// midpoint command needs. heading = (cos, sin) of pose.theta; the half turn by series.
+Pose2 predictPose(const Pose2& pose, const Eigen::Vector2d& heading, const Twist2& u, double tau) {
+  double cos_mid, sin_mid;
+  rotateBySmall(0.5 * u.omega * tau, heading.x(), heading.y(), &cos_mid, &sin_mid);
+  return {pose.x + u.v * tau * cos_mid, pose.y + u.v * tau * sin_mid, pose.theta + u.omega * tau};
 }
 
 }  // namespace
@@ -187,7 +189,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     if (fixed_step) t = static_cast<double>(k) * setup.control_period;
     const bool last = fixed_step ? k >= fixed_steps : t >= setup.duration - 1e-9;
     moveObstacles(t);
-    const ReferenceState ref = reference.at(t);
+    ReferenceState ref, ref_cmd;
     // Band-implicit: the step is chosen first (from the last step's |e|/rho; the bands need
     // no short step) and the controller is told how long its command will be held.
     double h = 0.0;
@@ -200,16 +202,22 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     }
     // Second order: the command is computed at the middle of the step it is held over.
     const double t_cmd = midpoint ? t + 0.5 * h : t;
-    const ReferenceState ref_cmd = t_cmd > t ? reference.at(t_cmd) : ref;
+    if (t_cmd > t) {
+      reference.atPair(t, t_cmd, &ref, &ref_cmd);
+    } else {
+      ref = ref_cmd = reference.at(t);
+    }
     // An ideal sensor's sample is the reference just evaluated (what sensor.at would return).
     const TargetSample sample = ideal_sensor ? TargetSample{t_cmd, ref_cmd.position} : measure(t_cmd);
-    PoseSample robot{t_cmd, t_cmd > t ? predictPose(pose, last_u, t_cmd - t) : pose};
+    // (cos, sin) of the heading once per step: p_r, the prediction, the band and the arc share it.
+    const Eigen::Vector2d heading(std::cos(pose.theta), std::sin(pose.theta));
+    PoseSample robot{t_cmd, t_cmd > t ? predictPose(pose, heading, last_u, t_cmd - t) : pose};
     if (pose_sensed) {
       pose_sensor.record(t, pose);
       robot = pose_sensor.at(t_cmd);
     }
-    const Eigen::Vector2d p_r = offsetPoint(pose, config.offset);
-    if (t_cmd > t) law.setImplicitHorizon(h, pose);
+    const Eigen::Vector2d p_r = pose.position() + config.offset * heading;  // offsetPoint(pose)
+    if (t_cmd > t) law.setImplicitHorizon(h, pose, heading);
     else law.setImplicitHorizon(h);
     const ControllerOutput out = law.step(t_cmd, robot, sample, obstacles);
     if (pose_sensed) pose_sensor.hold(out.u);
@@ -270,7 +278,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       observer(step);
     }
     if (last) break;
-    pose = integrateUnicycle(pose, out.u, h);
+    pose = integrateUnicycle(pose, heading, out.u, h);
     if (!fixed_step) t += h;
   }
   summary.metrics = metrics.result();

@@ -19,11 +19,13 @@ PerformanceGains gainsOf(const ControllerConfig& config) {
 // setImplicitHorizon: replaces the explicit term of the nearest obstacle the offset point
 // can reach within h by its backward-Euler value (band_implicit.h), for the command held from
 // `start`. `others` is the rest of u_r; the other obstacles keep their explicit terms.
+// start_heading and command_heading: (cos, sin) of start.theta and of the command's heading.
 void applyImplicitBand(const ControllerConfig& config, const DiamondSet& diamond, const Pose2& start,
-                       double command_theta, const Eigen::Vector2d& others, const std::vector<Disk>& obstacles,
-                       double h, ControllerOutput& out) {
+                       const Eigen::Vector2d& start_heading, double command_theta,
+                       const Eigen::Vector2d& command_heading, const Eigen::Vector2d& others,
+                       const std::vector<Disk>& obstacles, double h, ControllerOutput& out) {
   const double radius = config.effectiveRadius();
-  const Eigen::Vector2d p_start = offsetPoint(start, config.offset);
+  const Eigen::Vector2d p_start = start.position() + config.offset * start_heading;  // offsetPoint(start)
   const Disk* nearest = nullptr;
   double nearest_clearance = 0.0;  // from where the held command starts
   for (const Disk& o : obstacles) {
@@ -59,6 +61,8 @@ void applyImplicitBand(const ControllerConfig& config, const DiamondSet& diamond
   problem.min_margin = config.min_margin;
   problem.h = h;
   problem.command_theta = command_theta;
+  problem.start_heading = start_heading;
+  problem.command_heading = command_heading;
   const BandImplicitResult implicit = solveBandImplicit(problem, diamond);
   if (!implicit.solved) return;
   out.u_c += implicit.u_c - explicit_term;
@@ -203,7 +207,8 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   out.min_clearance = avoidance.min_clearance;
   out.active.avoiding = avoidance.detected > 0;
   if (implicit_horizon_ > 0.0 && !config_.moving_obstacles) {
-    applyImplicitBand(config_, diamond_, implicit_start_given_ ? implicit_start_ : pose, pose.theta,
+    applyImplicitBand(config_, diamond_, implicit_start_given_ ? implicit_start_ : pose,
+                      implicit_start_given_ ? implicit_start_heading_ : heading, pose.theta, heading,
                       attraction + config_.k_o * out.u_t, obstacles, implicit_horizon_, out);
   }
 

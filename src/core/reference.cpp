@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "amigobot_tracking/core/small_angle.h"
+
 namespace amigobot_tracking {
 namespace core {
 
@@ -12,13 +14,29 @@ RoseReference::RoseReference(double amplitude, double k, double time_scale)
 
 ReferenceState RoseReference::at(double t) const {
   const double phase = rate_ * t;
-  const double petal = amplitude_ * std::cos(k_ * phase);
-  const double petal_rate = -amplitude_ * k_ * rate_ * std::sin(k_ * phase);
-  ReferenceState s;
-  s.position = {petal * std::cos(phase), petal * std::sin(phase)};
-  s.velocity = {petal_rate * std::cos(phase) - petal * rate_ * std::sin(phase),
-                petal_rate * std::sin(phase) + petal * rate_ * std::cos(phase)};
-  return s;
+  return state(std::cos(phase), std::sin(phase), std::cos(k_ * phase), std::sin(k_ * phase));
+}
+
+ReferenceState RoseReference::state(double c, double s, double ck, double sk) const {
+  const double petal = amplitude_ * ck;
+  const double petal_rate = -amplitude_ * k_ * rate_ * sk;
+  ReferenceState out;
+  out.position = {petal * c, petal * s};
+  out.velocity = {petal_rate * c - petal * rate_ * s, petal_rate * s + petal * rate_ * c};
+  return out;
+}
+
+void RoseReference::atPair(double t0, double t1, ReferenceState* s0, ReferenceState* s1) const {
+  const double phase = rate_ * t0;
+  const double c0 = std::cos(phase), sn0 = std::sin(phase);
+  const double ck0 = std::cos(k_ * phase), sk0 = std::sin(k_ * phase);
+  *s0 = state(c0, sn0, ck0, sk0);
+  // At t1 both phases are rotations of t0's by small angles (series, small_angle.h).
+  const double d = rate_ * (t1 - t0);
+  double c1, sn1, ck1, sk1;
+  rotateBySmall(d, c0, sn0, &c1, &sn1);
+  rotateBySmall(k_ * d, ck0, sk0, &ck1, &sk1);
+  *s1 = state(c1, sn1, ck1, sk1);
 }
 
 CircleReference::CircleReference(const Eigen::Vector2d& center, double radius, double period)

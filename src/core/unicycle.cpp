@@ -2,22 +2,26 @@
 
 #include <cmath>
 
+#include "amigobot_tracking/core/small_angle.h"
+
 namespace amigobot_tracking {
 namespace core {
 
 Pose2 integrateUnicycle(const Pose2& pose, const Twist2& u, double h) {
+  return integrateUnicycle(pose, Eigen::Vector2d(std::cos(pose.theta), std::sin(pose.theta)), u, h);
+}
+
+Pose2 integrateUnicycle(const Pose2& pose, const Eigen::Vector2d& heading, const Twist2& u, double h) {
+  // The exact arc as run * (R(theta) (sinc, cosc)): the turn by series (small_angle.h) and no
+  // cancellation of sin(theta + dtheta) - sin(theta).
   const double dtheta = u.omega * h;
+  const double run = u.v * h;
+  double sinc, cosc;
+  sincCosc(dtheta, &sinc, &cosc);
+  const double c = heading.x(), s = heading.y();
   Pose2 next;
-  if (std::abs(dtheta) < 1e-9) {
-    // Second-order expansion of the arc: exact to rounding for tiny turns.
-    const double mid = pose.theta + 0.5 * dtheta;
-    next.x = pose.x + u.v * h * std::cos(mid);
-    next.y = pose.y + u.v * h * std::sin(mid);
-  } else {
-    const double radius = u.v / u.omega;
-    next.x = pose.x + radius * (std::sin(pose.theta + dtheta) - std::sin(pose.theta));
-    next.y = pose.y - radius * (std::cos(pose.theta + dtheta) - std::cos(pose.theta));
-  }
+  next.x = pose.x + run * (c * sinc - s * cosc);
+  next.y = pose.y + run * (s * sinc + c * cosc);
   next.theta = wrapAngle(pose.theta + dtheta);
   return next;
 }

@@ -42,6 +42,10 @@ struct BandImplicitProblem {
   // Heading whose G(theta)^-1 turns u_r into the command in (11); NaN: pose.theta. (The
   // simulator's midpoint evaluation computes the command at a pose half a step ahead.)
   double command_theta = std::numeric_limits<double>::quiet_NaN();
+  // (cos, sin) of pose.theta and of the command's heading when the caller has them (NaN:
+  // computed here): saves the sin/cos pairs the controller step already evaluated.
+  Eigen::Vector2d start_heading = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector2d command_heading = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 struct BandImplicitResult {

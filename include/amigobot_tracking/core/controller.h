@@ -7,6 +7,7 @@
 // the output flags, so tests can check they did not happen where the theory says so.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <deque>
 #include <string>
@@ -97,8 +98,13 @@ class PerformanceController {
   // The same when the command will be held from `start`, not from the pose of the step (the
   // simulator's midpoint evaluation: the step's pose is a prediction half a step ahead).
   void setImplicitHorizon(double h, const Pose2& start) {
+    setImplicitHorizon(h, start, Eigen::Vector2d(std::cos(start.theta), std::sin(start.theta)));
+  }
+  // The same with start_heading = (cos, sin) of start.theta already at hand.
+  void setImplicitHorizon(double h, const Pose2& start, const Eigen::Vector2d& start_heading) {
     implicit_horizon_ = h;
     implicit_start_ = start;
+    implicit_start_heading_ = start_heading;
     implicit_start_given_ = true;
   }
   // Swap the parameters between steps, keeping the state (rho is re-clamped to its rules).
@@ -133,6 +139,7 @@ class PerformanceController {
   std::uint64_t envelope_widenings_ = 0;
   double implicit_horizon_ = 0.0;
   Pose2 implicit_start_;
+  Eigen::Vector2d implicit_start_heading_ = Eigen::Vector2d::UnitX();
   bool implicit_start_given_ = false;
 };
 

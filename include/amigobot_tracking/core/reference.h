@@ -20,6 +20,12 @@ class Reference {
  public:
   virtual ~Reference() = default;
   virtual ReferenceState at(double t) const = 0;
+  // at(t0) and at(t1) together (the closed loop's step start and command time); a reference
+  // may share work between two close instants (the rose: one sin/cos pair, rotated).
+  virtual void atPair(double t0, double t1, ReferenceState* s0, ReferenceState* s1) const {
+    *s0 = at(t0);
+    *s1 = at(t1);
+  }
 };
 
 // Rose curve of the paper's Section 5.2: x = A cos(k w t) cos(w t), y = A cos(k w t) sin(w t)
@@ -28,8 +34,11 @@ class RoseReference : public Reference {
  public:
   RoseReference(double amplitude, double k, double time_scale);
   ReferenceState at(double t) const override;
+  void atPair(double t0, double t1, ReferenceState* s0, ReferenceState* s1) const override;
 
  private:
+  // The state from (cos, sin) of the phase w t and of the petal phase k w t.
+  ReferenceState state(double c, double s, double ck, double sk) const;
   double amplitude_, k_, rate_;
 };
 
