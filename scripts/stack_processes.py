@@ -3,15 +3,14 @@ screenshots, and stopping only what was started here (each child in its own proc
 stopped by its pid)."""
 import os
 import signal
-import socket
 import subprocess
 import time
 
+import with_free_ports  # same folder (scripts/)
+
 
 def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
+    return with_free_ports.free_ports(1)[0]
 
 
 def ros_env(setup_bash, master_port, ros_home):

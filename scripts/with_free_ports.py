@@ -10,16 +10,36 @@ just before rostest starts (as rostest itself chooses its master's port). Each p
 to 0, read back and released; the names get distinct ports.
 """
 import os
+import random
 import socket
 import sys
 
 
+def ephemeral_low(default=32768):
+    """The lowest port the kernel hands out on its own (bind to 0, connect)."""
+    try:
+        with open("/proc/sys/net/ipv4/ip_local_port_range") as f:
+            return int(f.read().split()[0])
+    except (OSError, ValueError, IndexError):
+        return default
+
+
 def free_ports(count):
+    """count distinct free TCP ports, drawn below the ephemeral range: a port the kernel chose
+    for bind(0) can be handed to another process's node or connection before our server binds
+    it again (a master failed on that once when tests ran side by side); these are never
+    handed out by the kernel, only by callers like this one, and each is checked by binding."""
+    rng = random.SystemRandom()
+    low, high = 20000, max(20001, ephemeral_low())
     sockets = []
     try:
-        for _ in range(count):  # hold all of them until every one is chosen: distinct ports
+        while len(sockets) < count:  # hold all of them until every one is chosen: distinct ports
             s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
-            s.bind(("127.0.0.1", 0))
+            try:
+                s.bind(("127.0.0.1", rng.randrange(low, high)))
+            except OSError:
+                s.close()
+                continue
             sockets.append(s)
         return [s.getsockname()[1] for s in sockets]
     finally:

@@ -54,15 +54,17 @@ def classes(png):
 
 def shoot_until(display, png, done, timeout):
     """Screenshots into png every second until rviz's view is on the screen and done(counts)
-    holds, or timeout [s] passes; returns the last counts (raises if no view ever showed)."""
+    holds, or timeout [s] passes; returns the last counts (raises if no screenshot or no view
+    ever came)."""
     deadline = time.time() + timeout
     while True:
-        sp.screenshot(display, png)
         try:
+            # xwd itself can fail while rviz maps its GL window: retry that like a missing view.
+            sp.screenshot(display, png)
             counts = classes(png)
             if done(counts) or time.time() > deadline:
                 return counts
-        except RuntimeError:
+        except (RuntimeError, subprocess.CalledProcessError):
             if time.time() > deadline:
                 raise
         time.sleep(1.0)
