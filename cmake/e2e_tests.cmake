@@ -4,7 +4,7 @@
 # test/e2e runs one of its cases. Ports: scripts/with_free_ports.py appends NAME:=PORT for
 # each port arg the .test file declares, just before rostest starts.
 find_package(rostest REQUIRED)
-add_executable(test_e2e EXCLUDE_FROM_ALL test/e2e/test_e2e.cpp test/e2e/test_two_robots.cpp)
+add_executable(test_e2e EXCLUDE_FROM_ALL test/e2e/test_e2e.cpp test/e2e/test_avoidance.cpp test/e2e/test_two_robots.cpp)
 target_link_libraries(test_e2e amigobot_tracking_ros_sim ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 target_include_directories(test_e2e SYSTEM PRIVATE ${GTEST_INCLUDE_DIRS})
 target_include_directories(test_e2e PRIVATE test/aria)  # emulator_process.h: waitFor
