@@ -1,10 +1,6 @@
-# Layer 2: the ARIA robot protocol, the MRPT-based driver library and the robot emulator.
-# Core + MRPT (comms, poses) + yaml-cpp; no ROS headers.
-find_package(mrpt-comms REQUIRED)
-find_package(mrpt-poses REQUIRED)
-find_package(Threads REQUIRED)
-
-add_library(amigobot_tracking_aria
+# Layer 2, aria: the ARIA robot protocol, the MRPT-based driver library and the robot
+# emulator. Core + MRPT (comms, poses) + yaml-cpp; no ROS.
+amigobot_add_library(amigobot_tracking_aria
   src/aria/packet.cpp
   src/aria/commands.cpp
   src/aria/sip.cpp
@@ -18,7 +14,6 @@ add_library(amigobot_tracking_aria
 )
 target_include_directories(amigobot_tracking_aria PUBLIC include)
 target_link_libraries(amigobot_tracking_aria PUBLIC amigobot_tracking_core mrpt::comms mrpt::poses yaml-cpp Threads::Threads)
-target_compile_options(amigobot_tracking_aria PRIVATE ${AMIGOBOT_WARNINGS})
 
 amigobot_add_tool(amigobot_emulator src/tools/amigobot_emulator.cpp)
 target_link_libraries(amigobot_emulator amigobot_tracking_aria)
@@ -27,11 +22,19 @@ target_link_libraries(amigobot_drive amigobot_tracking_aria)
 amigobot_add_tool(aria_command_study src/tools/aria_command_study.cpp)
 target_link_libraries(aria_command_study amigobot_tracking_aria)
 
-# `make bench`: figures of the ARIA layer (parser throughput, quantisation).
-find_package(benchmark QUIET)
-if(benchmark_FOUND)
-  add_executable(bench_aria test/bench/bench_aria.cpp)
-  target_link_libraries(bench_aria amigobot_tracking_aria benchmark::benchmark)
-  target_compile_options(bench_aria PRIVATE ${AMIGOBOT_WARNINGS})
-  set_target_properties(bench_aria PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
+if(CATKIN_ENABLE_TESTING)
+  # Codec, parameters, quantisation, odometry, emulator.
+  foreach(unit packet sip robot_params wheel_command odometry emulator client_config)
+    amigobot_add_unit_test(test_aria_${unit} test/unit/test_aria_${unit}.cpp)
+    target_link_libraries(test_aria_${unit} amigobot_tracking_aria)
+    target_compile_definitions(test_aria_${unit} PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  endforeach()
+  # The driver library against the emulator executable over real TCP sockets and a real pty.
+  amigobot_add_unit_test(test_aria_driver_emulator test/integration/test_aria_driver_emulator.cpp)
+  target_link_libraries(test_aria_driver_emulator amigobot_tracking_aria)
+  target_compile_definitions(test_aria_driver_emulator PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
+  add_dependencies(test_aria_driver_emulator amigobot_emulator)
 endif()
+
+# The libFuzzer target of the packet parser is built by scripts/run_fuzz.sh with clang.
+amigobot_add_benchmark(bench_aria test/bench/bench_aria.cpp amigobot_tracking_aria)

@@ -1,23 +1,17 @@
-# Layer 1: the paper's maths. Eigen only: no ROS, no MRPT.
-add_library(amigobot_tracking_core
+# Layer 1, core: the controller that runs on the robot (the paper's maths). Eigen only.
+amigobot_add_library(amigobot_tracking_core
   src/core/diamond.cpp
   src/core/estimator.cpp
   src/core/offset_point.cpp
   src/core/avoidance.cpp
   src/core/band_implicit.cpp
-  src/core/performance.cpp
+  src/core/prescribed_performance.cpp
   src/core/controller.cpp
   src/core/controller_config.cpp
   src/core/unicycle.cpp
   src/core/reference.cpp
-  src/core/closed_loop.cpp
   src/core/obstacle_tracker.cpp
   src/core/raycast.cpp
-  src/core/metrics.cpp
-  src/core/step_size.cpp
-  src/core/target_sensor.cpp
-  src/core/baseline_controller.cpp
-  src/core/baseline_estimators.cpp
   src/core/scan_obstacles.cpp
   src/core/virtual_obstacles.cpp
   src/core/resume_ramp.cpp
@@ -25,4 +19,13 @@ add_library(amigobot_tracking_core
 )
 target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
-target_compile_options(amigobot_tracking_core PRIVATE ${AMIGOBOT_WARNINGS})
+
+if(CATKIN_ENABLE_TESTING)
+  foreach(unit diamond resume_ramp estimator offset_point avoidance band_implicit controller_config
+          obstacle_tracker raycast scan_obstacles virtual_obstacles waypoint_reference)
+    amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
+    target_link_libraries(test_${unit} amigobot_tracking_core)
+  endforeach()
+endif()
+
+amigobot_add_benchmark(bench_scan_obstacles test/bench/bench_scan_obstacles.cpp amigobot_tracking_core)

@@ -1,9 +1,34 @@
-# Offline simulator: scenario files (yaml-cpp) and run outputs over the core. No ROS.
-add_library(amigobot_tracking_sim
+# Layer 2, sim: the offline-simulation model over the core (closed loop, integrators, sensor
+# models, metrics, baselines, scenario files, Monte Carlo). Core + yaml-cpp; no ROS, no MRPT.
+amigobot_add_library(amigobot_tracking_sim
+  src/sim/closed_loop.cpp
+  src/sim/step_size.cpp
+  src/sim/target_sensor.cpp
+  src/sim/metrics.cpp
+  src/sim/baseline_controller.cpp
+  src/sim/baseline_estimators.cpp
   src/sim/scenario.cpp
   src/sim/simulator.cpp
   src/sim/monte_carlo.cpp
 )
 target_include_directories(amigobot_tracking_sim PUBLIC include)
 target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML_CPP_LIBRARIES})
-target_compile_options(amigobot_tracking_sim PRIVATE ${AMIGOBOT_WARNINGS})
+
+amigobot_add_tool(amigobot_sim src/tools/amigobot_sim.cpp)
+target_link_libraries(amigobot_sim amigobot_tracking_sim)
+target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/plot_run.py")
+
+if(CATKIN_ENABLE_TESTING)
+  foreach(unit closed_loop metrics baselines controller_extensions)
+    amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
+    target_link_libraries(test_${unit} amigobot_tracking_sim)
+  endforeach()
+  # Scenario files and whole simulated runs read the shipped config/scenarios.
+  foreach(unit sim_scenario sim_closed_loop sim_extensions)
+    amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
+    target_link_libraries(test_${unit} amigobot_tracking_sim)
+    target_compile_definitions(test_${unit} PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  endforeach()
+endif()
+
+amigobot_add_benchmark(bench_core test/bench/bench_core.cpp amigobot_tracking_sim)

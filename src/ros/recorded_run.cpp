@@ -48,7 +48,7 @@ void RecordedRun::addCommand(double v, double w) {
   ++summary_.commands;
   const double norm = std::abs(v) / config_.v_max + std::abs(w) / config_.w_max;
   summary_.max_command_norm = std::max(summary_.max_command_norm, norm);
-  if (!(norm <= 1.0 + core::kDiamondTolerance)) ++summary_.command_violations;
+  if (!(norm <= 1.0 + sim::kDiamondTolerance)) ++summary_.command_violations;
 }
 
 void RecordedRun::addState(const TrackingState& s) {
@@ -78,7 +78,7 @@ void RecordedRun::addState(const TrackingState& s) {
   last_path_pose_ = truth_;
   have_path_pose_ = true;
 
-  core::MetricSample m;
+  sim::MetricSample m;
   m.e = e;
   m.rho = s.rho;
   m.u = core::Twist2{s.v, s.omega};
@@ -125,7 +125,7 @@ RecordedRunSummary RecordedRun::summary() const {
 std::string recordedRunJson(const RecordedRunSummary& s, const RecordedRunConfig& config,
                             const std::vector<core::Disk>& all_obstacles, const std::string& name) {
   using sim::jsonNumber;
-  const core::RunMetrics& m = s.metrics;
+  const sim::RunMetrics& m = s.metrics;
   std::ostringstream j;
   auto num = [&](const char* key, double value) { j << "  \"" << key << "\": " << jsonNumber(value) << ",\n"; };
   j << "{\n";

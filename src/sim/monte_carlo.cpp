@@ -22,7 +22,7 @@ Eigen::Vector2d inDisk(std::mt19937_64& rng, double radius) {
 }
 
 bool acceptable(const Scenario& s) {
-  const core::ClosedLoopSetup& setup = s.setup;
+  const sim::ClosedLoopSetup& setup = s.setup;
   const core::ControllerConfig& c = setup.controller;
   const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, c.offset);
   const Eigen::Vector2d p_d = s.makeReference()->at(0.0).position;
@@ -90,7 +90,7 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
   for (int i = 0; i < options.runs; ++i) {
     const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
     const RunResult r = runScenario(s, false);
-    const core::RunMetrics& m = r.summary.metrics;
+    const sim::RunMetrics& m = r.summary.metrics;
     body_runs += m.body_collisions > 0;
     body_episodes += m.body_collisions;
     offset_episodes += m.offset_collisions;

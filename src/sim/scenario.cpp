@@ -122,7 +122,7 @@ double nonNegative(Section& s, const std::string& name, double value) {
   return value;
 }
 
-void parseRobot(Section s, core::ClosedLoopSetup& setup) {
+void parseRobot(Section s, sim::ClosedLoopSetup& setup) {
   core::ControllerConfig& c = setup.controller;
   c.robot_radius = positive(s, "radius", s.number("radius"));
   c.offset = positive(s, "offset", s.number("offset"));
@@ -133,7 +133,7 @@ void parseRobot(Section s, core::ClosedLoopSetup& setup) {
   s.finish();
 }
 
-void parseController(Section s, core::ClosedLoopSetup& setup) {
+void parseController(Section s, sim::ClosedLoopSetup& setup) {
   core::ControllerConfig& c = setup.controller;
   c.k_d = s.number("k_d");
   c.k_o = s.number("k_o");
@@ -217,7 +217,7 @@ ReferenceSpec parseReference(Section s) {
   return r;
 }
 
-void parseObstacles(const YAML::Node& list, const std::string& file, core::ClosedLoopSetup& setup) {
+void parseObstacles(const YAML::Node& list, const std::string& file, sim::ClosedLoopSetup& setup) {
   if (!list.IsSequence()) fail(file, list, "obstacles", "expected a list of {center, radius}, got " + describe(list));
   bool moving = false;
   std::vector<Eigen::Vector2d> velocities;
@@ -242,7 +242,7 @@ void parseObstacles(const YAML::Node& list, const std::string& file, core::Close
 }
 
 void parseSimulation(Section s, Scenario& scenario) {
-  core::ClosedLoopSetup& setup = scenario.setup;
+  sim::ClosedLoopSetup& setup = scenario.setup;
   setup.duration = positive(s, "duration", s.number("duration"));
   setup.control_period = positive(s, "control_period", s.number("control_period", 1e-3));
   setup.max_step = s.number("max_step", 0.0);
@@ -253,7 +253,7 @@ void parseSimulation(Section s, Scenario& scenario) {
   if (!(seed >= 0.0 && seed <= 9.0e15 && seed == std::floor(seed)))
     fail(s.file(), s.node()["seed"], s.key("seed"), "must be a whole number >= 0");
   setup.sensor.seed = static_cast<std::uint64_t>(seed);
-  core::StepPolicy& policy = setup.step_policy;
+  sim::StepPolicy& policy = setup.step_policy;
   policy.comfortable_ratio = s.number("comfortable_ratio", policy.comfortable_ratio);
   policy.tight_ratio = s.number("tight_ratio", policy.tight_ratio);
   if (!(policy.comfortable_ratio >= 0.0 && policy.comfortable_ratio < policy.tight_ratio))
@@ -271,7 +271,7 @@ void parseSimulation(Section s, Scenario& scenario) {
   s.finish();
 }
 
-void parseTarget(Section s, core::ClosedLoopSetup& setup) {
+void parseTarget(Section s, sim::ClosedLoopSetup& setup) {
   setup.sample_period = s.number("sample_period", 0.0);
   setup.sensor.noise_std = s.number("noise_std", 0.0);
   setup.sensor.delay = s.number("delay", 0.0);
@@ -280,7 +280,7 @@ void parseTarget(Section s, core::ClosedLoopSetup& setup) {
     if (!jumps.IsSequence()) fail(s.file(), jumps, s.key("jumps"), "expected a list of {t, offset}, got " + describe(jumps));
     for (size_t i = 0; i < jumps.size(); ++i) {
       Section j(jumps[i], s.key("jumps") + "[" + std::to_string(i) + "]", s.file());
-      core::TargetJump jump;
+      sim::TargetJump jump;
       jump.t = j.number("t");
       jump.offset = j.point("offset");
       j.finish();
@@ -293,7 +293,7 @@ void parseTarget(Section s, core::ClosedLoopSetup& setup) {
   if (setup.sample_period < 0.0) fail(s.file(), s.node()["sample_period"], s.key("sample_period"), "must be >= 0");
 }
 
-void parseLocalization(Section s, core::ClosedLoopSetup& setup) {
+void parseLocalization(Section s, sim::ClosedLoopSetup& setup) {
   setup.pose_sensor.sample_period = nonNegative(s, "sample_period", s.number("sample_period", 0.0));
   setup.pose_sensor.delay = nonNegative(s, "delay", s.number("delay", 0.0));
   s.finish();
@@ -324,15 +324,15 @@ struct Named {
   E value;
 };
 
-constexpr Named<core::ControlLaw> kLaws[] = {
-    {"paper", core::ControlLaw::kPaper}, {"fixed_rho", core::ControlLaw::kFixedRho},
-    {"proportional", core::ControlLaw::kProportional}};
-constexpr Named<core::VelocitySource> kSources[] = {
-    {"paper", core::VelocitySource::kPaperEstimator}, {"finite_difference", core::VelocitySource::kFiniteDifference},
-    {"kalman", core::VelocitySource::kKalman}};
-constexpr Named<core::Integrator> kIntegrators[] = {
-    {"explicit", core::Integrator::kExplicit}, {"band_implicit", core::Integrator::kBandImplicit},
-    {"second_order", core::Integrator::kSecondOrder}};
+constexpr Named<sim::ControlLaw> kLaws[] = {
+    {"paper", sim::ControlLaw::kPaper}, {"fixed_rho", sim::ControlLaw::kFixedRho},
+    {"proportional", sim::ControlLaw::kProportional}};
+constexpr Named<sim::VelocitySource> kSources[] = {
+    {"paper", sim::VelocitySource::kPaperEstimator}, {"finite_difference", sim::VelocitySource::kFiniteDifference},
+    {"kalman", sim::VelocitySource::kKalman}};
+constexpr Named<sim::Integrator> kIntegrators[] = {
+    {"explicit", sim::Integrator::kExplicit}, {"band_implicit", sim::Integrator::kBandImplicit},
+    {"second_order", sim::Integrator::kSecondOrder}};
 
 // Throws std::invalid_argument("unknown WHAT 'name' (choice, choice, ...)").
 template <typename E, size_t N>
@@ -354,12 +354,12 @@ std::string nameOf(const Named<E> (&table)[N], E value) {
 
 }  // namespace
 
-core::ControlLaw parseControlLaw(const std::string& name) { return byName(kLaws, name, "controller variant"); }
-core::VelocitySource parseVelocitySource(const std::string& name) { return byName(kSources, name, "estimator"); }
-core::Integrator parseIntegrator(const std::string& name) { return byName(kIntegrators, name, "integrator"); }
-std::string toString(core::ControlLaw law) { return nameOf(kLaws, law); }
-std::string toString(core::VelocitySource source) { return nameOf(kSources, source); }
-std::string toString(core::Integrator integrator) { return nameOf(kIntegrators, integrator); }
+sim::ControlLaw parseControlLaw(const std::string& name) { return byName(kLaws, name, "controller variant"); }
+sim::VelocitySource parseVelocitySource(const std::string& name) { return byName(kSources, name, "estimator"); }
+sim::Integrator parseIntegrator(const std::string& name) { return byName(kIntegrators, name, "integrator"); }
+std::string toString(sim::ControlLaw law) { return nameOf(kLaws, law); }
+std::string toString(sim::VelocitySource source) { return nameOf(kSources, source); }
+std::string toString(sim::Integrator integrator) { return nameOf(kIntegrators, integrator); }
 
 // The YAML key of a field named first in a validate() message.
 static std::string keyOf(const std::string& message) {
@@ -377,14 +377,14 @@ static std::string keyOf(const std::string& message) {
 }
 
 void checkScenario(const Scenario& scenario) {
-  const core::ClosedLoopSetup& setup = scenario.setup;
-  const std::string err = core::validateSetup(setup);
+  const sim::ClosedLoopSetup& setup = scenario.setup;
+  const std::string err = sim::validateSetup(setup);
   if (!err.empty()) throw ScenarioError(scenario.file + ": " + keyOf(err) + ": " + err);
   const auto reference = scenario.makeReference();
   const Eigen::Vector2d p_d = reference->at(0.0).position;
   const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, setup.controller.offset);
   const double e0 = (p_d - p_r).norm();
-  if (setup.law != core::ControlLaw::kProportional && !(e0 < setup.controller.rho_0)) {
+  if (setup.law != sim::ControlLaw::kProportional && !(e0 < setup.controller.rho_0)) {
     std::ostringstream msg;
     msg << scenario.file << ": controller.rho_0: " << setup.controller.rho_0
         << " m is too small: the initial error |e(0)| = |p_d(0) - p_r(0)| is " << e0

@@ -21,11 +21,11 @@ RunResult runScenario(const Scenario& scenario, bool log) {
   RunResult result;
   const auto reference = scenario.makeReference();
   double next_log = 0.0;
-  core::ClosedLoopObserver observer;
+  sim::ClosedLoopObserver observer;
   if (log) {
     result.rows.reserve(static_cast<size_t>(
         scenario.setup.duration / std::max(scenario.log_period, scenario.setup.control_period) + 16));
-    observer = [&](const core::ClosedLoopStep& s) {
+    observer = [&](const sim::ClosedLoopStep& s) {
       const bool last = s.h <= 0.0;
       if (!last && s.t + 1e-12 < next_log) return;
       next_log = scenario.log_period > 0.0 ? s.t + scenario.log_period : 0.0;
@@ -43,7 +43,7 @@ RunResult runScenario(const Scenario& scenario, bool log) {
     };
   }
   const auto start = std::chrono::steady_clock::now();
-  result.summary = core::runClosedLoop(scenario.setup, *reference, observer);
+  result.summary = sim::runClosedLoop(scenario.setup, *reference, observer);
   result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -67,7 +67,7 @@ void writeTrajectoryCsv(const std::string& path, const std::vector<CsvRow>& rows
   if (std::fclose(f) != 0 || !ok) throw std::runtime_error(path + ": write failed");
 }
 
-void writeSharedMetricsJson(std::ostream& j, const core::RunMetrics& m) {
+void writeSharedMetricsJson(std::ostream& j, const sim::RunMetrics& m) {
   auto num = [&](const char* key, double value) { j << "  \"" << key << "\": " << jsonNumber(value) << ",\n"; };
   num("ase", m.ase);
   num("aae", m.aae);
@@ -88,8 +88,8 @@ void writeSharedMetricsJson(std::ostream& j, const core::RunMetrics& m) {
 }
 
 std::string metricsJson(const Scenario& scenario, const RunResult& result) {
-  const core::RunMetrics& m = result.summary.metrics;
-  const core::ClosedLoopSetup& setup = scenario.setup;
+  const sim::RunMetrics& m = result.summary.metrics;
+  const sim::ClosedLoopSetup& setup = scenario.setup;
   const core::ControllerConfig& c = setup.controller;
   std::ostringstream j;
   auto num = [&](const char* key, double value, bool comma = true) {

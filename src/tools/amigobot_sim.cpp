@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   try {
     scenario = sim::loadScenario(opt["--scenario"]);
-    core::ClosedLoopSetup& setup = scenario.setup;
+    sim::ClosedLoopSetup& setup = scenario.setup;
     try {
       if (opt.count("--variant")) setup.law = sim::parseControlLaw(opt["--variant"]);
     } catch (const std::invalid_argument& e) {
@@ -213,9 +213,9 @@ int main(int argc, char** argv) {
     const sim::RunResult result = sim::runScenario(scenario, true);
     sim::writeTrajectoryCsv(out + "/trajectory.csv", result.rows);
     sim::writeText(out + "/metrics.json", sim::metricsJson(scenario, result));
-    const core::RunMetrics& m = result.summary.metrics;
+    const sim::RunMetrics& m = result.summary.metrics;
     char ratio[32] = "- (no rho)";
-    if (scenario.setup.law != core::ControlLaw::kProportional) std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
+    if (scenario.setup.law != sim::ControlLaw::kProportional) std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
     const core::ControllerConfig& c = scenario.setup.controller;
     std::string beyond;  // the switches beyond the paper that are on
     for (const auto& [on, name] : {std::pair<bool, const char*>{c.tangential_avoidance, "tangential"},

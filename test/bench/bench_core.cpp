@@ -5,12 +5,13 @@
 #include <random>
 #include <vector>
 
-#include "amigobot_tracking/core/closed_loop.h"
+#include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/core/estimator.h"
 #include "amigobot_tracking/core/unicycle.h"
 
 using namespace amigobot_tracking::core;
+using namespace amigobot_tracking::sim;
 
 namespace {
 

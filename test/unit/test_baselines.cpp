@@ -4,11 +4,12 @@
 
 #include <cmath>
 
-#include "amigobot_tracking/core/baseline_controller.h"
+#include "amigobot_tracking/sim/baseline_controller.h"
 #include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/core/offset_point.h"
 
 using namespace amigobot_tracking::core;
+using namespace amigobot_tracking::sim;
 
 namespace {
 

@@ -5,10 +5,11 @@
 #include <limits>
 #include <vector>
 
-#include "amigobot_tracking/core/closed_loop.h"
+#include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/core/unicycle.h"
 
 using namespace amigobot_tracking::core;
+using namespace amigobot_tracking::sim;
 
 namespace {
 

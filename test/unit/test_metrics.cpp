@@ -4,10 +4,11 @@
 #include <cmath>
 #include <limits>
 
-#include "amigobot_tracking/core/metrics.h"
-#include "amigobot_tracking/core/step_size.h"
+#include "amigobot_tracking/sim/metrics.h"
+#include "amigobot_tracking/sim/step_size.h"
 
 using namespace amigobot_tracking::core;
+using namespace amigobot_tracking::sim;
 
 namespace {
 

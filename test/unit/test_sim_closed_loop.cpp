@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "amigobot_tracking/core/baseline_estimators.h"
-#include "amigobot_tracking/core/target_sensor.h"
+#include "amigobot_tracking/sim/baseline_estimators.h"
+#include "amigobot_tracking/sim/target_sensor.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"
@@ -24,7 +24,7 @@ sim::Scenario shipped(const std::string& name, double duration) {
   return s;
 }
 
-void expectSane(const core::RunMetrics& m, const std::string& what, bool has_rho = true) {
+void expectSane(const sim::RunMetrics& m, const std::string& what, bool has_rho = true) {
   EXPECT_EQ(m.nan_count, 0u) << what;
   EXPECT_EQ(m.diamond_violations, 0u) << what;
   EXPECT_GT(m.steps, 10u) << what;
@@ -55,7 +55,7 @@ TEST(SimClosedLoop, BaselinesRunOnTheRose) {
     sim::Scenario s = shipped("paper_5_2_rose", 1.5);
     s.setup.law = sim::parseControlLaw(variant);
     const sim::RunResult r = sim::runScenario(s, false);
-    expectSane(r.summary.metrics, variant, s.setup.law != core::ControlLaw::kProportional);
+    expectSane(r.summary.metrics, variant, s.setup.law != sim::ControlLaw::kProportional);
   }
   for (const char* estimator : {"finite_difference", "kalman"}) {
     sim::Scenario s = shipped("paper_5_2_rose", 1.5);
@@ -80,12 +80,12 @@ TEST(SimClosedLoop, VariableStepTakesFewerStepsAndConvergesToTheFineStep) {
   sim::Scenario fine = shipped("paper_5_1", 10.0);
   fine.setup.obstacles.clear();
   fine.setup.max_step = 0.0;
-  const core::RunMetrics a = sim::runScenario(fine, false).summary.metrics;
+  const sim::RunMetrics a = sim::runScenario(fine, false).summary.metrics;
   double last_gap = 0.0;
   for (double max_step : {0.02, 0.01, 0.005}) {
     sim::Scenario coarse = fine;
     coarse.setup.max_step = max_step;
-    const core::RunMetrics b = sim::runScenario(coarse, false).summary.metrics;
+    const sim::RunMetrics b = sim::runScenario(coarse, false).summary.metrics;
     EXPECT_LT(b.steps * 5, a.steps) << max_step;
     EXPECT_NEAR(b.sim_time, a.sim_time, 1e-9);
     // The held command makes the error first order in the step: it must shrink with it.
@@ -100,11 +100,11 @@ TEST(SimClosedLoop, VariableStepTakesFewerStepsAndConvergesToTheFineStep) {
 
 TEST(TargetSensor, SamplesHoldDelayAndJump) {
   const core::CircleReference circle({0.0, 0.0}, 1.0, 2.0 * M_PI);  // unit speed
-  core::TargetSensorConfig config;
+  sim::TargetSensorConfig config;
   config.sample_period = 0.1;
   config.delay = 0.05;
   config.jumps = {{0.3, {1.0, 0.0}}};
-  core::TargetSensor sensor(config, circle);
+  sim::TargetSensor sensor(config, circle);
   EXPECT_DOUBLE_EQ(sensor.at(0.0).stamp, 0.0);
   EXPECT_DOUBLE_EQ(sensor.at(0.12).stamp, 0.0);   // sample 0.1 arrives at 0.15
   EXPECT_NEAR(sensor.at(0.15).stamp, 0.1, 1e-12);
@@ -116,11 +116,11 @@ TEST(TargetSensor, SamplesHoldDelayAndJump) {
 
 TEST(TargetSensor, NoiseIsReproducibleFromTheSeed) {
   const core::CircleReference circle({0.0, 0.0}, 1.0, 10.0);
-  core::TargetSensorConfig config;
+  sim::TargetSensorConfig config;
   config.noise_std = 0.01;
-  core::TargetSensor a(config, circle), b(config, circle);
+  sim::TargetSensor a(config, circle), b(config, circle);
   config.seed = 2;
-  core::TargetSensor c(config, circle);
+  sim::TargetSensor c(config, circle);
   const Eigen::Vector2d pa = a.at(1.0).position, pb = b.at(1.0).position, pc = c.at(1.0).position;
   EXPECT_EQ(pa, pb);
   EXPECT_NE(pa, pc);
@@ -128,7 +128,7 @@ TEST(TargetSensor, NoiseIsReproducibleFromTheSeed) {
 }
 
 TEST(BaselineEstimators, FiniteDifferenceConvergesOnARamp) {
-  core::FiniteDifferenceFilter filter(0.05);
+  sim::FiniteDifferenceFilter filter(0.05);
   for (int k = 0; k <= 200; ++k) filter.update(0.01 * k, Eigen::Vector2d(2.0 * 0.01 * k, -1.0));
   EXPECT_NEAR(filter.velocity().x(), 2.0, 1e-6);
   EXPECT_NEAR(filter.velocity().y(), 0.0, 1e-12);
@@ -136,7 +136,7 @@ TEST(BaselineEstimators, FiniteDifferenceConvergesOnARamp) {
 }
 
 TEST(BaselineEstimators, KalmanConvergesOnARamp) {
-  core::ConstantVelocityKalman filter(1.0, 0.01);
+  sim::ConstantVelocityKalman filter(1.0, 0.01);
   for (int k = 0; k <= 300; ++k) filter.update(0.01 * k, Eigen::Vector2d(1.0, -3.0 * 0.01 * k));
   EXPECT_NEAR(filter.velocity().x(), 0.0, 1e-3);
   EXPECT_NEAR(filter.velocity().y(), -3.0, 1e-2);
@@ -148,8 +148,8 @@ TEST(SimClosedLoop, PaperRadiusLetsTheBodyTouchAndBodySafeKeepsItClear) {
   paper.setup.controller.body_safe = false;
   sim::Scenario safe = paper;
   safe.setup.controller.body_safe = true;
-  const core::RunMetrics a = sim::runScenario(paper, false).summary.metrics;
-  const core::RunMetrics b = sim::runScenario(safe, false).summary.metrics;
+  const sim::RunMetrics a = sim::runScenario(paper, false).summary.metrics;
+  const sim::RunMetrics b = sim::runScenario(safe, false).summary.metrics;
   EXPECT_GT(a.min_clearance_offset, 0.0);  // what the paper guarantees holds
   EXPECT_GT(a.body_collisions, 0u);        // and still the body touches
   EXPECT_GT(b.min_clearance_body, 0.0);
@@ -220,7 +220,7 @@ double gap(double value, double reference) { return std::abs(value - reference) 
 
 // The fast run tells the same story as the reference: the averages within `tolerance`
 // (relative), the clearances within a millimetre, the same contacts, nothing invalid.
-void expectFaithful(const core::RunMetrics& fast, const core::RunMetrics& ref, double tolerance, const std::string& what) {
+void expectFaithful(const sim::RunMetrics& fast, const sim::RunMetrics& ref, double tolerance, const std::string& what) {
   EXPECT_LT(gap(fast.ase, ref.ase), tolerance) << what << ": ASE " << fast.ase << " vs " << ref.ase;
   EXPECT_LT(gap(fast.aae, ref.aae), tolerance) << what << ": AAE " << fast.aae << " vs " << ref.aae;
   EXPECT_LT(gap(fast.tec, ref.tec), tolerance) << what << ": TEC " << fast.tec << " vs " << ref.tec;
@@ -243,10 +243,10 @@ TEST(SimFidelity, ShippedRoseSettingsAgreeWithTheFineReference) {
   sim::Scenario fine = fast;
   fine.setup.control_period = 62.5e-6;
   fine.setup.max_step = 0.0;
-  const core::RunMetrics ref = sim::runScenario(fine, false).summary.metrics;
+  const sim::RunMetrics ref = sim::runScenario(fine, false).summary.metrics;
   ASSERT_EQ(ref.offset_collisions, 0u);
   ASSERT_LT(ref.min_clearance_offset, 0.016) << "the reference never entered a detection band";
-  const core::RunMetrics m = sim::runScenario(fast, false).summary.metrics;
+  const sim::RunMetrics m = sim::runScenario(fast, false).summary.metrics;
   EXPECT_LT(m.steps * 20, ref.steps);
   expectFaithful(m, ref, 0.03, "shipped settings");
 }
@@ -259,11 +259,11 @@ TEST(SimFidelity, SecondOrderRoseSettingsAgreeWithTheFineReference) {
   sim::Scenario fine = fast;
   fine.setup.control_period = 62.5e-6;
   fine.setup.max_step = 0.0;
-  const core::RunMetrics ref = sim::runScenario(fine, false).summary.metrics;
-  fast.setup.integrator = core::Integrator::kSecondOrder;
+  const sim::RunMetrics ref = sim::runScenario(fine, false).summary.metrics;
+  fast.setup.integrator = sim::Integrator::kSecondOrder;
   fast.setup.control_period = 0.004;
   fast.setup.max_step = 0.01;
-  const core::RunMetrics m = sim::runScenario(fast, false).summary.metrics;
+  const sim::RunMetrics m = sim::runScenario(fast, false).summary.metrics;
   EXPECT_LT(m.steps, 800u);
   EXPECT_EQ(m.envelope_widenings, 0u);
   expectFaithful(m, ref, 0.02, "second_order 4-10 ms");
@@ -275,15 +275,15 @@ TEST(SimFidelity, BandImplicitStaysFaithfulWhereTheExplicitStepChatters) {
   sim::Scenario fine = shipped("paper_5_2_rose", 6.2832);
   fine.setup.control_period = 62.5e-6;
   fine.setup.max_step = 0.0;
-  const core::RunMetrics ref = sim::runScenario(fine, false).summary.metrics;
+  const sim::RunMetrics ref = sim::runScenario(fine, false).summary.metrics;
   sim::Scenario coarse = fine;
   coarse.setup.control_period = 0.001;
-  const core::RunMetrics explicit_1ms = sim::runScenario(coarse, false).summary.metrics;
+  const sim::RunMetrics explicit_1ms = sim::runScenario(coarse, false).summary.metrics;
   EXPECT_GT(gap(explicit_1ms.tec, ref.tec), 0.05) << "the explicit 1 ms step no longer chatters: update this test";
-  coarse.setup.integrator = core::Integrator::kBandImplicit;
+  coarse.setup.integrator = sim::Integrator::kBandImplicit;
   expectFaithful(sim::runScenario(coarse, false).summary.metrics, ref, 0.03, "band_implicit 1 ms");
   coarse.setup.control_period = 0.002;
-  const core::RunMetrics implicit_2ms = sim::runScenario(coarse, false).summary.metrics;
+  const sim::RunMetrics implicit_2ms = sim::runScenario(coarse, false).summary.metrics;
   EXPECT_EQ(implicit_2ms.offset_collisions, 0u);
   EXPECT_NEAR(implicit_2ms.min_clearance_offset, ref.min_clearance_offset, 1e-3);
   EXPECT_LT(gap(implicit_2ms.tec, ref.tec), 0.01);

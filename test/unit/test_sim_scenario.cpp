@@ -53,7 +53,7 @@ TEST(SimScenario, AcceptsTheIssueMinimumExactly) {
   EXPECT_DOUBLE_EQ(s.setup.obstacles[0].radius, 0.15);
   EXPECT_DOUBLE_EQ(s.setup.duration, 6.283);
   EXPECT_DOUBLE_EQ(s.setup.initial_pose.theta, 1.5708);
-  EXPECT_EQ(s.setup.law, core::ControlLaw::kPaper);
+  EXPECT_EQ(s.setup.law, sim::ControlLaw::kPaper);
   EXPECT_EQ(s.name, "min");
 }
 
@@ -77,13 +77,13 @@ TEST(SimScenario, ReadsOptionalKeys) {
   text += "target: {sample_period: 0.1, noise_std: 0.01, delay: 0.05, jumps: [{t: 2, offset: [0.3, 0]}]}\n";
   const sim::Scenario s = sim::parseScenario(text, "opt.yaml");
   EXPECT_TRUE(s.setup.controller.body_safe);
-  EXPECT_EQ(s.setup.law, core::ControlLaw::kProportional);
-  EXPECT_EQ(s.setup.velocity_source, core::VelocitySource::kKalman);
+  EXPECT_EQ(s.setup.law, sim::ControlLaw::kProportional);
+  EXPECT_EQ(s.setup.velocity_source, sim::VelocitySource::kKalman);
   EXPECT_DOUBLE_EQ(s.setup.baseline.k_p, 7.0);
   EXPECT_DOUBLE_EQ(s.setup.control_period, 0.002);
   EXPECT_DOUBLE_EQ(s.setup.max_step, 0.01);
   EXPECT_EQ(s.setup.sensor.seed, 5u);
-  EXPECT_EQ(s.setup.integrator, core::Integrator::kExplicit);  // the default
+  EXPECT_EQ(s.setup.integrator, sim::Integrator::kExplicit);  // the default
   EXPECT_DOUBLE_EQ(s.setup.sample_period, 0.1);
   EXPECT_DOUBLE_EQ(s.setup.sensor.noise_std, 0.01);
   EXPECT_DOUBLE_EQ(s.setup.sensor.delay, 0.05);
@@ -92,9 +92,9 @@ TEST(SimScenario, ReadsOptionalKeys) {
 }
 
 TEST(SimScenario, ReadsTheIntegrator) {
-  for (const auto& [name, integrator] : {std::pair<const char*, core::Integrator>{"explicit", core::Integrator::kExplicit},
-                                         {"band_implicit", core::Integrator::kBandImplicit},
-                                         {"second_order", core::Integrator::kSecondOrder}}) {
+  for (const auto& [name, integrator] : {std::pair<const char*, sim::Integrator>{"explicit", sim::Integrator::kExplicit},
+                                         {"band_implicit", sim::Integrator::kBandImplicit},
+                                         {"second_order", sim::Integrator::kSecondOrder}}) {
     const sim::Scenario s = sim::parseScenario(
         replaced(kMinimum, "{duration: 6.283}", std::string("{duration: 6.283, integrator: ") + name + "}"), "i.yaml");
     EXPECT_EQ(s.setup.integrator, integrator) << name;

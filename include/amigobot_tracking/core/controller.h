@@ -19,7 +19,7 @@
 #include "amigobot_tracking/core/controller_config.h"
 #include "amigobot_tracking/core/diamond.h"
 #include "amigobot_tracking/core/estimator.h"
-#include "amigobot_tracking/core/performance.h"
+#include "amigobot_tracking/core/prescribed_performance.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "amigobot_tracking/TrackingState.h"
-#include "amigobot_tracking/core/metrics.h"
+#include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/types.h"
 #include "amigobot_tracking/sim/simulator.h"
 
@@ -29,9 +29,9 @@ struct RecordedRunConfig {
   std::string validate() const;   // empty when valid, else names the bad field
 };
 
-// What the run shows beyond core::RunMetrics.
+// What the run shows beyond sim::RunMetrics.
 struct RecordedRunSummary {
-  core::RunMetrics metrics;           // enabled control steps; clearances from ground truth
+  sim::RunMetrics metrics;           // enabled control steps; clearances from ground truth
   std::uint64_t states = 0;           // TrackingState messages seen (any)
   std::uint64_t truth_samples = 0;    // ground-truth poses seen
   std::uint64_t commands = 0;         // cmd_vel messages
@@ -66,13 +66,13 @@ class RecordedRun {
  private:
   struct Step {
     double t = 0.0;
-    core::MetricSample sample;
+    sim::MetricSample sample;
     sim::CsvRow row{};
   };
   void flush(double next_t);
 
   RecordedRunConfig config_;
-  core::MetricsAccumulator accumulator_;
+  sim::MetricsAccumulator accumulator_;
   RecordedRunSummary summary_;
   std::vector<core::Disk> virtual_, virtual_seen_;
   std::vector<sim::CsvRow> rows_;

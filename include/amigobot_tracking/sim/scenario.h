@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "amigobot_tracking/core/closed_loop.h"
+#include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/core/reference.h"
 
 namespace amigobot_tracking {
@@ -35,7 +35,7 @@ struct ReferenceSpec {
 struct Scenario {
   std::string file;   // where it came from (for messages)
   std::string name;   // file stem, or simulation.name
-  core::ClosedLoopSetup setup;
+  sim::ClosedLoopSetup setup;
   ReferenceSpec reference;
   double log_period = 0.0;  // [s] CSV row spacing; 0 = every step
 
@@ -52,12 +52,12 @@ Scenario parseScenario(const std::string& text, const std::string& file);
 void checkScenario(const Scenario& scenario);
 
 // Names of the enumerations as in the YAML files.
-core::ControlLaw parseControlLaw(const std::string& name);          // throws std::invalid_argument
-core::VelocitySource parseVelocitySource(const std::string& name);  // throws std::invalid_argument
-core::Integrator parseIntegrator(const std::string& name);          // throws std::invalid_argument
-std::string toString(core::ControlLaw law);
-std::string toString(core::Integrator integrator);
-std::string toString(core::VelocitySource source);
+sim::ControlLaw parseControlLaw(const std::string& name);          // throws std::invalid_argument
+sim::VelocitySource parseVelocitySource(const std::string& name);  // throws std::invalid_argument
+sim::Integrator parseIntegrator(const std::string& name);          // throws std::invalid_argument
+std::string toString(sim::ControlLaw law);
+std::string toString(sim::Integrator integrator);
+std::string toString(sim::VelocitySource source);
 
 }  // namespace sim
 }  // namespace amigobot_tracking

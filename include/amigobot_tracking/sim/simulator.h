@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/closed_loop.h"
+#include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/sim/scenario.h"
 
 namespace amigobot_tracking {
@@ -24,7 +24,7 @@ constexpr std::array<const char*, 36> kCsvColumns = {
 using CsvRow = std::array<double, kCsvColumns.size()>;
 
 struct RunResult {
-  core::ClosedLoopSummary summary;
+  sim::ClosedLoopSummary summary;
   std::vector<CsvRow> rows;  // empty unless logging was asked for
   double wall_time = 0.0;    // [s] of the closed loop alone (rows are buffered, written later)
   double realtimeFactor() const { return wall_time > 0.0 ? summary.metrics.sim_time / wall_time : 0.0; }
@@ -43,7 +43,7 @@ void writeText(const std::string& path, const std::string& text);
 std::string jsonNumber(double value);
 // The metrics every run report shares (offline run or recorded run), one `"key": value,`
 // line each, so both metrics.json files keep one schema for plot_run.py and the tests.
-void writeSharedMetricsJson(std::ostream& json, const core::RunMetrics& metrics);
+void writeSharedMetricsJson(std::ostream& json, const sim::RunMetrics& metrics);
 
 }  // namespace sim
 }  // namespace amigobot_tracking

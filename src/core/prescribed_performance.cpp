@@ -1,4 +1,4 @@
-#include "amigobot_tracking/core/performance.h"
+#include "amigobot_tracking/core/prescribed_performance.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "amigobot_tracking/core/closed_loop.h"
+#include "amigobot_tracking/sim/closed_loop.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,14 +7,14 @@
 #include <sstream>
 
 #include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/baseline_controller.h"
-#include "amigobot_tracking/core/baseline_estimators.h"
+#include "amigobot_tracking/sim/baseline_controller.h"
+#include "amigobot_tracking/sim/baseline_estimators.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/core/small_angle.h"
 #include "amigobot_tracking/core/unicycle.h"
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 namespace {
 
 // The selected law behind one step() call.
@@ -24,30 +24,30 @@ class Law {
     if (setup.law == ControlLaw::kProportional) {
       proportional_ = std::make_unique<ProportionalController>(setup.controller, setup.baseline.k_p);
     } else {
-      ControllerConfig config = setup.controller;
+      core::ControllerConfig config = setup.controller;
       config.adaptive_rho = setup.law == ControlLaw::kPaper && config.adaptive_rho;
       implicit_band_ = setup.integrator != Integrator::kExplicit && !config.moving_obstacles;
       config.estimator.bdf2 = implicit_band_ && setup.integrator == Integrator::kSecondOrder;
-      paper_ = std::make_unique<PerformanceController>(config);
+      paper_ = std::make_unique<core::PerformanceController>(config);
     }
   }
-  ControllerOutput step(double t, const PoseSample& robot, const TargetSample& sample,
-                        const std::vector<Disk>& obstacles) {
+  core::ControllerOutput step(double t, const core::PoseSample& robot, const core::TargetSample& sample,
+                        const std::vector<core::Disk>& obstacles) {
     return paper_ ? paper_->stepStamped(t, robot, sample, obstacles)
                   : proportional_->step(t, robot.pose, sample, obstacles);
   }
-  const DiamondSet& diamond() const { return paper_ ? paper_->diamond() : proportional_->diamond(); }
+  const core::DiamondSet& diamond() const { return paper_ ? paper_->diamond() : proportional_->diamond(); }
   // The setup's integrator applies (otherwise the loop runs kExplicit).
   bool implicitBand() const { return implicit_band_; }
   void setImplicitHorizon(double h) {
     if (paper_) paper_->setImplicitHorizon(h);
   }
-  void setImplicitHorizon(double h, const Pose2& start, const Eigen::Vector2d& start_heading) {
+  void setImplicitHorizon(double h, const core::Pose2& start, const Eigen::Vector2d& start_heading) {
     if (paper_) paper_->setImplicitHorizon(h, start, start_heading);
   }
 
  private:
-  std::unique_ptr<PerformanceController> paper_;
+  std::unique_ptr<core::PerformanceController> paper_;
   std::unique_ptr<ProportionalController> proportional_;
   bool implicit_band_ = false;
 };
@@ -66,13 +66,13 @@ std::unique_ptr<TargetVelocityFilter> makeFilter(const ClosedLoopSetup& setup) {
 }
 
 // Where the robot stands relative to the obstacles, for the step choice.
-StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const Eigen::Vector2d& p_r,
-                          const ControllerConfig& c, const std::vector<Disk>& obstacles, double max_speed) {
+StepSituation situationOf(const core::ControllerOutput& out, const core::Pose2& pose, const Eigen::Vector2d& p_r,
+                          const core::ControllerConfig& c, const std::vector<core::Disk>& obstacles, double max_speed) {
   StepSituation s;
   s.max_speed = max_speed;
   s.error_ratio = out.rho > 0.0 ? out.e.norm() / out.rho : 0.0;
   s.distance = std::numeric_limits<double>::infinity();
-  for (const Disk& o : obstacles) {
+  for (const core::Disk& o : obstacles) {
     const double band = (p_r - o.center).norm() - (c.effectiveRadius() + o.radius + c.delta);
     s.in_band = s.in_band || band <= 0.0;
     s.distance = std::min({s.distance, std::max(band, 0.0),
@@ -83,9 +83,9 @@ StepSituation situationOf(const ControllerOutput& out, const Pose2& pose, const 
 
 // The pose after holding u for tau, to second order (chord at the mid heading): what the
 // midpoint command needs. heading = (cos, sin) of pose.theta; the half turn by series.
-Pose2 predictPose(const Pose2& pose, const Eigen::Vector2d& heading, const Twist2& u, double tau) {
+core::Pose2 predictPose(const core::Pose2& pose, const Eigen::Vector2d& heading, const core::Twist2& u, double tau) {
   double cos_mid, sin_mid;
-  rotateBySmall(0.5 * u.omega * tau, heading.x(), heading.y(), &cos_mid, &sin_mid);
+  core::rotateBySmall(0.5 * u.omega * tau, heading.x(), heading.y(), &cos_mid, &sin_mid);
   return {pose.x + u.v * tau * cos_mid, pose.y + u.v * tau * sin_mid, pose.theta + u.omega * tau};
 }
 
@@ -117,7 +117,7 @@ std::string validateSetup(const ClosedLoopSetup& setup) {
   else if (!(setup.baseline.kalman_measurement_std > 0.0 && std::isfinite(setup.baseline.kalman_measurement_std)))
     err << "kalman_measurement_std must be > 0";
   else
-    for (const Disk& o : setup.obstacles)
+    for (const core::Disk& o : setup.obstacles)
       if (!o.center.allFinite() || !(o.radius > 0.0 && std::isfinite(o.radius))) {
         err << "obstacles: every obstacle needs a finite centre and a radius > 0";
         break;
@@ -125,7 +125,7 @@ std::string validateSetup(const ClosedLoopSetup& setup) {
   return err.str();
 }
 
-ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& reference,
+ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Reference& reference,
                                 const ClosedLoopObserver& observer) {
   Law law(setup);
   std::unique_ptr<TargetVelocityFilter> filter = makeFilter(setup);
@@ -134,7 +134,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
   TargetSensor sensor(sensor_config, reference);
   PoseSensor pose_sensor(setup.pose_sensor);
   const bool pose_sensed = setup.pose_sensor.active();
-  const ControllerConfig& config = setup.controller;
+  const core::ControllerConfig& config = setup.controller;
   StepPolicy policy = setup.step_policy;
   policy.min_step = setup.control_period;
   policy.max_step = std::max(setup.control_period, setup.max_step);
@@ -147,8 +147,8 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
   ClosedLoopSummary summary;
   summary.min_clearance_offset = summary.min_clearance_body = std::numeric_limits<double>::infinity();
   MetricsAccumulator metrics;
-  Pose2 pose = setup.initial_pose;
-  std::vector<Disk> obstacles = setup.obstacles;
+  core::Pose2 pose = setup.initial_pose;
+  std::vector<core::Disk> obstacles = setup.obstacles;
   const auto fixed_steps = static_cast<std::uint64_t>(std::llround(setup.duration / setup.control_period));
   double t = 0.0;
   double last_filter_stamp = -std::numeric_limits<double>::infinity();
@@ -160,7 +160,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
   };
   // The newest target sample at time `at`, with the baseline filter's velocity when one is used.
   auto measure = [&](double at) {
-    TargetSample sample = sensor.at(at);
+    core::TargetSample sample = sensor.at(at);
     if (filter) {
       if (sample.stamp > last_filter_stamp) {
         filter->update(sample.stamp, sample.position);
@@ -175,7 +175,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
   const bool implicit = law.implicitBand();
   const bool midpoint = implicit && setup.integrator == Integrator::kSecondOrder;
   double last_ratio = 1.0;  // the first step is the fine one
-  Twist2 last_u;            // the command held over the last step
+  core::Twist2 last_u;            // the command held over the last step
   // Land on the next sample delivery (when samples are sparser than steps) and on the end.
   auto landed = [&](double h) {
     const double delivery = sensor.nextDelivery(t);
@@ -189,7 +189,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     if (fixed_step) t = static_cast<double>(k) * setup.control_period;
     const bool last = fixed_step ? k >= fixed_steps : t >= setup.duration - 1e-9;
     moveObstacles(t);
-    ReferenceState ref, ref_cmd;
+    core::ReferenceState ref, ref_cmd;
     // Band-implicit: the step is chosen first (from the last step's |e|/rho; the bands need
     // no short step) and the controller is told how long its command will be held.
     double h = 0.0;
@@ -208,10 +208,10 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       ref = ref_cmd = reference.at(t);
     }
     // An ideal sensor's sample is the reference just evaluated (what sensor.at would return).
-    const TargetSample sample = ideal_sensor ? TargetSample{t_cmd, ref_cmd.position} : measure(t_cmd);
+    const core::TargetSample sample = ideal_sensor ? core::TargetSample{t_cmd, ref_cmd.position} : measure(t_cmd);
     // (cos, sin) of the heading once per step: p_r, the prediction, the band and the arc share it.
     const Eigen::Vector2d heading(std::cos(pose.theta), std::sin(pose.theta));
-    PoseSample robot{t_cmd, t_cmd > t ? predictPose(pose, heading, last_u, t_cmd - t) : pose};
+    core::PoseSample robot{t_cmd, t_cmd > t ? predictPose(pose, heading, last_u, t_cmd - t) : pose};
     if (pose_sensed) {
       pose_sensor.record(t, pose);
       robot = pose_sensor.at(t_cmd);
@@ -219,7 +219,7 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
     const Eigen::Vector2d p_r = pose.position() + config.offset * heading;  // offsetPoint(pose)
     if (t_cmd > t) law.setImplicitHorizon(h, pose, heading);
     else law.setImplicitHorizon(h);
-    const ControllerOutput out = law.step(t_cmd, robot, sample, obstacles);
+    const core::ControllerOutput out = law.step(t_cmd, robot, sample, obstacles);
     if (pose_sensed) pose_sensor.hold(out.u);
     last_ratio = out.rho > 0.0 ? out.e.norm() / out.rho : 0.0;
     last_u = out.u;
@@ -228,8 +228,8 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       h = fixed_step ? setup.control_period
                      : landed(chooseStep(policy, situationOf(out, pose, p_r, config, obstacles, max_speed)));
     }
-    const double clearance_offset = clearance(p_r, config.robot_radius, obstacles);
-    const double clearance_body = clearance(pose.position(), config.robot_radius, obstacles);
+    const double clearance_offset = core::clearance(p_r, config.robot_radius, obstacles);
+    const double clearance_body = core::clearance(pose.position(), config.robot_radius, obstacles);
 
     ++summary.steps;
     if (!out.valid) ++summary.invalid_steps;
@@ -278,12 +278,12 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& r
       observer(step);
     }
     if (last) break;
-    pose = integrateUnicycle(pose, heading, out.u, h);
+    pose = core::integrateUnicycle(pose, heading, out.u, h);
     if (!fixed_step) t += h;
   }
   summary.metrics = metrics.result();
   return summary;
 }
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

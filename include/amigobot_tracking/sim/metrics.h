@@ -30,14 +30,14 @@
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 // What one step shows the metrics.
 struct MetricSample {
   double h = 0.0;                 // [s] time the command is held (0 for the last step)
   Eigen::Vector2d e = Eigen::Vector2d::Zero();  // tracking error p_d - p_r [m]
   double rho = 0.0;               // performance bound [m]; <= 0: the law has none
-  Twist2 u;                       // applied command
+  core::Twist2 u;                       // applied command
   double diamond_norm = 0.0;      // |v|/v_max + |w|/w_max of the applied command
   double clearance_offset = std::numeric_limits<double>::infinity();  // [m]
   double clearance_body = std::numeric_limits<double>::infinity();    // [m]
@@ -105,5 +105,5 @@ constexpr double kStallSpeed = 0.05;   // [m/s] net headway below this counts as
 constexpr double kStallWindow = 0.5;   // [s] over which the headway is measured
 constexpr double kStallError = 0.2;    // [m] twice the experiment's rho_inf: clearly not arrived
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

@@ -1,9 +1,9 @@
-#include "amigobot_tracking/core/baseline_estimators.h"
+#include "amigobot_tracking/sim/baseline_estimators.h"
 
 #include <cmath>
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 FiniteDifferenceFilter::FiniteDifferenceFilter(double time_constant) : tau_(time_constant) {}
 
@@ -66,5 +66,5 @@ bool ConstantVelocityKalman::update(double t, const Eigen::Vector2d& position) {
   return true;
 }
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

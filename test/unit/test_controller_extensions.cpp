@@ -5,11 +5,12 @@
 #include <random>
 
 #include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/closed_loop.h"
+#include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/core/unicycle.h"
 
 using namespace amigobot_tracking::core;
+using namespace amigobot_tracking::sim;
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include "amigobot_tracking/core/reference.h"
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 // From time t on, every measurement is shifted by offset (offsets of passed jumps add up).
 struct TargetJump {
@@ -38,23 +38,23 @@ struct TargetSensorConfig {
 
 class TargetSensor {
  public:
-  TargetSensor(const TargetSensorConfig& config, const Reference& reference);
+  TargetSensor(const TargetSensorConfig& config, const core::Reference& reference);
 
   // The newest sample delivered by time t (monotonic t). Stamped with its taking time;
   // before the first delivery, the sample taken at time 0.
-  const TargetSample& at(double t);
+  const core::TargetSample& at(double t);
   // The next time after t at which a new sample arrives (+inf without sampling period).
   double nextDelivery(double t) const;
 
  private:
-  TargetSample take(double t_taken);
+  core::TargetSample take(double t_taken);
 
   TargetSensorConfig config_;
-  const Reference& reference_;
+  const core::Reference& reference_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> noise_;
   std::int64_t index_ = -1;  // index of the last sample taken (periodic sampling)
-  TargetSample sample_;
+  core::TargetSample sample_;
 };
 
 // The robot's own pose as localisation (SLAM) reports it: the true pose taken every
@@ -74,23 +74,23 @@ class PoseSensor {
 
   // The true trajectory, step by step (monotonic t): the pose at t, then the command held
   // from t on. The pose at any earlier time is the exact unicycle arc between records.
-  void record(double t, const Pose2& pose);
-  void hold(const Twist2& u);
+  void record(double t, const core::Pose2& pose);
+  void hold(const core::Twist2& u);
   // The newest sample delivered by time t (after record(t, ...)), stamped with its taking
   // time; before the first delivery, the pose at the first record.
-  PoseSample at(double t);
+  core::PoseSample at(double t);
   // The next time after t at which a new sample arrives (+inf with continuous sampling).
   double nextDelivery(double t) const;
 
  private:
   struct Record {
     double t;
-    Pose2 pose;
-    Twist2 u;
+    core::Pose2 pose;
+    core::Twist2 u;
   };
   PoseSensorConfig config_;
   std::deque<Record> history_;
 };
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

@@ -9,14 +9,14 @@
 #include <vector>
 
 #include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/metrics.h"
+#include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/reference.h"
-#include "amigobot_tracking/core/step_size.h"
-#include "amigobot_tracking/core/target_sensor.h"
+#include "amigobot_tracking/sim/step_size.h"
+#include "amigobot_tracking/sim/target_sensor.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 // Which control law closes the loop.
 enum class ControlLaw {
@@ -55,9 +55,9 @@ struct BaselineParams {
 };
 
 struct ClosedLoopSetup {
-  ControllerConfig controller;
-  Pose2 initial_pose;
-  std::vector<Disk> obstacles;
+  core::ControllerConfig controller;
+  core::Pose2 initial_pose;
+  std::vector<core::Disk> obstacles;
   // Obstacle velocities [m/s], one per obstacle (centre(t) = centre + velocity t); empty: static.
   // The controller is given them (Disk::velocity, ground truth; used with moving_obstacles).
   std::vector<Eigen::Vector2d> obstacle_velocities;
@@ -80,17 +80,17 @@ struct ClosedLoopSetup {
 struct ClosedLoopStep {
   double t = 0.0;
   double h = 0.0;                  // [s] how long the command is held (0 at the last step)
-  Pose2 pose;
-  ReferenceState reference;        // the true target
-  TargetSample sample;             // what the controller was given
-  PoseSample pose_sample;          // the robot pose the controller was given (== pose, stamp t
+  core::Pose2 pose;
+  core::ReferenceState reference;        // the true target
+  core::TargetSample sample;             // what the controller was given
+  core::PoseSample pose_sample;          // the robot pose the controller was given (== pose, stamp t
                                    // without a pose sensor)
-  ControllerOutput output;
+  core::ControllerOutput output;
   Eigen::Vector2d p_r_true = Eigen::Vector2d::Zero();  // the true offset point (output.p_r is
                                                       // the controller's belief)
   double clearance_offset = 0.0;   // disk of radius R around the true p_r to the nearest obstacle [m]
   double clearance_body = 0.0;     // disk of radius R around the centre p [m]
-  const std::vector<Disk>* obstacles = nullptr;  // where the obstacles are at t
+  const std::vector<core::Disk>* obstacles = nullptr;  // where the obstacles are at t
 };
 
 struct ClosedLoopSummary {
@@ -113,8 +113,8 @@ using ClosedLoopObserver = std::function<void(const ClosedLoopStep&)>;
 std::string validateSetup(const ClosedLoopSetup& setup);
 
 // The setup must be valid (validateSetup empty).
-ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const Reference& reference,
+ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Reference& reference,
                                 const ClosedLoopObserver& observer = {});
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

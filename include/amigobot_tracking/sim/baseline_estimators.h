@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 class TargetVelocityFilter {
  public:
@@ -54,5 +54,5 @@ class ConstantVelocityKalman : public TargetVelocityFilter {
   Eigen::Matrix2d p_[2];  // per axis covariance
 };
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

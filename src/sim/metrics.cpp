@@ -1,10 +1,10 @@
-#include "amigobot_tracking/core/metrics.h"
+#include "amigobot_tracking/sim/metrics.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 void MetricsAccumulator::add(const MetricSample& s) {
   ++m_.steps;
@@ -76,5 +76,5 @@ RunMetrics MetricsAccumulator::result() const {
   return r;
 }
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

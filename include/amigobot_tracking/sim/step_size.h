@@ -13,7 +13,7 @@
 #pragma once
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 struct StepPolicy {
   double min_step = 1e-3;          // [s] the fine step (near obstacles, tight envelope)
@@ -33,5 +33,5 @@ struct StepSituation {
 // In [min_step, max_step]; pure.
 double chooseStep(const StepPolicy& policy, const StepSituation& situation);
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

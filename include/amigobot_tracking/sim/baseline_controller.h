@@ -9,29 +9,29 @@
 #include "amigobot_tracking/core/controller.h"
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 class ProportionalController {
  public:
   // Robot, avoidance, saturation and estimator parameters are taken from `config` (which
   // must be valid); k_p [1/s] > 0 is the proportional gain.
-  ProportionalController(const ControllerConfig& config, double k_p);
+  ProportionalController(const core::ControllerConfig& config, double k_p);
 
   // Same contract as PerformanceController::step.
-  ControllerOutput step(double t, const Pose2& pose, const TargetSample& target,
-                        const std::vector<Disk>& obstacles);
+  core::ControllerOutput step(double t, const core::Pose2& pose, const core::TargetSample& target,
+                        const std::vector<core::Disk>& obstacles);
 
-  const DiamondSet& diamond() const { return diamond_; }
-  const VelocityEstimator& estimator() const { return estimator_; }
+  const core::DiamondSet& diamond() const { return diamond_; }
+  const core::VelocityEstimator& estimator() const { return estimator_; }
 
  private:
-  ControllerConfig config_;
+  core::ControllerConfig config_;
   double k_p_;
-  DiamondSet diamond_;
-  VelocityEstimator estimator_;
+  core::DiamondSet diamond_;
+  core::VelocityEstimator estimator_;
   bool started_ = false;
   double last_t_ = 0.0;
 };
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

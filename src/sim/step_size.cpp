@@ -1,10 +1,10 @@
-#include "amigobot_tracking/core/step_size.h"
+#include "amigobot_tracking/sim/step_size.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 double chooseStep(const StepPolicy& policy, const StepSituation& s) {
   const double lo = policy.min_step, hi = std::max(policy.min_step, policy.max_step);
@@ -20,5 +20,5 @@ double chooseStep(const StepPolicy& policy, const StepSituation& s) {
   return std::clamp(std::isfinite(h) ? h : lo, lo, hi);
 }
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
     const ros_layer::RecordedRunSummary s = run.summary();
     sim::writeTrajectoryCsv(out + "/trajectory.csv", run.rows());
     sim::writeText(out + "/metrics.json", ros_layer::recordedRunJson(s, config, run.allObstacles(), name));
-    const core::RunMetrics& m = s.metrics;
+    const sim::RunMetrics& m = s.metrics;
     std::printf("tracking: %llu steps over %.1f s, path %.2f m; |e| < rho in %.1f %% of steps, max |e|/rho %.2f, "
                 "AAE %.3f m, ASE %.4f m^2, TEC %.2f\n",
                 static_cast<unsigned long long>(m.steps), m.sim_time, s.path_length, 100.0 * s.within_rho_fraction,

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/metrics.h"
+#include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/offset_point.h"
-#include "amigobot_tracking/core/target_sensor.h"
+#include "amigobot_tracking/sim/target_sensor.h"
 #include "amigobot_tracking/core/unicycle.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
@@ -26,9 +26,9 @@ sim::Scenario shipped(const std::string& name) {
   return sim::loadScenario(std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/" + name + ".yaml");
 }
 
-core::RunMetrics run(const sim::Scenario& s) { return sim::runScenario(s, false).summary.metrics; }
+sim::RunMetrics run(const sim::Scenario& s) { return sim::runScenario(s, false).summary.metrics; }
 
-core::RunMetrics withTangential(sim::Scenario s, bool on) {
+sim::RunMetrics withTangential(sim::Scenario s, bool on) {
   s.setup.controller.tangential_avoidance = on;
   return run(s);
 }
@@ -42,7 +42,7 @@ void expectNoLoss(double on, std::uint64_t on_contacts, double off, const std::s
 }  // namespace
 
 TEST(PoseSensor, DeliversPeriodicSamplesLateAndExactlyOnTheArc) {
-  core::PoseSensor sensor({0.1, 0.2});  // 10 Hz, 200 ms late
+  sim::PoseSensor sensor({0.1, 0.2});  // 10 Hz, 200 ms late
   const core::Twist2 u{0.3, 0.5};
   core::Pose2 pose{1.0, 2.0, 0.3};
   const core::Pose2 start = pose;
@@ -60,9 +60,9 @@ TEST(PoseSensor, DeliversPeriodicSamplesLateAndExactlyOnTheArc) {
     pose = core::integrateUnicycle(pose, u, 0.05);
   }
   EXPECT_NEAR(sensor.nextDelivery(1.0), 1.1, 1e-9);  // 0.9 taken, delivered at 1.1
-  EXPECT_FALSE(core::PoseSensorConfig{}.active());
-  EXPECT_NE(core::PoseSensorConfig({-0.1, 0.0}).validate().find("pose_sample_period"), std::string::npos);
-  EXPECT_NE(core::PoseSensorConfig({0.0, -0.1}).validate().find("pose_delay"), std::string::npos);
+  EXPECT_FALSE(sim::PoseSensorConfig{}.active());
+  EXPECT_NE(sim::PoseSensorConfig({-0.1, 0.0}).validate().find("pose_sample_period"), std::string::npos);
+  EXPECT_NE(sim::PoseSensorConfig({0.0, -0.1}).validate().find("pose_delay"), std::string::npos);
 }
 
 // The pose is 200 ms old and the commands change every step: replaying them is exact.
@@ -70,7 +70,7 @@ TEST(PoseAgeCompensation, ReplaysEveryCommandSinceTheStamp) {
   core::ControllerConfig config;
   config.compensate_pose_age = true;
   core::PerformanceController controller(config);
-  core::PoseSensor sensor({0.0, 0.2});
+  sim::PoseSensor sensor({0.0, 0.2});
   core::Pose2 pose{0.0, 0.0, 0.4};
   double worst = 0.0;
   for (int k = 0; k <= 60; ++k) {
@@ -107,9 +107,9 @@ TEST(TangentialCap, EscapeNeverExceedsTheAttraction) {
 
 TEST(StallMetric, NetHeadwayNotCommandedSpeed) {
   auto longest = [](auto position, double error) {
-    core::MetricsAccumulator acc;
+    sim::MetricsAccumulator acc;
     for (int k = 0; k <= 300; ++k) {  // 3 s at 100 Hz
-      core::MetricSample m;
+      sim::MetricSample m;
       m.t = 0.01 * k;
       m.h = k < 300 ? 0.01 : 0.0;
       m.p_r = position(m.t);
@@ -131,8 +131,8 @@ TEST(StallMetric, NetHeadwayNotCommandedSpeed) {
 TEST(SaddleScenario, EscapeMeetsTheIssueTargets) {
   const sim::Scenario s = shipped("saddle_line");
   ASSERT_FALSE(s.setup.controller.tangential_avoidance) << "the file ships the paper's law";
-  const core::RunMetrics paper = withTangential(s, false);
-  const core::RunMetrics escape = withTangential(s, true);
+  const sim::RunMetrics paper = withTangential(s, false);
+  const sim::RunMetrics escape = withTangential(s, true);
   EXPECT_GT(paper.longest_stall, 0.5);  // the case is the deadlock it is meant to be
   EXPECT_LE(escape.longest_stall, 0.5);
   EXPECT_LE(escape.max_true_error, 0.5 * paper.max_true_error);
@@ -148,8 +148,8 @@ TEST(SaddleScenario, EscapeMeetsTheTargetsWithNoisySamples) {
   s.setup.sample_period = 0.1;
   s.setup.sensor.noise_std = 0.01;
   s.setup.sensor.seed = 3;
-  const core::RunMetrics paper = withTangential(s, false);
-  const core::RunMetrics escape = withTangential(s, true);
+  const sim::RunMetrics paper = withTangential(s, false);
+  const sim::RunMetrics escape = withTangential(s, true);
   EXPECT_GT(paper.longest_stall, 0.5);
   EXPECT_LE(escape.longest_stall, 0.5);
   EXPECT_LE(escape.max_true_error, 0.5 * paper.max_true_error);
@@ -163,11 +163,11 @@ TEST(SaddleScenario, EscapeMeetsTheTargetsWithNoisySamples) {
 TEST(ShippedScenarios, EscapeLosesNoClearance) {
   for (const char* name : kShipped) {
     sim::Scenario s = shipped(name);
-    const core::RunMetrics off = withTangential(s, false), on = withTangential(s, true);
+    const sim::RunMetrics off = withTangential(s, false), on = withTangential(s, true);
     expectNoLoss(on.min_clearance_offset, on.offset_collisions, off.min_clearance_offset, std::string(name) + " offset");
     EXPECT_EQ(on.diamond_violations + on.nan_count, 0u) << name;
     s.setup.controller.body_safe = true;
-    const core::RunMetrics safe_off = withTangential(s, false), safe_on = withTangential(s, true);
+    const sim::RunMetrics safe_off = withTangential(s, false), safe_on = withTangential(s, true);
     expectNoLoss(safe_on.min_clearance_body, safe_on.body_collisions, safe_off.min_clearance_body,
                  std::string(name) + " body (body_safe)");
     expectNoLoss(safe_on.min_clearance_offset, safe_on.offset_collisions, safe_off.min_clearance_offset,
@@ -179,7 +179,7 @@ TEST(ShippedScenarios, EscapeChangesNothingWithoutConflict) {
   for (const char* name : kShipped) {
     sim::Scenario s = shipped(name);
     for (core::Disk& d : s.setup.obstacles) d.center += Eigen::Vector2d(100.0, 100.0);  // never near
-    const core::RunMetrics off = withTangential(s, false), on = withTangential(s, true);
+    const sim::RunMetrics off = withTangential(s, false), on = withTangential(s, true);
     EXPECT_EQ(on.escape_steps, 0u) << name;
     EXPECT_EQ(on.ase, off.ase) << name;
     EXPECT_EQ(on.tec, off.tec) << name;
@@ -200,7 +200,7 @@ TEST(MovingObstacles, FewerCollisionsWhenTheVelocityIsUsed) {
       sim::Scenario s = sim::randomVariant(base, options, static_cast<std::uint64_t>(i));
       for (const bool moving : {false, true}) {
         s.setup.controller.moving_obstacles = moving;
-        const core::RunMetrics m = run(s);
+        const sim::RunMetrics m = run(s);
         runs_hit[moving] += m.body_collisions > 0;
         offset_hit[moving] += m.offset_collisions > 0;
       }

@@ -1,4 +1,4 @@
-#include "amigobot_tracking/core/target_sensor.h"
+#include "amigobot_tracking/sim/target_sensor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "amigobot_tracking/core/unicycle.h"
 
 namespace amigobot_tracking {
-namespace core {
+namespace sim {
 
 std::string TargetSensorConfig::validate() const {
   std::ostringstream err;
@@ -27,14 +27,14 @@ std::string TargetSensorConfig::validate() const {
   return err.str();
 }
 
-TargetSensor::TargetSensor(const TargetSensorConfig& config, const Reference& reference)
+TargetSensor::TargetSensor(const TargetSensorConfig& config, const core::Reference& reference)
     : config_(config), reference_(reference), rng_(config.seed), noise_(0.0, 1.0) {
   sample_ = take(0.0);
   index_ = 0;
 }
 
-TargetSample TargetSensor::take(double t_taken) {
-  TargetSample s;
+core::TargetSample TargetSensor::take(double t_taken) {
+  core::TargetSample s;
   s.stamp = t_taken;
   s.position = reference_.at(t_taken).position;
   for (const TargetJump& jump : config_.jumps)
@@ -43,7 +43,7 @@ TargetSample TargetSensor::take(double t_taken) {
   return s;
 }
 
-const TargetSample& TargetSensor::at(double t) {
+const core::TargetSample& TargetSensor::at(double t) {
   const double taken_by = t - config_.delay;
   if (taken_by <= 0.0) return sample_;
   if (config_.sample_period <= 0.0) {
@@ -75,13 +75,13 @@ std::string PoseSensorConfig::validate() const {
   return err.str();
 }
 
-void PoseSensor::record(double t, const Pose2& pose) { history_.push_back({t, pose, Twist2()}); }
+void PoseSensor::record(double t, const core::Pose2& pose) { history_.push_back({t, pose, core::Twist2()}); }
 
-void PoseSensor::hold(const Twist2& u) {
+void PoseSensor::hold(const core::Twist2& u) {
   if (!history_.empty()) history_.back().u = u;
 }
 
-PoseSample PoseSensor::at(double t) {
+core::PoseSample PoseSensor::at(double t) {
   if (history_.empty()) return {};
   double stamp = t - config_.delay;
   if (config_.sample_period > 0.0)  // same tolerance as the target sensor
@@ -90,7 +90,7 @@ PoseSample PoseSensor::at(double t) {
   // Stamps only grow: records before the one that holds this stamp are no longer needed.
   while (history_.size() > 1 && history_[1].t <= stamp) history_.pop_front();
   const Record& r = history_.front();
-  return {stamp, stamp > r.t ? integrateUnicycle(r.pose, r.u, stamp - r.t) : r.pose};
+  return {stamp, stamp > r.t ? core::integrateUnicycle(r.pose, r.u, stamp - r.t) : r.pose};
 }
 
 double PoseSensor::nextDelivery(double t) const {
@@ -99,5 +99,5 @@ double PoseSensor::nextDelivery(double t) const {
   return std::max(0.0, next_index) * config_.sample_period + config_.delay;
 }
 
-}  // namespace core
+}  // namespace sim
 }  // namespace amigobot_tracking

@@ -1,0 +1,67 @@
+# Functions the library fragments use. Included first.
+
+# A thin command-line main over the libraries; `rosrun amigobot_tracking <tool>` finds it
+# in devel and in an install space.
+function(amigobot_add_tool name)
+  add_executable(${name} ${ARGN})
+  target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
+  install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+endfunction()
+
+# A library of the package, installed with its targets (headers: install.cmake).
+function(amigobot_add_library name)
+  add_library(${name} ${ARGN})
+  target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
+  install(TARGETS ${name}
+    ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+    LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+    RUNTIME DESTINATION ${CATKIN_GLOBAL_BIN_DESTINATION})
+endfunction()
+
+# A gtest unit (one file per unit under test).
+# Call the test helpers inside if(CATKIN_ENABLE_TESTING).
+function(amigobot_add_unit_test name)
+  catkin_add_gtest(${name} ${ARGN})
+  target_link_libraries(${name} ${GTEST_MAIN_LIBRARIES})
+  target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
+endfunction()
+
+# A gtest rostest: FILE.test runs the executable NAME built from the sources.
+function(amigobot_add_rostest_gtest name file)
+  add_rostest_gtest(${name} ${file} ${ARGN})
+  target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
+  target_link_libraries(${name} ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+endfunction()
+
+# A command run as one JUnit test case (scripts/test/junit_check.py writes the XML the
+# counter reads). catkin's runner takes the command as one string.
+function(amigobot_add_check name)
+  string(REPLACE ";" " " command "${ARGN}")
+  catkin_run_tests_target("check" ${name} "check-${name}.xml"
+    COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/junit_check.py --name ${name} --xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/check-${name}.xml -- ${command}")
+endfunction()
+
+# A Google Benchmark binary (`make bench`): figures are printed, never asserted.
+# amigobot_add_benchmark(NAME SOURCE LIBRARY...)
+function(amigobot_add_benchmark name source)
+  if(benchmark_FOUND)
+    add_executable(${name} EXCLUDE_FROM_ALL ${source})
+    target_link_libraries(${name} ${ARGN} benchmark::benchmark)
+    target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
+    set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
+  endif()
+endfunction()
+
+# pluginlib and class_loader on Debian are the ROS 2 packages, whose headers live one folder
+# deeper (/usr/include/pluginlib/pluginlib/...); on a ROS 1 distro (Noetic) they do not.
+set(AMIGOBOT_PLUGINLIB_WORKAROUND "")
+foreach(dir /usr/include/pluginlib /usr/include/class_loader)
+  get_filename_component(leaf ${dir} NAME)
+  if(EXISTS ${dir}/${leaf})
+    list(APPEND AMIGOBOT_PLUGINLIB_WORKAROUND ${dir})
+  endif()
+endforeach()
+include_directories(SYSTEM ${AMIGOBOT_PLUGINLIB_WORKAROUND})

@@ -1,0 +1,25 @@
+# Whole-package checks, each one counted test case: the URDF parses, every launch file passes
+# roslaunch's checks (nodes resolve to executables, parameters load), sim.launch really runs,
+# and the shipped rviz display shows the markers.
+if(CATKIN_ENABLE_TESTING)
+  find_program(AMIGOBOT_CHECK_URDF check_urdf)
+  if(NOT AMIGOBOT_CHECK_URDF)
+    message(FATAL_ERROR "check_urdf not found (apt-get install liburdfdom-tools)")
+  endif()
+  amigobot_add_check(urdf_parses ${AMIGOBOT_CHECK_URDF} ${PROJECT_SOURCE_DIR}/urdf/amigobot.urdf)
+
+  set(check_launch ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_launch.py ${PROJECT_SOURCE_DIR}/launch)
+  amigobot_add_check(launch_amigobot ${check_launch}/amigobot.launch)
+  amigobot_add_check(launch_amigobot_args ${check_launch}/amigobot.launch port:=/dev/ttyACM0 controller:=sim laser_x:=0.2 virtual_obstacles:=${PROJECT_SOURCE_DIR}/config/virtual_obstacles.yaml)
+  amigobot_add_check(launch_amigobot_driver ${check_launch}/amigobot_driver.launch)
+  amigobot_add_check(launch_sim ${check_launch}/sim.launch)
+  amigobot_add_check(launch_sim_pty_rviz ${check_launch}/sim.launch pty:=/tmp/amigobot controller:=sim rviz:=true tracking_params:=${PROJECT_SOURCE_DIR}/config/demo_tracking.yaml)
+  amigobot_add_check(launch_two_robots ${check_launch}/two_robots.launch)
+  amigobot_add_check(launch_rviz ${check_launch}/rviz.launch ns:=tracker)
+  add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization
+              trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
+
+  # Under Xvfb (screenshots in build/rviz_check).
+  amigobot_add_check(rviz_markers_visible ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/rviz/check_rviz_markers.py
+    --ws ${CATKIN_DEVEL_PREFIX}/.. --out ${CMAKE_BINARY_DIR}/rviz_check)
+endif()

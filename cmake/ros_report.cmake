@@ -1,0 +1,13 @@
+# Layer 3, ros: run_report scores a recorded run (rosbag) like the offline simulator (make demo).
+amigobot_add_library(amigobot_tracking_ros_report src/ros/recorded_run.cpp)
+target_link_libraries(amigobot_tracking_ros_report amigobot_tracking_sim amigobot_tracking_core)
+add_dependencies(amigobot_tracking_ros_report ${PROJECT_NAME}_generate_messages_cpp)
+
+amigobot_add_tool(run_report src/ros/programs/run_report.cpp)
+target_include_directories(run_report SYSTEM PRIVATE ${rosbag_INCLUDE_DIRS})
+target_link_libraries(run_report amigobot_tracking_ros_report amigobot_tracking_aria ${rosbag_LIBRARIES} ${catkin_LIBRARIES})
+
+if(CATKIN_ENABLE_TESTING)
+  amigobot_add_unit_test(test_recorded_run test/unit/test_recorded_run.cpp)
+  target_link_libraries(test_recorded_run amigobot_tracking_ros_report ${catkin_LIBRARIES})
+endif()

@@ -1,0 +1,34 @@
+# Layer 3, ros: the tracking nodelet amigobot_tracking/Tracking and tracking_node over the
+# core, and the reference publisher (a target for simulation and the demo).
+amigobot_add_library(amigobot_tracking_ros
+  src/ros/conversions.cpp
+  src/ros/markers.cpp
+  src/ros/tracking_params.cpp
+  src/ros/tracking_node.cpp
+  src/ros/tracking_virtual_obstacles.cpp
+  src/ros/tracking_nodelet.cpp
+)
+target_include_directories(amigobot_tracking_ros SYSTEM PRIVATE ${urdfdom_INCLUDE_DIRS})
+target_link_libraries(amigobot_tracking_ros amigobot_tracking_core ${catkin_LIBRARIES} ${urdfdom_LIBRARIES})
+add_dependencies(amigobot_tracking_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
+
+amigobot_add_tool(tracking_node src/ros/programs/tracking_node_main.cpp)
+target_link_libraries(tracking_node amigobot_tracking_ros)
+amigobot_add_tool(reference_publisher src/ros/programs/reference_publisher.cpp)
+target_link_libraries(reference_publisher amigobot_tracking_ros)
+
+if(CATKIN_ENABLE_TESTING)
+  foreach(unit tracking_params conversions markers)
+    amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
+    target_link_libraries(test_${unit} amigobot_tracking_ros)
+  endforeach()
+  # The tracking nodelet in a real nodelet manager with a scripted world.
+  amigobot_add_rostest_gtest(test_tracking_nodelet test/rostest/tracking_nodelet.test test/rostest/test_tracking_nodelet.cpp)
+  target_link_libraries(test_tracking_nodelet amigobot_tracking_ros)
+  add_dependencies(test_tracking_nodelet amigobot_tracking_ros)
+  amigobot_add_rostest_gtest(test_tracking_bad_param test/rostest/tracking_bad_param.test test/rostest/test_tracking_bad_param.cpp)
+  add_dependencies(test_tracking_bad_param ${PROJECT_NAME}_generate_messages_cpp)
+endif()
+
+# Whole control cycles with a filled tf buffer (`make bench`).
+amigobot_add_benchmark(bench_tracking_cycle test/bench/bench_tracking_cycle.cpp amigobot_tracking_ros)
