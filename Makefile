@@ -7,7 +7,12 @@ SHELL := /bin/bash
 ROOT := $(abspath $(dir $(lastword $(MAKEFILE_LIST))))
 WS := $(ROOT)/.ws
 JOBS ?= 2
-CATKIN := catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release -j$(JOBS)
+# ccache (when installed) makes rebuilds and the install-space check's second build cheap;
+# CCACHE_BASEDIR lets that build (.ws-install, beside .ws) share the cache.
+CCACHE := $(shell command -v ccache)
+export CCACHE_BASEDIR := $(ROOT)
+CATKIN := catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release \
+  $(if $(CCACHE),-DCMAKE_CXX_COMPILER_LAUNCHER=$(CCACHE)) -j$(JOBS)
 SETUP := source $(WS)/devel/setup.bash
 RESULTS := $(WS)/build/test_results
 
@@ -72,4 +77,4 @@ fuzz: deps
 	$(ROOT)/scripts/run_fuzz.sh $(FUZZ_SECONDS)
 
 clean:
-	rm -rf $(WS)
+	rm -rf $(WS) $(ROOT)/.ws-install

@@ -5,10 +5,9 @@ install(DIRECTORY include/${PROJECT_NAME}/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_
 install(DIRECTORY launch config urdf DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 
-# ROS scripts: rosrun finds them in the package's bin folder; launch files reach the URDF
-# generator through $(find amigobot_tracking)/scripts/, i.e. the share folder.
+# ROS scripts: rosrun and roslaunch's $(find amigobot_tracking)/scripts/... find them in the
+# package's bin folder.
 catkin_install_python(PROGRAMS scripts/scripted_teleop.py scripts/urdf_with_laser.py
                       DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
-install(PROGRAMS scripts/urdf_with_laser.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
 # Offline tools' helpers (plotting and reports), usable from the install space.
 install(PROGRAMS scripts/plot_run.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)

@@ -1,6 +1,6 @@
 # Whole-package checks, each one counted test case: the URDF parses, every launch file passes
 # roslaunch's checks (nodes resolve to executables, parameters load), sim.launch really runs,
-# and the shipped rviz display shows the markers.
+# the install space works on its own, and the shipped rviz display shows the markers.
 if(CATKIN_ENABLE_TESTING)
   find_program(AMIGOBOT_CHECK_URDF check_urdf)
   if(NOT AMIGOBOT_CHECK_URDF)
@@ -18,6 +18,9 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(launch_rviz ${check_launch}/rviz.launch ns:=tracker)
   add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization
               trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
+
+  # `catkin_make install` into .ws-install, then sim.launch from that prefix alone.
+  amigobot_add_check(install_space ${PROJECT_SOURCE_DIR}/test/install/check_install_space.sh)
 
   # Under Xvfb (screenshots in build/rviz_check).
   amigobot_add_check(rviz_markers_visible ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/rviz/check_rviz_markers.py
