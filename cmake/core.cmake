@@ -21,6 +21,7 @@ add_library(amigobot_tracking_core
   src/core/scan_obstacles.cpp
   src/core/virtual_obstacles.cpp
   src/core/resume_ramp.cpp
+  src/core/tracking_supervisor.cpp
   src/core/waypoint_reference.cpp
 )
 target_include_directories(amigobot_tracking_core PUBLIC include)
