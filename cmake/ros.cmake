@@ -7,7 +7,10 @@ add_library(amigobot_tracking_ros
   src/ros/markers.cpp
   src/ros/tracking_params.cpp
   src/ros/tracking_node.cpp
-  src/ros/tracking_virtual_obstacles.cpp
+  src/ros/tracking_node_outputs.cpp
+  src/ros/virtual_obstacle_interface.cpp
+  src/ros/laser_obstacles.cpp
+  src/ros/tracking_statistics.cpp
   src/ros/tracking_nodelet.cpp
 )
 target_link_libraries(amigobot_tracking_ros amigobot_tracking_core ${catkin_LIBRARIES} ${urdfdom_LIBRARIES})
