@@ -73,6 +73,8 @@ amigobot_add_unit_test(test_conversions test/unit/test_conversions.cpp)
 target_link_libraries(test_conversions amigobot_tracking_ros)
 amigobot_add_unit_test(test_markers test/unit/test_markers.cpp)
 target_link_libraries(test_markers amigobot_tracking_ros)
+amigobot_add_unit_test(test_rate_monitor test/unit/test_rate_monitor.cpp)
+target_link_libraries(test_rate_monitor amigobot_tracking_ros)
 include(cmake/aria_tests.cmake)
 # Issue 8 in the simulator: pose sensor, pose-age replay, closed-loop targets on the shipped scenarios.
 amigobot_add_unit_test(test_beyond_paper_sim test/unit/test_beyond_paper_sim.cpp)

@@ -39,7 +39,8 @@ TrackingNode::~TrackingNode() {
   timer_.stop();
   {
     std::lock_guard<std::mutex> lock(state_mutex_);
-    if (supervisor_.enabled()) publishLocked(supervisor_.disable(sinceEpoch(ros::Time::now())));  // leave the robot standing
+    // Leave the robot standing.
+    if (supervisor_.enabled()) publishLocked(supervisor_.disable(sinceEpoch(ros::Time::now())));
   }
   diagnostics_.reset();
   reconfigure_.reset();

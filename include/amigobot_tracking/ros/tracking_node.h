@@ -79,7 +79,8 @@ class TrackingNode {
                   core::ControllerOutput* out);
   void publishLocked(const core::Twist2& u);  // cmd_vel
   void logStopLocked() const;                 // why the supervisor sent zero (throttled)
-  void publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output, const core::ControllerOutput& out);
+  void publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output,
+                          const core::ControllerOutput& out);
   void publishMarkersLocked(const ros::Time& now, const Lookup& pose, bool have_output,
                             const core::ControllerOutput& out, const core::VirtualObstacleSet& virtuals);
   double sinceEpoch(const ros::Time& t) const { return (t - epoch_).toSec(); }
