@@ -5,7 +5,10 @@ amigobot_add_library(amigobot_tracking_ros
   src/ros/markers.cpp
   src/ros/tracking_params.cpp
   src/ros/tracking_node.cpp
-  src/ros/tracking_virtual_obstacles.cpp
+  src/ros/tracking_node_outputs.cpp
+  src/ros/virtual_obstacle_interface.cpp
+  src/ros/laser_obstacles.cpp
+  src/ros/tracking_statistics.cpp
   src/ros/tracking_nodelet.cpp
 )
 target_include_directories(amigobot_tracking_ros SYSTEM PRIVATE ${urdfdom_INCLUDE_DIRS})
@@ -18,7 +21,7 @@ amigobot_add_tool(reference_publisher src/ros/programs/reference_publisher.cpp)
 target_link_libraries(reference_publisher amigobot_tracking_ros)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit tracking_params conversions markers)
+  foreach(unit tracking_params conversions markers rate_monitor)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_ros)
   endforeach()

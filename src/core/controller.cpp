@@ -84,9 +84,15 @@ void PerformanceController::reset() {
   estimator_ = VelocityEstimator(config_.estimator);
   started_ = false;
   rho_ = 0.0;
+  start_ratio_ = 0.0;
   conflict_ = 0.0;
   passing_side_ = 0;
   commands_.clear();
+}
+
+void PerformanceController::restart(double start_ratio) {
+  reset();
+  start_ratio_ = start_ratio;
 }
 
 void PerformanceController::setConfig(const ControllerConfig& config) {
@@ -164,6 +170,8 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   if (!started_) {
     started_ = true;
     rho_ = config_.rho_0;
+    if (start_ratio_ > 0.0) rho_ = std::max(rho_, error_norm / start_ratio_);
+    start_ratio_ = 0.0;
   } else if (t > last_t_) {
     rho_ = rhoStep(gains_, rho_, conflict_, t - last_t_);
     out.active.rho_relaxed = conflict_ < 0.0;

@@ -1,5 +1,6 @@
 #include "amigobot_tracking/ros/conversions.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace amigobot_tracking {
@@ -59,6 +60,11 @@ geometry_msgs::TransformStamped toTransform(const std::string& parent, const std
   t.transform.rotation.z = std::sin(0.5 * pose.theta);
   t.transform.rotation.w = std::cos(0.5 * pose.theta);
   return t;
+}
+
+double ageOf(const ros::Time& stamp, const ros::Time& now) {
+  if (stamp.isZero()) return 0.0;  // static transform: always current
+  return std::max(0.0, (now - stamp).toSec());
 }
 
 void fillState(const core::ControllerOutput& out, TrackingState* s) {

@@ -82,6 +82,8 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   reset_srv_ = nh_.advertiseService("reset_odometry", &AmigobotDriver::resetOdometry, this);
   updater_.setHardwareID("amigobot " + params_.client.port);
   updater_.add("AmigoBot driver", this, &AmigobotDriver::diagnose);
+  sip_rate_ = std::make_unique<RateMonitor>("SIP rate", "SIP rate [Hz]", 0.5 / params_.client.robot.sip_cycle,
+                                            std::numeric_limits<double>::infinity(), 0.0, 1);
   diagnostics_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.force_update(); });
   if (params_.publish_sonar_tf) publishSonarTransforms();
 
@@ -111,6 +113,7 @@ void AmigobotDriver::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
 }
 
 void AmigobotDriver::onSip(const aria::RobotState& state) {
+  sip_rate_->tick();
   std::lock_guard<std::mutex> lock(publish_mutex_);
   const ros::Time stamp = ros::Time::now();
   const auto& pose = state.odometry.pose;
@@ -214,11 +217,10 @@ bool AmigobotDriver::resetOdometry(std_srvs::Empty::Request&, std_srvs::Empty::R
 void AmigobotDriver::diagnose(diagnostic_updater::DiagnosticStatusWrapper& d) {
   const aria::ClientStatus s = client_->status();
   using diagnostic_msgs::DiagnosticStatus;
-  if (s.link != aria::LinkState::kConnected) {
+  const bool connected = s.link == aria::LinkState::kConnected;
+  if (!connected) {
     d.summaryf(DiagnosticStatus::ERROR, "not connected (%s)%s%s", aria::linkStateName(s.link).c_str(),
                s.last_error.empty() ? "" : ": ", s.last_error.c_str());
-  } else if (s.sip_rate < 0.5 / params_.client.robot.sip_cycle) {
-    d.summaryf(DiagnosticStatus::WARN, "SIP rate %.1f Hz is low", s.sip_rate);
   } else if (s.robot && s.robot->battery_voltage < params_.battery_low_voltage) {
     d.summaryf(DiagnosticStatus::WARN, "battery low: %.1f V", s.robot->battery_voltage);
   } else {
@@ -227,7 +229,7 @@ void AmigobotDriver::diagnose(diagnostic_updater::DiagnosticStatusWrapper& d) {
   d.add("link", aria::linkStateName(s.link));
   d.add("port", params_.client.port);
   if (s.identity) d.add("robot", s.identity->name + " (" + s.identity->robot_class + " " + s.identity->subclass + ")");
-  d.add("SIP rate [Hz]", s.sip_rate);
+  sip_rate_->report(d, connected);  // "SIP rate [Hz]" and its window; no SIPs is no news without a link
   d.add("SIPs", s.sips);
   d.add("connections", s.connections);
   d.add("still-open recoveries", s.still_open_recoveries);

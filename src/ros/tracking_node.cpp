@@ -1,22 +1,28 @@
 #include "amigobot_tracking/ros/tracking_node.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
+#include <utility>
 
-#include "amigobot_tracking/VirtualObstacleArray.h"
+#include <visualization_msgs/MarkerArray.h>
+
 #include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/ros/conversions.h"
-#include "amigobot_tracking/ros/markers.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
 
-double ageOf(const ros::Time& stamp, const ros::Time& now) {
-  if (stamp.isZero()) return 0.0;  // static transform: always current
-  return std::max(0.0, (now - stamp).toSec());
+core::SupervisorConfig supervisorConfigOf(const TrackingNodeConfig& node) {
+  core::SupervisorConfig c;
+  c.pose_timeout = node.pose_timeout;
+  c.scan_timeout = node.scan_timeout;
+  c.require_scan = node.require_scan;
+  c.control_period = 1.0 / node.control_rate;
+  c.ramp = {node.resume_v_accel, node.resume_w_accel};
+  c.pose_link = node.global_frame + " -> " + node.base_frame;
+  c.target_link = node.global_frame + " -> " + node.target_frame;
+  return c;
 }
 
 }  // namespace
@@ -33,14 +39,13 @@ TrackingNode::~TrackingNode() {
   timer_.stop();
   {
     std::lock_guard<std::mutex> lock(state_mutex_);
-    if (enabled_) publishZeroLocked();  // leave the robot standing
-    enabled_ = false;
+    // Leave the robot standing.
+    if (supervisor_.enabled()) publishLocked(supervisor_.disable(sinceEpoch(ros::Time::now())));
   }
   diagnostics_.reset();
   reconfigure_.reset();
-  scan_filter_.reset();
-  scan_sub_.reset();
-  marker_server_.reset();
+  laser_.reset();
+  virtual_obstacles_.reset();
   tf_listener_.reset();
 }
 
@@ -57,40 +62,23 @@ bool TrackingNode::start() {
     return false;
   }
   controller_ = core::PerformanceController(controller_config_);
-  obstacle_tracker_ = core::ObstacleTracker(tracker_config_);
+  supervisor_ = core::TrackingSupervisor(supervisorConfigOf(node_config_));
   pending_config_ = controller_config_;
-  virtual_obstacles_.assign(initial);
   epoch_ = ros::Time::now();
-  window_start_ = epoch_;
+  const double rate = node_config_.control_rate, inf = std::numeric_limits<double>::infinity();
+  control_rate_ = std::make_unique<RateMonitor>("control rate", "control rate measured [Hz]", rate, rate, 0.1, 1);
+  cmd_vel_rate_ = std::make_unique<RateMonitor>("cmd_vel", "cmd_vel rate measured [Hz]", rate, inf, 0.1, 1);
 
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>("cmd_vel", 1);
   state_pub_ = pnh_.advertise<TrackingState>("state", 10);
   markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
-  virtual_pub_ = pnh_.advertise<VirtualObstacleArray>("virtual_obstacles", 1, true);
-  marker_server_ = std::make_unique<interactive_markers::InteractiveMarkerServer>(pnh_.resolveName("obstacle_markers"));
-  {
-    std::lock_guard<std::mutex> lock(state_mutex_);
-    publishVirtualObstaclesLocked();
-  }
-  virtual_sub_ = pnh_.subscribe("virtual_obstacle", 10, &TrackingNode::onVirtualObstacle, this);
-  clicked_sub_ = nh_.subscribe("clicked_point", 10, &TrackingNode::onClickedPoint, this);
-  scan_sub_ = std::make_unique<message_filters::Subscriber<sensor_msgs::LaserScan>>(nh_, "scan", 5);
-  scan_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(
-      *scan_sub_, *tf_, node_config_.global_frame, 10, nh_);
-  scan_filter_->registerCallback(&TrackingNode::onScan, this);
-  scan_filter_->registerFailureCallback(
-      [this](const sensor_msgs::LaserScan::ConstPtr& scan, tf2_ros::filter_failure_reasons::FilterFailureReason why) {
-        ROS_WARN_THROTTLE(5.0, "tracking: scan in '%s' dropped: no transform to '%s' at its stamp (%s)",
-                          scan->header.frame_id.c_str(), node_config_.global_frame.c_str(),
-                          why == tf2_ros::filter_failure_reasons::OutTheBack ? "older than the tf buffer"
-                          : why == tf2_ros::filter_failure_reasons::EmptyFrameID ? "empty frame_id"
-                                                                                  : "tf not available in time");
-      });
+  virtual_obstacles_ = std::make_unique<VirtualObstacleInterface>(nh_, pnh_, *tf_, node_config_.global_frame,
+                                                                  node_config_.clicked_point_radius, initial);
+  laser_ = std::make_unique<LaserObstacles>(*tf_, node_config_.global_frame, scan_config_, tracker_config_, epoch_);
+  laser_->subscribe(nh_);
 
   enable_srv_ = pnh_.advertiseService("enable", &TrackingNode::onEnable, this);
   disable_srv_ = pnh_.advertiseService("disable", &TrackingNode::onDisable, this);
-  remove_srv_ = pnh_.advertiseService("remove_virtual_obstacle", &TrackingNode::onRemove, this);
-  clear_srv_ = pnh_.advertiseService("clear_virtual_obstacles", &TrackingNode::onClear, this);
 
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TrackingConfig>>(reconfigure_mutex_, pnh_);
   TrackingConfig initial_gains;
@@ -128,17 +116,17 @@ bool TrackingNode::start() {
 
 bool TrackingNode::enabled() const {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  return enabled_;
+  return supervisor_.enabled();
 }
 
 std::string TrackingNode::status() const {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  return status_;
+  return supervisor_.status();
 }
 
 CycleStats TrackingNode::cycleStats() const {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  return stats_;
+  return stats_.cycles();
 }
 
 TrackingNode::Lookup TrackingNode::lookup(const std::string& frame, const ros::Time& now) const {
@@ -154,66 +142,13 @@ TrackingNode::Lookup TrackingNode::lookup(const std::string& frame, const ros::T
 }
 
 void TrackingNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-  std::lock_guard<std::mutex> lock(scan_mutex_);
-  latest_scan_ = scan;
-}
-
-void TrackingNode::updateScanObstaclesLocked() {
-  sensor_msgs::LaserScan::ConstPtr scan;
-  {
-    std::lock_guard<std::mutex> lock(scan_mutex_);
-    scan = latest_scan_;
-  }
-  if (!scan || scan == processed_scan_) return;
-  processed_scan_ = scan;
-  // Only a scan turned into disks counts as fresh: a bad one must not hide a blind laser.
-  try {
-    // The MessageFilter let the scan through only once this transform was available.
-    const geometry_msgs::TransformStamped sensor =
-        tf_->lookupTransform(node_config_.global_frame, scan->header.frame_id, scan->header.stamp);
-    if (core::scanToObstacles(toScanGeometry(*scan), scan->ranges, toAffine2d(sensor.transform), scan_config_,
-                              &scan_disks_next_)) {
-      scan_disks_.swap(scan_disks_next_);  // the previous disks stay until a good scan replaces them
-      used_scan_ = scan;
-      obstacle_tracker_.update((scan->header.stamp - epoch_).toSec(), scan_disks_);
-    } else {
-      ROS_WARN_THROTTLE(5.0, "tracking: scan with invalid geometry ignored (frame %s)", scan->header.frame_id.c_str());
-    }
-  } catch (const tf2::TransformException& ex) {
-    ROS_WARN_THROTTLE(5.0, "tracking: scan dropped: %s", ex.what());
-  }
-}
-
-void TrackingNode::publishZeroLocked() {
-  cmd_pub_.publish(geometry_msgs::Twist());
-  last_command_ = {};
-  last_command_time_ = ros::Time::now();
-  ramping_ = true;
-}
-
-core::Twist2 TrackingNode::publishCommandLocked(const ros::Time& now, const core::Twist2& u) {
-  core::Twist2 sent = u;
-  if (ramping_) {
-    // Time since the last command, at most one period: a late cycle does not earn a bigger
-    // step than the period allows, and one that catches up right after earns less.
-    const double period = 1.0 / node_config_.control_rate;
-    const double dt = last_command_time_.isZero() ? period
-                                                  : std::clamp((now - last_command_time_).toSec(), 0.0, period);
-    const core::RampStep step =
-        core::rampTowards(u, last_command_, {node_config_.resume_v_accel, node_config_.resume_w_accel}, dt);
-    sent = step.u;
-    ramping_ = step.limited;
-  }
-  cmd_pub_.publish(toTwist(sent));
-  last_command_ = sent;
-  last_command_time_ = now;
-  return sent;
+  if (laser_) laser_->onScan(scan);
 }
 
 void TrackingNode::onTimer(const ros::TimerEvent&) { controlCycle(ros::Time::now()); }
 
 void TrackingNode::controlCycle(const ros::Time& now) {
-  const auto wall_start = std::chrono::steady_clock::now();
+  const auto wall_start = TrackingStatistics::Clock::now();
   const bool markers_wanted = markers_pub_.getNumSubscribers() > 0;
   {
     std::lock_guard<std::mutex> lock(state_mutex_);
@@ -224,186 +159,74 @@ void TrackingNode::controlCycle(const ros::Time& now) {
     }
     const Lookup pose = lookup(node_config_.base_frame, now);
     const Lookup target = lookup(node_config_.target_frame, now);
-    updateScanObstaclesLocked();
-    scan_age_ = used_scan_ ? ageOf(used_scan_->header.stamp, now) : -1.0;
-    const bool scan_fresh = scan_age_ >= 0.0 && scan_age_ <= node_config_.scan_timeout;
+    scan_age_ = laser_->update(now);
     obstacles_.clear();
-    if (scan_fresh) {
+    if (supervisor_.scanFresh(scan_age_)) {
       // With moving_obstacles the laser disks carry velocities from the tracker.
-      obstacles_ = controller_config_.moving_obstacles ? obstacle_tracker_.obstaclesAt((now - epoch_).toSec())
-                                                       : scan_disks_;
-      excludeTargetLocked(target);
+      laser_->obstacles(controller_config_.moving_obstacles, now, &obstacles_);
+      if (target.ok) {  // laser disks on the followed robot are the target, not obstacles
+        const auto& p = target.transform.transform.translation;
+        core::dropDisksNear({p.x, p.y}, node_config_.target_exclusion_radius, &obstacles_);
+      }
     }
-    virtual_obstacles_.appendDisks(&obstacles_);
+    const std::size_t laser_count = obstacles_.size();
+    virtual_obstacles_->appendDisks(&obstacles_);
+    virtual_count_ = obstacles_.size() - laser_count;
     last_pose_age_ = pose.ok ? pose.age : -1.0;
     last_target_age_ = target.ok ? target.age : -1.0;
 
     core::ControllerOutput out;
     bool have_output = false;
-    const std::string stale = staleReasonLocked(pose, target, scan_fresh);
-    if (!enabled_) {
-      status_ = "disabled";
-    } else if (!stale.empty()) {
-      status_ = stale;
-      lost_ = true;
-      publishZeroLocked();
-      ROS_WARN_STREAM_THROTTLE(2.0, "tracking: zero command: " << stale);
-    } else {
-      have_output = stepLocked(now, pose, target, &out);
+    const core::TrackingSupervisor::Decision decision =
+        supervisor_.begin(sinceEpoch(now), {pose.ok, pose.age, target.ok, target.age, scan_age_});
+    if (decision.publish) {
+      publishLocked(decision.u);
+      logStopLocked();
     }
+    if (decision.step) have_output = stepLocked(now, pose, target, decision.restart, &out);
     last_output_ = out;
+    control_rate_->tick();
     publishStateLocked(now, pose, have_output, out);
-    if (markers_wanted) publishMarkersLocked(now, pose, have_output, out);
-    updateStatsLocked(now, wall_start);
+    if (markers_wanted) publishMarkersLocked(now, pose, have_output, out, virtual_obstacles_->snapshot());
+    stats_.endCycle(sinceEpoch(now), wall_start);
   }
   if (diagnostics_) diagnostics_->update();  // rate-limited by the updater; takes the lock itself
 }
 
-void TrackingNode::excludeTargetLocked(const Lookup& target) {
-  if (!target.ok) return;
-  const Eigen::Vector2d p(target.transform.transform.translation.x, target.transform.transform.translation.y);
-  core::dropDisksNear(p, node_config_.target_exclusion_radius, &obstacles_);
-}
-
-std::string TrackingNode::staleReasonLocked(const Lookup& pose, const Lookup& target, bool scan_fresh) const {
-  const double timeout = node_config_.pose_timeout;
-  if (!pose.ok) return "no robot pose " + node_config_.global_frame + " -> " + node_config_.base_frame;
-  if (pose.age > timeout) return "robot pose is stale (" + std::to_string(pose.age) + " s)";
-  if (!target.ok) return "no target " + node_config_.global_frame + " -> " + node_config_.target_frame;
-  if (target.age > timeout) return "target is stale (" + std::to_string(target.age) + " s)";
-  if (node_config_.require_scan && !scan_fresh) {
-    return scan_age_ < 0.0 ? "no scan yet" : "scan is stale (" + std::to_string(scan_age_) + " s)";
-  }
-  return "";
-}
-
-bool TrackingNode::stepLocked(const ros::Time& now, const Lookup& pose, const Lookup& target,
+bool TrackingNode::stepLocked(const ros::Time& now, const Lookup& pose, const Lookup& target, bool restart,
                               core::ControllerOutput* out) {
-  if (lost_) {  // resume: start afresh (see the header for the rule)
-    controller_.reset();
-    restart_rho_ = true;
-    lost_ = false;
-  }
-  const core::Pose2 robot = toPose2(pose.transform.transform);
+  if (restart) controller_.restart(core::TrackingSupervisor::kRestartErrorRatio);  // resume: start afresh
   const ros::Time pose_stamp = pose.transform.header.stamp.isZero() ? now : pose.transform.header.stamp;
-  const core::PoseSample robot_sample{(pose_stamp - epoch_).toSec(), robot};
+  const core::PoseSample robot_sample{sinceEpoch(pose_stamp), toPose2(pose.transform.transform)};
   // The target sample keeps its own stamp (a static transform has none: use now).
   const ros::Time stamp = target.transform.header.stamp.isZero() ? now : target.transform.header.stamp;
-  const core::TargetSample sample{(stamp - epoch_).toSec(),
+  const core::TargetSample sample{sinceEpoch(stamp),
                                   {target.transform.transform.translation.x, target.transform.transform.translation.y}};
-  const double t = (now - epoch_).toSec();
-  if (restart_rho_) {
-    core::ControllerConfig restart = controller_config_;
-    const double error = (sample.position - core::offsetPoint(robot, restart.offset)).norm();
-    restart.rho_0 = std::max(restart.rho_0, 2.0 * error);
-    controller_.setConfig(restart);
-    *out = controller_.stepStamped(t, robot_sample, sample, obstacles_);
-    controller_.setConfig(controller_config_);
-    restart_rho_ = false;
-  } else {
-    *out = controller_.stepStamped(t, robot_sample, sample, obstacles_);
-  }
-  if (!out->valid) {
-    status_ = "controller: " + out->error;
-    publishZeroLocked();
-    lost_ = true;  // e.g. time went backwards (bag loop): restart when usable
-    ROS_WARN_STREAM_THROTTLE(2.0, "tracking: zero command: " << status_);
-    return false;
-  }
-  if (!controller_.diamond().contains(out->u, 1e-9)) {  // never expected: belt and braces
-    status_ = "command outside the diamond";
-    publishZeroLocked();
-    ROS_ERROR_THROTTLE(2.0, "tracking: controller command outside the diamond; sent zero");
-    return false;
-  }
+  const double t = sinceEpoch(now);
+  *out = controller_.stepStamped(t, robot_sample, sample, obstacles_);
   // The state and markers show what was sent: u is the ramped command while ramping.
-  out->u = publishCommandLocked(now, out->u);
-  status_ = "tracking";
-  ++window_steps_;
-  if (out->active.saturated) ++window_saturated_;
+  const core::Twist2 sent = supervisor_.finish(t, *out, controller_.diamond());
+  publishLocked(sent);
+  if (supervisor_.state() != core::TrackingSupervisor::State::kTracking) {
+    logStopLocked();
+    return false;
+  }
+  out->u = sent;
+  stats_.addStep(out->active.saturated);
   return true;
 }
 
-void TrackingNode::publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output,
-                                      const core::ControllerOutput& out) {
-  const double inf = std::numeric_limits<double>::infinity();
-  TrackingState state;
-  state.header.stamp = now;
-  state.header.frame_id = node_config_.global_frame;
-  if (have_output) fillState(out, &state);
-  state.enabled = enabled_;
-  state.status = status_;
-  state.t = (now - epoch_).toSec();
-  state.rho = have_output ? out.rho : controller_.rho();
-  state.obstacles = static_cast<int>(obstacles_.size());
-  if (!have_output) state.min_clearance = inf;
-  state.min_clearance_body =
-      pose.ok ? core::clearance(toPose2(pose.transform.transform).position(), controller_config_.robot_radius, obstacles_)
-              : inf;
-  state.pose_age = last_pose_age_;
-  state.target_age = last_target_age_;
-  state_pub_.publish(state);
+void TrackingNode::publishLocked(const core::Twist2& u) {
+  cmd_pub_.publish(toTwist(u));
+  if (cmd_vel_rate_) cmd_vel_rate_->tick();
 }
 
-void TrackingNode::publishMarkersLocked(const ros::Time& now, const Lookup& pose, bool have_output,
-                                        const core::ControllerOutput& out) {
-  MarkerScene scene;
-  scene.frame = node_config_.global_frame;
-  scene.stamp = now;
-  scene.have_pose = pose.ok;
-  if (pose.ok) scene.pose = toPose2(pose.transform.transform);
-  scene.have_output = have_output;
-  scene.output = out;
-  scene.config = &controller_config_;
-  scene.detected = &scan_disks_;
-  scene.virtual_obstacles = &virtual_obstacles_;
-  scene.status = status_;
-  markers_pub_.publish(buildMarkers(scene));
-}
-
-void TrackingNode::updateStatsLocked(const ros::Time& now, std::chrono::steady_clock::time_point wall_start) {
-  ++stats_.cycles;
-  const double window = (now - window_start_).toSec();
-  if (window >= 1.0) {  // rates and ratios over about one second
-    measured_rate_ = static_cast<double>(stats_.cycles - cycles_at_window_) / window;
-    saturation_ratio_ = window_steps_ ? static_cast<double>(window_saturated_) / window_steps_ : 0.0;
-    cycles_at_window_ = stats_.cycles;
-    window_steps_ = window_saturated_ = 0;
-    window_start_ = now;
-  }
-  const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - wall_start).count();
-  stats_.last_us = us;
-  stats_.max_us = std::max(stats_.max_us, us);
-  stats_.sum_us += us;
-}
-
-void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  using diagnostic_msgs::DiagnosticStatus;
-  if (!enabled_) {
-    status.summary(DiagnosticStatus::OK, "disabled");
-  } else if (status_ == "tracking") {
-    status.summary(DiagnosticStatus::OK, "tracking");
+void TrackingNode::logStopLocked() const {
+  if (supervisor_.state() == core::TrackingSupervisor::State::kCommandRefused) {
+    ROS_ERROR_THROTTLE(2.0, "tracking: controller command outside the diamond; sent zero");
   } else {
-    status.summary(DiagnosticStatus::WARN, "zero command: " + status_);
+    ROS_WARN_STREAM_THROTTLE(2.0, "tracking: zero command: " << supervisor_.status());
   }
-  status.add("enabled", enabled_);
-  status.add("status", status_);
-  status.add("control rate set [Hz]", node_config_.control_rate);
-  status.add("control rate measured [Hz]", measured_rate_);
-  status.add("robot pose age [s]", last_pose_age_);
-  status.add("target age [s]", last_target_age_);
-  status.add("scan age [s]", scan_age_);
-  status.add("saturation ratio", saturation_ratio_);
-  status.add("resume ramp on", enabled_ && ramping_);
-  status.add("rho [m]", controller_.rho());
-  status.add("|e| [m]", last_output_.valid ? last_output_.e.norm() : 0.0);
-  status.add("min clearance [m]", last_output_.valid ? last_output_.min_clearance : -1.0);
-  status.add("obstacles (laser + virtual)", obstacles_.size());
-  status.add("virtual obstacles", virtual_obstacles_.size());
-  status.add("cycle time last [us]", stats_.last_us);
-  status.add("cycle time max [us]", stats_.max_us);
-  status.add("cycle time mean [us]", stats_.cycles ? stats_.sum_us / stats_.cycles : 0.0);
 }
 
 bool TrackingNode::onEnable(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
@@ -413,13 +236,9 @@ bool TrackingNode::onEnable(std_srvs::Trigger::Request&, std_srvs::Trigger::Resp
     res.message = "not started (configuration error)";
     return true;
   }
-  if (!enabled_) {
-    controller_.reset();
-    restart_rho_ = true;
-    lost_ = false;
-    enabled_ = true;
-    ramping_ = true;  // the robot is taken as standing: the command leaves zero on the ramp
-    last_command_ = {};
+  if (supervisor_.enable()) {
+    controller_.restart(core::TrackingSupervisor::kRestartErrorRatio);
+    cmd_vel_rate_->clear();  // cmd_vel starts again now
   }
   res.success = true;
   res.message = "tracking enabled";
@@ -429,8 +248,7 @@ bool TrackingNode::onEnable(std_srvs::Trigger::Request&, std_srvs::Trigger::Resp
 
 bool TrackingNode::onDisable(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  enabled_ = false;
-  publishZeroLocked();  // one zero command, then cmd_vel is left to others
+  publishLocked(supervisor_.disable(sinceEpoch(ros::Time::now())));  // one zero command, then cmd_vel is left to others
   res.success = true;
   res.message = "tracking disabled";
   ROS_INFO_NAMED("tracking", "tracking disabled");

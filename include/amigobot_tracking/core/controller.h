@@ -86,6 +86,10 @@ class PerformanceController {
 
   // Forget all state: the next step starts afresh (estimator, rho, start rule).
   void reset();
+  // reset(), and the next step starts rho at max(rho_0, |e| / start_ratio) instead of rho_0,
+  // so |e|/rho <= start_ratio (0 < start_ratio): resuming far from the target does not
+  // start with the envelope pressed against |e|. Only that step; rho then follows (13).
+  void restart(double start_ratio);
   // Offline simulation only: the next command will be held for h [s]. h > 0 evaluates the
   // repulsive term of the nearest obstacle the offset point can reach within h backward-Euler,
   // at the clearance it has at the end of the step (band_implicit.h), so long steps neither
@@ -131,6 +135,7 @@ class PerformanceController {
   bool started_ = false;
   double last_t_ = 0.0;
   double rho_ = 0.0;
+  double start_ratio_ = 0.0;  // > 0: the next start uses restart()'s rule
   double conflict_ = 0.0;  // second argument of the min in (13), from the last step
   int passing_side_ = 0;   // latched side of the tangential term (0 = released)
   // Applied commands, each held from its time to the next one's (zero before the first),

@@ -18,6 +18,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "amigobot_tracking/aria/client.h"
+#include "amigobot_tracking/ros/rate_monitor.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -64,6 +65,7 @@ class AmigobotDriver {
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
   diagnostic_updater::Updater updater_;
+  std::unique_ptr<RateMonitor> sip_rate_;  // ticked per SIP; warns below half the robot's SIP rate
   ros::Timer diagnostics_timer_, link_timer_;
   std::mutex publish_mutex_;
   int last_motors_state_ = -1;  // -1: not yet published

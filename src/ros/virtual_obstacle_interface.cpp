@@ -1,12 +1,12 @@
-// TrackingNode, virtual obstacles: the latched set, the topic, rviz clicked_point, the
-// interactive markers (drag to move, right click -> Delete) and the remove/clear services.
+#include "amigobot_tracking/ros/virtual_obstacle_interface.h"
+
 #include <cmath>
+#include <utility>
 
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 #include <visualization_msgs/InteractiveMarker.h>
 
 #include "amigobot_tracking/VirtualObstacleArray.h"
-#include "amigobot_tracking/ros/tracking_node.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -58,11 +58,38 @@ visualization_msgs::InteractiveMarker interactiveMarkerOf(const core::VirtualObs
 
 }  // namespace
 
-void TrackingNode::publishVirtualObstaclesLocked(bool refresh_interactive) {
+VirtualObstacleInterface::VirtualObstacleInterface(ros::NodeHandle nh, ros::NodeHandle pnh, tf2_ros::Buffer& tf,
+                                                   std::string global_frame, double clicked_point_radius,
+                                                   const std::vector<core::VirtualObstacle>& initial)
+    : tf_(tf), global_frame_(std::move(global_frame)), clicked_point_radius_(clicked_point_radius) {
+  set_.assign(initial);
+  array_pub_ = pnh.advertise<VirtualObstacleArray>("virtual_obstacles", 1, true);
+  marker_server_ = std::make_unique<interactive_markers::InteractiveMarkerServer>(pnh.resolveName("obstacle_markers"));
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    publishLocked();
+  }
+  obstacle_sub_ = pnh.subscribe("virtual_obstacle", 10, &VirtualObstacleInterface::onObstacle, this);
+  clicked_sub_ = nh.subscribe("clicked_point", 10, &VirtualObstacleInterface::onClickedPoint, this);
+  remove_srv_ = pnh.advertiseService("remove_virtual_obstacle", &VirtualObstacleInterface::onRemove, this);
+  clear_srv_ = pnh.advertiseService("clear_virtual_obstacles", &VirtualObstacleInterface::onClear, this);
+}
+
+void VirtualObstacleInterface::appendDisks(std::vector<core::Disk>* out) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  set_.appendDisks(out);
+}
+
+core::VirtualObstacleSet VirtualObstacleInterface::snapshot() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return set_;
+}
+
+void VirtualObstacleInterface::publishLocked(bool refresh_interactive) {
   VirtualObstacleArray array;
   array.header.stamp = ros::Time::now();
-  array.header.frame_id = node_config_.global_frame;
-  for (const core::VirtualObstacle& o : virtual_obstacles_.all()) {
+  array.header.frame_id = global_frame_;
+  for (const core::VirtualObstacle& o : set_.all()) {
     VirtualObstacle m;
     m.id = o.id;
     m.center.x = o.disk.center.x();
@@ -70,86 +97,86 @@ void TrackingNode::publishVirtualObstaclesLocked(bool refresh_interactive) {
     m.radius = o.disk.radius;
     array.obstacles.push_back(m);
   }
-  virtual_pub_.publish(array);
+  array_pub_.publish(array);
   if (!refresh_interactive || !marker_server_) return;
   marker_server_->clear();
-  for (const core::VirtualObstacle& o : virtual_obstacles_.all()) {
-    marker_server_->insert(interactiveMarkerOf(o, node_config_.global_frame),
+  for (const core::VirtualObstacle& o : set_.all()) {
+    marker_server_->insert(interactiveMarkerOf(o, global_frame_),
                            [this](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& f) { onMarkerFeedback(f); });
   }
   marker_server_->applyChanges();
 }
 
-void TrackingNode::onVirtualObstacle(const VirtualObstacle::ConstPtr& msg) {
-  std::lock_guard<std::mutex> lock(state_mutex_);
+void VirtualObstacleInterface::onObstacle(const VirtualObstacle::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
   const core::VirtualObstacle o{msg->id, {{msg->center.x, msg->center.y}, msg->radius}};
   std::string why;
-  const auto change = virtual_obstacles_.upsert(o, &why);
+  const auto change = set_.upsert(o, &why);
   if (change == core::VirtualObstacleSet::Change::kRejected) {
     ROS_WARN_STREAM_NAMED("tracking", "virtual obstacle rejected: " << why);
     return;
   }
   ROS_INFO_STREAM_NAMED("tracking", "virtual obstacle '" << o.id << "' "
                                                          << (change == core::VirtualObstacleSet::Change::kAdded ? "added" : "updated"));
-  publishVirtualObstaclesLocked();
+  publishLocked();
 }
 
-void TrackingNode::onClickedPoint(const geometry_msgs::PointStamped::ConstPtr& msg) {
+void VirtualObstacleInterface::onClickedPoint(const geometry_msgs::PointStamped::ConstPtr& msg) {
   geometry_msgs::PointStamped global = *msg;
-  if (msg->header.frame_id != node_config_.global_frame) {
+  if (msg->header.frame_id != global_frame_) {
     try {
       const geometry_msgs::TransformStamped to_global =
-          tf_->lookupTransform(node_config_.global_frame, msg->header.frame_id, ros::Time(0));
+          tf_.lookupTransform(global_frame_, msg->header.frame_id, ros::Time(0));
       tf2::doTransform(*msg, global, to_global);
     } catch (const tf2::TransformException& ex) {
       ROS_WARN_STREAM_NAMED("tracking", "clicked point ignored: " << ex.what());
       return;
     }
   }
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  const core::VirtualObstacle o{virtual_obstacles_.freshId("click_"),
-                                {{global.point.x, global.point.y}, node_config_.clicked_point_radius}};
+  std::lock_guard<std::mutex> lock(mutex_);
+  const core::VirtualObstacle o{set_.freshId("click_"),
+                                {{global.point.x, global.point.y}, clicked_point_radius_}};
   std::string why;
-  if (virtual_obstacles_.upsert(o, &why) == core::VirtualObstacleSet::Change::kRejected) {
+  if (set_.upsert(o, &why) == core::VirtualObstacleSet::Change::kRejected) {
     ROS_WARN_STREAM_NAMED("tracking", "clicked point rejected: " << why);
     return;
   }
   ROS_INFO_STREAM_NAMED("tracking", "virtual obstacle '" << o.id << "' added at (" << o.disk.center.x() << ", "
                                                          << o.disk.center.y() << ")");
-  publishVirtualObstaclesLocked();
+  publishLocked();
 }
 
-void TrackingNode::onMarkerFeedback(const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback) {
+void VirtualObstacleInterface::onMarkerFeedback(const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback) {
   using visualization_msgs::InteractiveMarkerFeedback;
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  const core::VirtualObstacle* existing = virtual_obstacles_.find(feedback->marker_name);
+  std::lock_guard<std::mutex> lock(mutex_);
+  const core::VirtualObstacle* existing = set_.find(feedback->marker_name);
   if (!existing) return;
   if (feedback->event_type == InteractiveMarkerFeedback::MENU_SELECT && feedback->menu_entry_id == kDeleteMenuEntry) {
-    virtual_obstacles_.remove(feedback->marker_name);
+    set_.remove(feedback->marker_name);
     ROS_INFO_STREAM_NAMED("tracking", "virtual obstacle '" << feedback->marker_name << "' deleted in rviz");
-    publishVirtualObstaclesLocked();
+    publishLocked();
   } else if (feedback->event_type == InteractiveMarkerFeedback::POSE_UPDATE &&
-             (feedback->header.frame_id.empty() || feedback->header.frame_id == node_config_.global_frame)) {
+             (feedback->header.frame_id.empty() || feedback->header.frame_id == global_frame_)) {
     core::VirtualObstacle moved = *existing;
     moved.disk.center = {feedback->pose.position.x, feedback->pose.position.y};
-    virtual_obstacles_.upsert(moved);
-    publishVirtualObstaclesLocked(false);  // rviz already shows it where it was dragged
+    set_.upsert(moved);
+    publishLocked(false);  // rviz already shows it where it was dragged
   }
 }
 
-bool TrackingNode::onRemove(RemoveVirtualObstacle::Request& req, RemoveVirtualObstacle::Response& res) {
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  res.success = virtual_obstacles_.remove(req.id);
+bool VirtualObstacleInterface::onRemove(RemoveVirtualObstacle::Request& req, RemoveVirtualObstacle::Response& res) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  res.success = set_.remove(req.id);
   res.message = res.success ? "removed '" + req.id + "'" : "no virtual obstacle '" + req.id + "'";
-  if (res.success) publishVirtualObstaclesLocked();
+  if (res.success) publishLocked();
   return true;
 }
 
-bool TrackingNode::onClear(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
-  std::lock_guard<std::mutex> lock(state_mutex_);
-  const std::size_t count = virtual_obstacles_.size();
-  virtual_obstacles_.clear();
-  publishVirtualObstaclesLocked();
+bool VirtualObstacleInterface::onClear(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::size_t count = set_.size();
+  set_.clear();
+  publishLocked();
   res.success = true;
   res.message = "cleared " + std::to_string(count) + " virtual obstacles";
   return true;

@@ -1,0 +1,67 @@
+// Laser scans -> obstacle disks in the global frame for the tracking node. `scan` arrives
+// through a tf2 MessageFilter (a scan is used only once its transform is known); the
+// callback only stores the latest scan under this class's mutex, and the control cycle turns
+// it into disks (core/scan_obstacles.h), tracked across scans for moving_obstacles.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <message_filters/subscriber.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/message_filter.h>
+
+#include "amigobot_tracking/core/obstacle_tracker.h"
+#include "amigobot_tracking/core/scan_obstacles.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+class LaserObstacles {
+ public:
+  // Times [s] given to the tracker count from `epoch`.
+  LaserObstacles(tf2_ros::Buffer& tf, std::string global_frame, const core::ScanObstacleConfig& scan,
+                 const core::ObstacleTrackerConfig& tracker, ros::Time epoch);
+  LaserObstacles(const LaserObstacles&) = delete;
+  LaserObstacles& operator=(const LaserObstacles&) = delete;
+  ~LaserObstacles();
+
+  // Subscribes to `scan` in nh's namespace (through the MessageFilter).
+  void subscribe(ros::NodeHandle nh);
+  // Stores the scan (the filter's callback; public for the benchmark).
+  void onScan(const sensor_msgs::LaserScan::ConstPtr& scan);
+
+  // In the control cycle: turns a new scan into disks; returns the age [s] at `now` of the
+  // last scan turned into disks, -1 when none was yet. A bad scan keeps the previous disks
+  // and does not count as fresh: it must not hide a blind laser.
+  double update(const ros::Time& now);
+  // *out = the laser obstacles at `now`: the last scan's disks, or with `moving` the
+  // tracked disks with their velocities.
+  void obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const;
+  const std::vector<core::Disk>& disks() const { return disks_; }  // last scan's
+
+ private:
+  tf2_ros::Buffer& tf_;
+  const std::string global_frame_;
+  const core::ScanObstacleConfig config_;
+  const ros::Time epoch_;
+  core::ObstacleTracker tracker_;
+
+  std::mutex latest_mutex_;
+  sensor_msgs::LaserScan::ConstPtr latest_;  // written by onScan only
+
+  // The control cycle's (the caller serialises update and obstacles).
+  sensor_msgs::LaserScan::ConstPtr processed_;  // last scan looked at
+  sensor_msgs::LaserScan::ConstPtr used_;       // last scan turned into disks_ (its age counts)
+  std::vector<core::Disk> disks_, disks_next_;  // disks_next_: scratch for the next scan
+
+  std::unique_ptr<message_filters::Subscriber<sensor_msgs::LaserScan>> sub_;
+  std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> filter_;
+};
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

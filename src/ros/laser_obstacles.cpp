@@ -1,0 +1,74 @@
+#include "amigobot_tracking/ros/laser_obstacles.h"
+
+#include <utility>
+
+#include "amigobot_tracking/ros/conversions.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+LaserObstacles::LaserObstacles(tf2_ros::Buffer& tf, std::string global_frame, const core::ScanObstacleConfig& scan,
+                               const core::ObstacleTrackerConfig& tracker, ros::Time epoch)
+    : tf_(tf), global_frame_(std::move(global_frame)), config_(scan), epoch_(epoch), tracker_(tracker) {}
+
+LaserObstacles::~LaserObstacles() {
+  filter_.reset();  // before the subscriber it reads from
+  sub_.reset();
+}
+
+void LaserObstacles::subscribe(ros::NodeHandle nh) {
+  sub_ = std::make_unique<message_filters::Subscriber<sensor_msgs::LaserScan>>(nh, "scan", 5);
+  filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(*sub_, tf_, global_frame_, 10, nh);
+  filter_->registerCallback(&LaserObstacles::onScan, this);
+  filter_->registerFailureCallback(
+      [this](const sensor_msgs::LaserScan::ConstPtr& scan, tf2_ros::filter_failure_reasons::FilterFailureReason why) {
+        ROS_WARN_THROTTLE(5.0, "tracking: scan in '%s' dropped: no transform to '%s' at its stamp (%s)",
+                          scan->header.frame_id.c_str(), global_frame_.c_str(),
+                          why == tf2_ros::filter_failure_reasons::OutTheBack ? "older than the tf buffer"
+                          : why == tf2_ros::filter_failure_reasons::EmptyFrameID ? "empty frame_id"
+                                                                                  : "tf not available in time");
+      });
+}
+
+void LaserObstacles::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
+  std::lock_guard<std::mutex> lock(latest_mutex_);
+  latest_ = scan;
+}
+
+double LaserObstacles::update(const ros::Time& now) {
+  sensor_msgs::LaserScan::ConstPtr scan;
+  {
+    std::lock_guard<std::mutex> lock(latest_mutex_);
+    scan = latest_;
+  }
+  if (scan && scan != processed_) {
+    processed_ = scan;
+    try {
+      // The MessageFilter let the scan through only once this transform was available.
+      const geometry_msgs::TransformStamped sensor =
+          tf_.lookupTransform(global_frame_, scan->header.frame_id, scan->header.stamp);
+      if (core::scanToObstacles(toScanGeometry(*scan), scan->ranges, toAffine2d(sensor.transform), config_,
+                                &disks_next_)) {
+        disks_.swap(disks_next_);  // the previous disks stay until a good scan replaces them
+        used_ = scan;
+        tracker_.update((scan->header.stamp - epoch_).toSec(), disks_);
+      } else {
+        ROS_WARN_THROTTLE(5.0, "tracking: scan with invalid geometry ignored (frame %s)", scan->header.frame_id.c_str());
+      }
+    } catch (const tf2::TransformException& ex) {
+      ROS_WARN_THROTTLE(5.0, "tracking: scan dropped: %s", ex.what());
+    }
+  }
+  return used_ ? ageOf(used_->header.stamp, now) : -1.0;
+}
+
+void LaserObstacles::obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const {
+  if (moving) {
+    *out = tracker_.obstaclesAt((now - epoch_).toSec());
+  } else {
+    *out = disks_;
+  }
+}
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

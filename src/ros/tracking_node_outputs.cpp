@@ -1,0 +1,82 @@
+// TrackingNode, what a cycle shows: ~state, ~markers (while subscribed) and the "tracking"
+// diagnostics task.
+#include <limits>
+
+#include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/ros/conversions.h"
+#include "amigobot_tracking/ros/markers.h"
+#include "amigobot_tracking/ros/tracking_node.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+void TrackingNode::publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output,
+                                      const core::ControllerOutput& out) {
+  const double inf = std::numeric_limits<double>::infinity();
+  TrackingState state;
+  state.header.stamp = now;
+  state.header.frame_id = node_config_.global_frame;
+  if (have_output) fillState(out, &state);
+  state.enabled = supervisor_.enabled();
+  state.status = supervisor_.status();
+  state.t = sinceEpoch(now);
+  state.rho = have_output ? out.rho : controller_.rho();
+  state.obstacles = static_cast<int>(obstacles_.size());
+  if (!have_output) state.min_clearance = inf;
+  state.min_clearance_body =
+      pose.ok ? core::clearance(toPose2(pose.transform.transform).position(), controller_config_.robot_radius, obstacles_)
+              : inf;
+  state.pose_age = last_pose_age_;
+  state.target_age = last_target_age_;
+  state_pub_.publish(state);
+}
+
+void TrackingNode::publishMarkersLocked(const ros::Time& now, const Lookup& pose, bool have_output,
+                                        const core::ControllerOutput& out, const core::VirtualObstacleSet& virtuals) {
+  MarkerScene scene;
+  scene.frame = node_config_.global_frame;
+  scene.stamp = now;
+  scene.have_pose = pose.ok;
+  if (pose.ok) scene.pose = toPose2(pose.transform.transform);
+  scene.have_output = have_output;
+  scene.output = out;
+  scene.config = &controller_config_;
+  scene.detected = &laser_->disks();
+  scene.virtual_obstacles = &virtuals;
+  scene.status = supervisor_.status();
+  markers_pub_.publish(buildMarkers(scene));
+}
+
+void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  std::lock_guard<std::mutex> lock(state_mutex_);
+  using diagnostic_msgs::DiagnosticStatus;
+  const bool enabled = supervisor_.enabled();
+  if (!enabled) {
+    status.summary(DiagnosticStatus::OK, "disabled");
+  } else if (supervisor_.state() == core::TrackingSupervisor::State::kTracking) {
+    status.summary(DiagnosticStatus::OK, "tracking");
+  } else {
+    status.summary(DiagnosticStatus::WARN, "zero command: " + supervisor_.status());
+  }
+  status.add("enabled", enabled);
+  status.add("status", supervisor_.status());
+  status.add("control rate set [Hz]", node_config_.control_rate);
+  control_rate_->report(status, true);
+  cmd_vel_rate_->report(status, enabled);  // silent while disabled, by design
+  status.add("robot pose age [s]", last_pose_age_);
+  status.add("target age [s]", last_target_age_);
+  status.add("scan age [s]", scan_age_);
+  status.add("saturation ratio", stats_.saturationRatio());
+  status.add("resume ramp on", enabled && supervisor_.ramping());
+  status.add("rho [m]", controller_.rho());
+  status.add("|e| [m]", last_output_.valid ? last_output_.e.norm() : 0.0);
+  status.add("min clearance [m]", last_output_.valid ? last_output_.min_clearance : -1.0);
+  status.add("obstacles (laser + virtual)", obstacles_.size());
+  status.add("virtual obstacles", virtual_count_);
+  status.add("cycle time last [us]", stats_.cycles().last_us);
+  status.add("cycle time max [us]", stats_.cycles().max_us);
+  status.add("cycle time mean [us]", stats_.meanCycleUs());
+}
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking
