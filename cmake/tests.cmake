@@ -31,6 +31,13 @@ function(amigobot_add_check name)
 endfunction()
 
 amigobot_add_check(urdf_parses check_urdf ${PROJECT_SOURCE_DIR}/urdf/amigobot.urdf)
+# Each layer includes only what it may (scripts/check_layers.py); the checker and the result
+# counter have their own tests on fixture trees.
+amigobot_add_check(layers ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_layers.py ${PROJECT_SOURCE_DIR})
+amigobot_add_check(check_layers_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_layers.py
+                   ${PROJECT_SOURCE_DIR}/scripts/check_layers.py)
+amigobot_add_check(count_test_results_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_count_test_results.py
+                   ${PROJECT_SOURCE_DIR}/scripts/count_test_results.py)
 amigobot_add_unit_test(test_beyond_paper test/unit/test_beyond_paper.cpp)
 target_link_libraries(test_beyond_paper amigobot_tracking_core)
 amigobot_add_unit_test(test_obstacle_tracker test/unit/test_obstacle_tracker.cpp)
