@@ -38,6 +38,8 @@ amigobot_add_check(check_layers_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_D
                    ${PROJECT_SOURCE_DIR}/scripts/check_layers.py)
 amigobot_add_check(count_test_results_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_count_test_results.py
                    ${PROJECT_SOURCE_DIR}/scripts/count_test_results.py)
+# Every Makefile target has its one-line `make help` entry (help fails naming one without).
+amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 amigobot_add_unit_test(test_beyond_paper test/unit/test_beyond_paper.cpp)
 target_link_libraries(test_beyond_paper amigobot_tracking_core)
 amigobot_add_unit_test(test_obstacle_tracker test/unit/test_obstacle_tracker.cpp)

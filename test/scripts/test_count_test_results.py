@@ -18,7 +18,7 @@ counter = load_script_from_argv("count_test_results")
 
 def wrapper(*cases):
     """rostest-NAME.xml: one case per <test>, (test-name, failure message or None)."""
-    body = "".join(f'<testcase classname="amigobot_tracking.rostest.RosTest" name="test{name}" time="1.0">'
+    body = "".join(f'<testcase classname="rostest.runner.RosTest" name="test{name}" time="1.0">'
                    + (f'<failure message="{failure}" type=""/>' if failure else "") + "</testcase>"
                    for name, failure in cases)
     return f'<?xml version="1.0"?><testsuite name="rostest" tests="{len(cases)}">{body}</testsuite>'
@@ -60,7 +60,7 @@ class CountTestResults(unittest.TestCase):
                    wrapper(("e2e_tracking", "test [e2e_tracking] did not generate test results")))
         (passed, failed, skipped), out = self.count()
         self.assertEqual((passed, failed, skipped), (0, 1, 0))
-        self.assertIn("FAILED: amigobot_tracking.rostest.RosTest.teste2e_tracking", out)
+        self.assertIn("FAILED: rostest.runner.RosTest.teste2e_tracking", out)
 
     def test_inner_failure_is_counted(self):
         self.write("rostest-e2e_diamond.xml", wrapper(("e2e_diamond", None)))
