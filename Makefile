@@ -1,6 +1,7 @@
 # amigobot_tracking: one entry point for people and CI.
 #   make demo   install, build, run the main job on the simulated robot
 #   make test   install, build, run every test, end with `N passed, N failed`
+#   make help   every target with one line (the `## ` comment on its rule line)
 # Debian's ROS tools need /usr/bin/python3, not another python3 earlier on PATH.
 export PATH := /usr/bin:$(PATH)
 SHELL := /bin/bash
@@ -16,10 +17,16 @@ CATKIN := catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUIL
 SETUP := source $(WS)/devel/setup.bash
 RESULTS := $(WS)/build/test_results
 
-.PHONY: deps build test demo bench fuzz clean sim reproduce
+PHONY := deps deps-robot build test demo bench fuzz clean sim reproduce help
+.PHONY: $(PHONY)
+# `make` alone installs the missing Debian packages, as it always did.
+.DEFAULT_GOAL := deps
 
-deps:
+deps: ## install the missing Debian packages of the robot and the workstation (tests, rviz, plots)
 	@$(ROOT)/scripts/install_deps.sh
+
+deps-robot: ## install only what the robot's computer needs (no rviz, Xvfb, clang, matplotlib)
+	@$(ROOT)/scripts/install_deps.sh --robot
 
 # catkin caches the test environment at the first configure and keeps only folders that
 # exist then: without these, a fresh clone's tests run with empty PYTHONPATH/LD_LIBRARY_PATH.
@@ -27,10 +34,10 @@ $(WS)/src/amigobot_tracking:
 	mkdir -p $(WS)/src $(WS)/devel/lib/python3/dist-packages $(WS)/devel/lib/pkgconfig
 	ln -sfn $(ROOT) $(WS)/src/amigobot_tracking
 
-build: deps $(WS)/src/amigobot_tracking
+build: deps $(WS)/src/amigobot_tracking ## build the package in .ws/ (catkin_make, Release)
 	$(CATKIN)
 
-test: build
+test: build ## build and run every test, ending with `N passed, N failed` (~10 min)
 	rm -rf $(RESULTS)
 	$(CATKIN) tests
 	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.
@@ -43,10 +50,10 @@ test: build
 # sim.launch with rviz under Xvfb, a virtual obstacle through the topic, a rosbag, and a
 # scored report in report/demo (non-zero exit on a collision, a command outside the
 # diamond, or a run that did not happen). DEMO_ARGS="--paper-law": the paper's law alone.
-demo: build
+demo: build ## the whole stack on the emulated robot, headless, scored report in report/demo
 	$(ROOT)/scripts/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
-bench: build
+bench: build ## benchmarks: core, simulator speed, scan obstacles, tracking cycle, ARIA
 	$(CATKIN) bench_core
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 50
@@ -64,17 +71,24 @@ bench: build
 # Offline simulator: make sim SCENARIO=config/scenarios/paper_5_1.yaml OUT=out/paper_5_1 [ARGS="--variant fixed_rho"]
 SCENARIO ?= config/scenarios/paper_5_2_rose.yaml
 OUT ?= out/$(basename $(notdir $(SCENARIO)))
-sim: build
+sim: build ## offline simulator: SCENARIO=config/scenarios/X.yaml OUT=out/X ARGS=...
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(SCENARIO) --out $(OUT) $(ARGS)
 
 # The paper's Section 5 and the baselines: writes docs/results.md and docs/figures/.
-reproduce: build
+reproduce: build ## the paper's Section 5 and the baselines: docs/results.md, docs/figures/
 	$(ROOT)/scripts/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
 
 # Longer libFuzzer run of the ARIA packet parser (ASan + UBSan): make fuzz FUZZ_SECONDS=600
 FUZZ_SECONDS ?= 600
-fuzz: deps
+fuzz: deps ## libFuzzer run of the ARIA packet parser: FUZZ_SECONDS=600
 	$(ROOT)/scripts/run_fuzz.sh $(FUZZ_SECONDS)
 
-clean:
+clean: ## remove the build workspaces .ws/ and .ws-install/
 	rm -rf $(WS) $(ROOT)/.ws-install
+
+# The `## ` text of each rule line; fails naming a target of PHONY that has none.
+HELP_LINES = sed -n 's/^\([a-z-]*\):.*\#\# \(.*\)/\1\t\2/p' $(ROOT)/Makefile
+help: ## this list
+	@$(HELP_LINES) | awk -F'\t' '{printf "  make %-11s %s\n", $$1, $$2}'
+	@undocumented=$$(comm -23 <(printf '%s\n' $(PHONY) | sort) <($(HELP_LINES) | cut -f1 | sort)); \
+	  [ -z "$$undocumented" ] || { echo "make help: no '## ' line for target(s): $$undocumented" >&2; exit 1; }

@@ -1,4 +1,5 @@
-# Whole-package checks, each one counted test case: the URDF parses, every launch file passes
+# Whole-package checks, each one counted test case: the URDF parses, the layers include only
+# what they may, the test scripts work, `make help` is complete, every launch file passes
 # roslaunch's checks (nodes resolve to executables, parameters load), sim.launch really runs,
 # the install space works on its own, and the shipped rviz display shows the markers.
 if(CATKIN_ENABLE_TESTING)
@@ -7,6 +8,16 @@ if(CATKIN_ENABLE_TESTING)
     message(FATAL_ERROR "check_urdf not found (apt-get install liburdfdom-tools)")
   endif()
   amigobot_add_check(urdf_parses ${AMIGOBOT_CHECK_URDF} ${PROJECT_SOURCE_DIR}/urdf/amigobot.urdf)
+
+  # Each layer includes only what it may (scripts/check_layers.py); the checker and the result
+  # counter have their own tests on fixture trees.
+  amigobot_add_check(layers ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_layers.py ${PROJECT_SOURCE_DIR})
+  amigobot_add_check(check_layers_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_layers.py
+                     ${PROJECT_SOURCE_DIR}/scripts/check_layers.py)
+  amigobot_add_check(count_test_results_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_count_test_results.py
+                     ${PROJECT_SOURCE_DIR}/scripts/count_test_results.py)
+  # Every Makefile target has its one-line `make help` entry (help fails naming one without).
+  amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 
   set(check_launch ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_launch.py ${PROJECT_SOURCE_DIR}/launch)
   amigobot_add_check(launch_amigobot ${check_launch}/amigobot.launch)

@@ -4,11 +4,47 @@
 Usage: count_test_results.py RESULTS_DIR [--runner-exit CODE]
 A non-zero CODE (the test runner itself failed, e.g. a test target did not start) counts as
 one more failure. Exits 1 when any test failed or errored, or when no test ran at all.
+
+A rostest writes two kinds of file: its wrapper rostest-NAME.xml holds one case `testX` per
+<test test-name="X"> of the .test file, which fails only when X did not run (fixture nodes
+did not start, no results, time-out); X's own cases are in rosunit-X.xml beside it. A
+wrapper case therefore counts only when it failed or X left no cases of its own; otherwise
+X's cases stand for it. (A rostest that wrote nothing leaves catkin's MISSING-rostest-NAME.xml,
+one failed case, counted like any file.)
 """
 import glob
 import os
 import sys
 import xml.etree.ElementTree as ET
+
+
+def is_failure(case):
+    return case.find("failure") is not None or case.find("error") is not None
+
+
+def inner_results(wrapper_path, case):
+    """The rosunit-X.xml of a rostest wrapper's case `testX` (rosunit's file-name rule)."""
+    name = case.get("name", "")
+    name = name[len("test"):] if name.startswith("test") else name
+    for c in " \"'&$!`/\\":
+        name = name.replace(c, "_")
+    return os.path.join(os.path.dirname(wrapper_path), f"rosunit-{name}.xml")
+
+
+def has_cases(path):
+    try:
+        return next(ET.parse(path).getroot().iter("testcase"), None) is not None
+    except (OSError, ET.ParseError):
+        return False
+
+
+def counted_cases(path, root):
+    """The cases of one result file that count: all of them, less a rostest wrapper's cases
+    whose test ran and left its own cases."""
+    cases = list(root.iter("testcase"))
+    if not os.path.basename(path).startswith("rostest-"):
+        return cases
+    return [c for c in cases if is_failure(c) or not has_cases(inner_results(path, c))]
 
 
 def count(results_dir):
@@ -20,8 +56,8 @@ def count(results_dir):
             bad_files.append(f"{path}: {err}")
             failed += 1
             continue
-        for case in root.iter("testcase"):
-            if case.find("failure") is not None or case.find("error") is not None:
+        for case in counted_cases(path, root):
+            if is_failure(case):
                 failed += 1
                 print(f"FAILED: {case.get('classname')}.{case.get('name')} ({os.path.relpath(path, results_dir)})")
             elif case.find("skipped") is not None or case.get("status") == "notrun":

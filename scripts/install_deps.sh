@@ -1,17 +1,24 @@
 #!/usr/bin/env bash
-# Installs the Debian packages listed in scripts/debian_packages.txt that are not yet installed.
+# Installs the Debian packages of the given lists that are not yet installed.
+#   install_deps.sh            both lists: debian_packages_robot.txt + debian_packages.txt (make deps)
+#   install_deps.sh --robot    only what the robot's computer needs (make deps-robot)
 # Idempotent: does nothing (and needs no network) when every package is present.
 set -euo pipefail
-list="$(dirname "$0")/debian_packages.txt"
+dir="$(dirname "$0")"
+case "${1:-}" in
+  "") lists=("$dir/debian_packages_robot.txt" "$dir/debian_packages.txt") ;;
+  --robot) lists=("$dir/debian_packages_robot.txt") ;;
+  *) echo "install_deps.sh: unknown argument '$1' (expected nothing or --robot)" >&2; exit 2 ;;
+esac
+mapfile -t wanted < <(sed -e 's/#.*//' -e 's/[[:space:]]//g' "${lists[@]}" | grep . | sort -u)
 missing=()
-while read -r pkg; do
-  [ -z "$pkg" ] && continue
+for pkg in "${wanted[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
   [ "$status" = "install ok installed" ] || missing+=("$pkg")
-done < <(sed -e 's/#.*//' -e 's/[[:space:]]//g' "$list")
+done
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "deps: all $(sed -e 's/#.*//' "$list" | grep -c '[^[:space:]]') Debian packages present"
+  echo "deps: all ${#wanted[@]} Debian packages present (${lists[*]##*/})"
   exit 0
 fi
 echo "deps: installing ${#missing[@]} missing packages: ${missing[*]}"

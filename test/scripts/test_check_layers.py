@@ -1,0 +1,72 @@
+#!/usr/bin/python3
+"""check_layers.py on temporary trees: a bad include fails naming the file and the include.
+
+Usage: test_check_layers.py PATH/TO/check_layers.py
+"""
+import os
+import tempfile
+import unittest
+
+from script_loader import load_script_from_argv
+
+check_layers = load_script_from_argv("check_layers")
+
+
+class CheckLayers(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.root = self.tmp.name
+        self.write("include/amigobot_tracking/core/unit.h", "#include <Eigen/Dense>\n#include <vector>\n")
+        self.write("src/core/unit.cpp", '#include "amigobot_tracking/core/unit.h"\n#include <cmath>\n')
+        self.write("src/ros/node.cpp", "#include <ros/ros.h>\n#include \"amigobot_tracking/sim/scenario.h\"\n")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def write(self, relative, text):
+        path = os.path.join(self.root, relative)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            f.write(text)
+
+    def only_violation(self):
+        """The one violation the tree must have."""
+        messages, _, _ = check_layers.violations(self.root)
+        self.assertEqual(len(messages), 1, messages)
+        return messages[0]
+
+    def test_clean_tree_passes_and_counts_every_include(self):
+        messages, includes, files = check_layers.violations(self.root)
+        self.assertEqual(messages, [])
+        self.assertEqual((includes, files), (6, 3))
+
+    def test_ros_in_core_names_the_file_line_and_include(self):
+        self.write("src/core/bad.cpp", "#include <cmath>\n#include <ros/ros.h>\n")
+        self.assertIn("src/core/bad.cpp:2: <ros/ros.h> (other) is not allowed in layer core", self.only_violation())
+
+    def test_sim_may_not_include_aria_nor_mrpt(self):
+        self.write("include/amigobot_tracking/sim/x.h",
+                   '#include "amigobot_tracking/aria/client.h"\n#include <mrpt/comms/CClientTCPSocket.h>\n'
+                   "#include <yaml-cpp/yaml.h>\n#include <nlohmann/json.hpp>\n")
+        messages, _, _ = check_layers.violations(self.root)
+        self.assertEqual([m.split(" (")[0] for m in messages],
+                         ['include/amigobot_tracking/sim/x.h:1: "amigobot_tracking/aria/client.h"',
+                          "include/amigobot_tracking/sim/x.h:2: <mrpt/comms/CClientTCPSocket.h>"])
+
+    def test_aria_may_use_posix_and_world_but_core_may_not(self):
+        self.write("src/aria/serial.cpp", '#include <termios.h>\n#include <sys/socket.h>\n'
+                   '#include "amigobot_tracking/world/world.h"\n')
+        self.write("src/core/posix.cpp", "#include <unistd.h>\n")
+        self.assertTrue(self.only_violation().startswith("src/core/posix.cpp:1: <unistd.h> (posix)"))
+
+    def test_relative_quoted_include_outside_ros_fails(self):
+        self.write("src/world/world.cpp", '#include "world.h"\n')
+        self.assertIn('"world.h" (other)', self.only_violation())
+
+    def test_tools_may_not_include_ros(self):
+        self.write("src/tools/tool.cpp", '#include <CLI/CLI.hpp>\n#include "amigobot_tracking/ros/conversions.h"\n')
+        self.assertIn("src/tools/tool.cpp:2:", self.only_violation())
+
+
+if __name__ == "__main__":
+    unittest.main()
