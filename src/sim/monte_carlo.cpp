@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <random>
-#include <sstream>
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/sim/simulator.h"
 
 namespace amigobot_tracking {
@@ -29,6 +29,21 @@ bool acceptable(const Scenario& s) {
   if ((p_d - p_r).norm() >= c.max_error_ratio * c.rho_0) return false;
   return core::clearance(p_r, c.effectiveRadius() + c.delta, setup.obstacles) > 0.0 &&
          core::clearance(setup.initial_pose.position(), c.robot_radius, setup.obstacles) > 0.0;
+}
+
+// One randomised run of a batch, as monte_carlo.json lists it.
+struct MonteCarloRun {
+  int index = 0;
+  core::Pose2 initial_pose;
+  core::RunMetrics metrics;
+};
+
+void to_json(Json& j, const MonteCarloRun& r) {
+  j["index"] = r.index;
+  j["initial_pose"] = {jsonNumber(r.initial_pose.x), jsonNumber(r.initial_pose.y), jsonNumber(r.initial_pose.theta)};
+  j.update(pick(r.metrics, {"ase", "true_ase", "max_true_error", "longest_stall_s", "aae", "max_e_over_rho",
+                            "min_clearance_offset", "min_clearance_body", "body_collisions", "offset_collisions",
+                            "diamond_violations", "nan_count"}));
 }
 
 }  // namespace
@@ -86,7 +101,7 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
   double sum_true_ase = 0.0;
   double worst_body = std::numeric_limits<double>::infinity(), worst_offset = worst_body;
   double worst_ratio = 0.0, sim_time = 0.0, wall = 0.0, sum_ase = 0.0, sum_aae = 0.0;
-  std::ostringstream per_run;
+  Json per_run = Json::array();
   for (int i = 0; i < options.runs; ++i) {
     const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
     const RunResult r = runScenario(s, false);
@@ -108,41 +123,41 @@ std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options
     wall += r.wall_time;
     sum_ase += m.ase;
     sum_aae += m.aae;
-    per_run << (i ? ",\n" : "") << "    {\"index\": " << i << ", \"initial_pose\": [" << jsonNumber(s.setup.initial_pose.x)
-            << ", " << jsonNumber(s.setup.initial_pose.y) << ", " << jsonNumber(s.setup.initial_pose.theta)
-            << "], \"ase\": " << jsonNumber(m.ase) << ", \"true_ase\": " << jsonNumber(m.true_ase)
-            << ", \"max_true_error\": " << jsonNumber(m.max_true_error)
-            << ", \"longest_stall_s\": " << jsonNumber(m.longest_stall) << ", \"aae\": " << jsonNumber(m.aae)
-            << ", \"max_e_over_rho\": " << jsonNumber(m.max_e_over_rho)
-            << ", \"min_clearance_offset\": " << jsonNumber(m.min_clearance_offset)
-            << ", \"min_clearance_body\": " << jsonNumber(m.min_clearance_body)
-            << ", \"body_collisions\": " << m.body_collisions << ", \"offset_collisions\": " << m.offset_collisions
-            << ", \"diamond_violations\": " << m.diamond_violations << ", \"nan_count\": " << m.nan_count << "}";
+    per_run.push_back(MonteCarloRun{i, s.setup.initial_pose, m});
   }
   const double n = std::max(1, options.runs);
-  std::ostringstream j;
-  j << "{\n  \"scenario\": \"" << base.file << "\",\n  \"runs\": " << options.runs << ",\n  \"seed\": " << options.seed
-    << ",\n  \"variant\": \"" << toString(base.setup.law) << "\",\n  \"body_safe\": "
-    << (base.setup.controller.body_safe ? "true" : "false") << ",\n  \"obstacle_shift\": "
-    << jsonNumber(options.obstacle_shift) << ",\n  \"pose_shift\": " << jsonNumber(options.pose_shift)
-    << ",\n  \"heading_shift\": " << jsonNumber(options.heading_shift)
-    << ",\n  \"obstacle_speed\": " << jsonNumber(options.obstacle_speed)
-    << ",\n  \"tangential_avoidance\": " << (base.setup.controller.tangential_avoidance ? "true" : "false")
-    << ",\n  \"moving_obstacles\": " << (base.setup.controller.moving_obstacles ? "true" : "false")
-    << ",\n  \"body_collision_episodes\": " << body_episodes
-    << ",\n  \"offset_collision_episodes\": " << offset_episodes
-    << ",\n  \"runs_with_stall_over_0_5s\": " << stall_runs << ",\n  \"worst_stall_s\": " << jsonNumber(worst_stall)
-    << ",\n  \"runs_with_body_collision\": " << body_runs << ",\n  \"runs_with_offset_collision\": " << offset_runs
-    << ",\n  \"runs_with_diamond_violation\": " << violation_runs << ",\n  \"runs_with_nan\": " << nan_runs
-    << ",\n  \"runs_with_e_over_rho_ge_1\": " << bound_runs
-    << ",\n  \"worst_min_clearance_body\": " << jsonNumber(worst_body)
-    << ",\n  \"worst_min_clearance_offset\": " << jsonNumber(worst_offset)
-    << ",\n  \"worst_max_e_over_rho\": " << jsonNumber(worst_ratio) << ",\n  \"mean_ase\": " << jsonNumber(sum_ase / n)
-    << ",\n  \"mean_aae\": " << jsonNumber(sum_aae / n) << ",\n  \"mean_true_ase\": " << jsonNumber(sum_true_ase / n) << ",\n  \"sim_time_s\": " << jsonNumber(sim_time)
-    << ",\n  \"wall_time_s\": " << jsonNumber(wall)
-    << ",\n  \"realtime_factor\": " << jsonNumber(wall > 0.0 ? sim_time / wall : 0.0) << ",\n  \"per_run\": [\n"
-    << per_run.str() << "\n  ]\n}\n";
-  return j.str();
+  Json j;
+  j["scenario"] = base.file;
+  j["runs"] = options.runs;
+  j["seed"] = options.seed;
+  j["variant"] = toString(base.setup.law);
+  j["body_safe"] = base.setup.controller.body_safe;
+  j["obstacle_shift"] = jsonNumber(options.obstacle_shift);
+  j["pose_shift"] = jsonNumber(options.pose_shift);
+  j["heading_shift"] = jsonNumber(options.heading_shift);
+  j["obstacle_speed"] = jsonNumber(options.obstacle_speed);
+  j["tangential_avoidance"] = base.setup.controller.tangential_avoidance;
+  j["moving_obstacles"] = base.setup.controller.moving_obstacles;
+  j["body_collision_episodes"] = body_episodes;
+  j["offset_collision_episodes"] = offset_episodes;
+  j["runs_with_stall_over_0_5s"] = stall_runs;
+  j["worst_stall_s"] = jsonNumber(worst_stall);
+  j["runs_with_body_collision"] = body_runs;
+  j["runs_with_offset_collision"] = offset_runs;
+  j["runs_with_diamond_violation"] = violation_runs;
+  j["runs_with_nan"] = nan_runs;
+  j["runs_with_e_over_rho_ge_1"] = bound_runs;
+  j["worst_min_clearance_body"] = jsonNumber(worst_body);
+  j["worst_min_clearance_offset"] = jsonNumber(worst_offset);
+  j["worst_max_e_over_rho"] = jsonNumber(worst_ratio);
+  j["mean_ase"] = jsonNumber(sum_ase / n);
+  j["mean_aae"] = jsonNumber(sum_aae / n);
+  j["mean_true_ase"] = jsonNumber(sum_true_ase / n);
+  j["sim_time_s"] = jsonNumber(sim_time);
+  j["wall_time_s"] = jsonNumber(wall);
+  j["realtime_factor"] = jsonNumber(wall > 0.0 ? sim_time / wall : 0.0);
+  j["per_run"] = std::move(per_run);
+  return dumpJson(j);
 }
 
 }  // namespace sim
