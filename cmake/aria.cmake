@@ -15,13 +15,14 @@ add_library(amigobot_tracking_aria
   src/aria/client.cpp
   src/aria/emulator.cpp
   src/aria/emulator_server.cpp
+  src/aria/emulator_status.cpp
 )
 target_include_directories(amigobot_tracking_aria PUBLIC include)
 target_link_libraries(amigobot_tracking_aria PUBLIC amigobot_tracking_core mrpt::comms mrpt::poses yaml-cpp Threads::Threads)
 target_compile_options(amigobot_tracking_aria PRIVATE ${AMIGOBOT_WARNINGS})
 
 amigobot_add_tool(amigobot_emulator src/tools/amigobot_emulator.cpp)
-target_link_libraries(amigobot_emulator amigobot_tracking_aria)
+target_link_libraries(amigobot_emulator amigobot_tracking_aria amigobot_tracking_world)
 amigobot_add_tool(amigobot_drive src/tools/amigobot_drive.cpp)
 target_link_libraries(amigobot_drive amigobot_tracking_aria)
 amigobot_add_tool(aria_command_study src/tools/aria_command_study.cpp)

@@ -12,3 +12,10 @@ target_link_libraries(test_aria_driver_emulator amigobot_tracking_aria)
 target_include_directories(test_aria_driver_emulator PRIVATE test/aria)
 target_compile_definitions(test_aria_driver_emulator PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
 add_dependencies(test_aria_driver_emulator amigobot_emulator)
+
+# The status protocol: writer, parser, and the client's reconnect against the real emulator.
+amigobot_add_unit_test(test_aria_emulator_status test/unit/test_aria_emulator_status.cpp)
+target_link_libraries(test_aria_emulator_status amigobot_tracking_aria)
+target_include_directories(test_aria_emulator_status PRIVATE test/aria)
+target_compile_definitions(test_aria_emulator_status PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
+add_dependencies(test_aria_emulator_status amigobot_emulator)

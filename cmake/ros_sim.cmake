@@ -11,7 +11,7 @@ target_compile_options(amigobot_tracking_ros_sim PRIVATE ${AMIGOBOT_WARNINGS})
 install(TARGETS amigobot_tracking_ros_sim LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 amigobot_add_tool(sim_laser src/ros/nodes/sim_laser_node.cpp)
-target_link_libraries(sim_laser amigobot_tracking_ros_sim)
+target_link_libraries(sim_laser amigobot_tracking_ros_sim amigobot_tracking_world)
 amigobot_add_tool(trail_publisher src/ros/nodes/trail_publisher_node.cpp)
 target_link_libraries(trail_publisher amigobot_tracking_ros_sim)
 amigobot_add_tool(ground_truth_localization src/ros/nodes/ground_truth_localization_node.cpp)
@@ -39,7 +39,7 @@ add_dependencies(amigobot_tracking_ros_report ${PROJECT_NAME}_generate_messages_
 install(TARGETS amigobot_tracking_ros_report LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 amigobot_add_tool(run_report src/ros/nodes/run_report.cpp)
 target_include_directories(run_report SYSTEM PRIVATE ${rosbag_INCLUDE_DIRS})
-target_link_libraries(run_report amigobot_tracking_ros_report amigobot_tracking_aria ${rosbag_LIBRARIES} ${catkin_LIBRARIES})
+target_link_libraries(run_report amigobot_tracking_ros_report amigobot_tracking_world ${rosbag_LIBRARIES} ${catkin_LIBRARIES})
 
 if(CATKIN_ENABLE_TESTING)
   amigobot_add_unit_test(test_recorded_run test/unit/test_recorded_run.cpp)
