@@ -50,15 +50,18 @@ core::Disk readDisk(const std::string& path, const YAML::Node& node, const std::
   return {{(*center)[0], (*center)[1]}, radius};
 }
 
-}  // namespace
-
-World loadWorld(const std::string& path) {
-  YAML::Node root;
+YAML::Node parseFile(const std::string& path) {
   try {
-    root = YAML::LoadFile(path);
+    return YAML::LoadFile(path);
   } catch (const YAML::Exception& e) {
     throw std::runtime_error(path + ": cannot read world: " + e.what());
   }
+}
+
+}  // namespace
+
+World loadWorld(const std::string& path) {
+  const YAML::Node root = parseFile(path);
   if (!root.IsMap()) fail(path, root, "(top level)", "expected a mapping {initial_pose: ..., obstacles: [...]}");
   onlyKeys(path, root, "", {"initial_pose", "obstacles"});
   World world;
