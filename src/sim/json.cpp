@@ -26,10 +26,10 @@ Json pick(const Json& from, std::initializer_list<const char*> keys) {
 }
 
 Json sharedMetricsJson(const core::RunMetrics& metrics) {
-  return pick(metrics, {"ase", "aae", "tec", "max_e_over_rho", "max_rho", "final_error", "min_clearance_offset",
-                        "min_clearance_body", "body_collisions", "body_contact_time_s", "diamond_violations",
-                        "saturated_steps", "envelope_widenings", "estimator_rms_error",
-                        "estimator_max_error_settled", "steps"});
+  return pick(metrics,
+              {"ase", "aae", "tec", "max_e_over_rho", "max_rho", "final_error", "min_clearance_offset",
+               "min_clearance_body", "body_collisions", "body_contact_time_s", "diamond_violations", "saturated_steps",
+               "envelope_widenings", "estimator_rms_error", "estimator_max_error_settled", "steps"});
 }
 
 Json obstacleJson(const core::Disk& disk, const Eigen::Vector2d& velocity) {
@@ -46,33 +46,33 @@ namespace core {
 
 void to_json(sim::Json& j, const RunMetrics& m) {
   using sim::jsonNumber;
-  j["ase"] = jsonNumber(m.ase);
-  j["aae"] = jsonNumber(m.aae);
-  j["tec"] = jsonNumber(m.tec);
-  j["max_e_over_rho"] = jsonNumber(m.max_e_over_rho);
-  j["max_rho"] = jsonNumber(m.max_rho);
-  j["final_error"] = jsonNumber(m.final_error);
-  j["min_clearance_offset"] = jsonNumber(m.min_clearance_offset);
-  j["min_clearance_body"] = jsonNumber(m.min_clearance_body);
-  j["body_collisions"] = m.body_collisions;
-  j["body_contact_time_s"] = jsonNumber(m.body_contact_time);
-  j["diamond_violations"] = m.diamond_violations;
-  j["saturated_steps"] = m.saturated_steps;
-  j["envelope_widenings"] = m.envelope_widenings;
-  j["estimator_rms_error"] = jsonNumber(m.estimator_rms_error);
-  j["estimator_max_error_settled"] = jsonNumber(m.estimator_max_error_settled);
-  j["steps"] = m.steps;
-  j["offset_collisions"] = m.offset_collisions;
-  j["offset_contact_time_s"] = jsonNumber(m.offset_contact_time);
-  j["nan_count"] = m.nan_count;
-  j["true_ase"] = jsonNumber(m.true_ase);
-  j["true_aae"] = jsonNumber(m.true_aae);
-  j["max_true_error"] = jsonNumber(m.max_true_error);
-  j["longest_stall_s"] = jsonNumber(m.longest_stall);
-  j["conflict_steps"] = m.conflict_steps;
-  j["escape_steps"] = m.escape_steps;
-  j["side_flips"] = m.side_flips;
-  j["sim_time_s"] = jsonNumber(m.sim_time);
+  j = sim::Json{{"ase", jsonNumber(m.ase)},
+                {"aae", jsonNumber(m.aae)},
+                {"tec", jsonNumber(m.tec)},
+                {"max_e_over_rho", jsonNumber(m.max_e_over_rho)},
+                {"max_rho", jsonNumber(m.max_rho)},
+                {"final_error", jsonNumber(m.final_error)},
+                {"min_clearance_offset", jsonNumber(m.min_clearance_offset)},
+                {"min_clearance_body", jsonNumber(m.min_clearance_body)},
+                {"body_collisions", m.body_collisions},
+                {"body_contact_time_s", jsonNumber(m.body_contact_time)},
+                {"diamond_violations", m.diamond_violations},
+                {"saturated_steps", m.saturated_steps},
+                {"envelope_widenings", m.envelope_widenings},
+                {"estimator_rms_error", jsonNumber(m.estimator_rms_error)},
+                {"estimator_max_error_settled", jsonNumber(m.estimator_max_error_settled)},
+                {"steps", m.steps},
+                {"offset_collisions", m.offset_collisions},
+                {"offset_contact_time_s", jsonNumber(m.offset_contact_time)},
+                {"nan_count", m.nan_count},
+                {"true_ase", jsonNumber(m.true_ase)},
+                {"true_aae", jsonNumber(m.true_aae)},
+                {"max_true_error", jsonNumber(m.max_true_error)},
+                {"longest_stall_s", jsonNumber(m.longest_stall)},
+                {"conflict_steps", m.conflict_steps},
+                {"escape_steps", m.escape_steps},
+                {"side_flips", m.side_flips},
+                {"sim_time_s", jsonNumber(m.sim_time)}};
 }
 
 }  // namespace core

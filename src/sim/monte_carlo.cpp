@@ -125,36 +125,36 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
 }
 
 void to_json(Json& j, const MonteCarloSummary& s) {
-  j["scenario"] = s.scenario;
-  j["runs"] = s.options.runs;
-  j["seed"] = s.options.seed;
-  j["variant"] = s.variant;
-  j["body_safe"] = s.body_safe;
-  j["obstacle_shift"] = jsonNumber(s.options.obstacle_shift);
-  j["pose_shift"] = jsonNumber(s.options.pose_shift);
-  j["heading_shift"] = jsonNumber(s.options.heading_shift);
-  j["obstacle_speed"] = jsonNumber(s.options.obstacle_speed);
-  j["tangential_avoidance"] = s.tangential_avoidance;
-  j["moving_obstacles"] = s.moving_obstacles;
-  j["body_collision_episodes"] = s.body_collision_episodes;
-  j["offset_collision_episodes"] = s.offset_collision_episodes;
-  j["runs_with_stall_over_0_5s"] = s.runs_with_long_stall;
-  j["worst_stall_s"] = jsonNumber(s.worst_stall);
-  j["runs_with_body_collision"] = s.runs_with_body_collision;
-  j["runs_with_offset_collision"] = s.runs_with_offset_collision;
-  j["runs_with_diamond_violation"] = s.runs_with_diamond_violation;
-  j["runs_with_nan"] = s.runs_with_nan;
-  j["runs_with_e_over_rho_ge_1"] = s.runs_with_e_over_rho_ge_1;
-  j["worst_min_clearance_body"] = jsonNumber(s.worst_min_clearance_body);
-  j["worst_min_clearance_offset"] = jsonNumber(s.worst_min_clearance_offset);
-  j["worst_max_e_over_rho"] = jsonNumber(s.worst_max_e_over_rho);
-  j["mean_ase"] = jsonNumber(s.mean_ase);
-  j["mean_aae"] = jsonNumber(s.mean_aae);
-  j["mean_true_ase"] = jsonNumber(s.mean_true_ase);
-  j["sim_time_s"] = jsonNumber(s.sim_time);
-  j["wall_time_s"] = jsonNumber(s.wall_time);
-  j["realtime_factor"] = jsonNumber(s.wall_time > 0.0 ? s.sim_time / s.wall_time : 0.0);
-  j["per_run"] = s.per_run;
+  j = Json{{"scenario", s.scenario},
+           {"runs", s.options.runs},
+           {"seed", s.options.seed},
+           {"variant", s.variant},
+           {"body_safe", s.body_safe},
+           {"obstacle_shift", jsonNumber(s.options.obstacle_shift)},
+           {"pose_shift", jsonNumber(s.options.pose_shift)},
+           {"heading_shift", jsonNumber(s.options.heading_shift)},
+           {"obstacle_speed", jsonNumber(s.options.obstacle_speed)},
+           {"tangential_avoidance", s.tangential_avoidance},
+           {"moving_obstacles", s.moving_obstacles},
+           {"body_collision_episodes", s.body_collision_episodes},
+           {"offset_collision_episodes", s.offset_collision_episodes},
+           {"runs_with_stall_over_0_5s", s.runs_with_long_stall},
+           {"worst_stall_s", jsonNumber(s.worst_stall)},
+           {"runs_with_body_collision", s.runs_with_body_collision},
+           {"runs_with_offset_collision", s.runs_with_offset_collision},
+           {"runs_with_diamond_violation", s.runs_with_diamond_violation},
+           {"runs_with_nan", s.runs_with_nan},
+           {"runs_with_e_over_rho_ge_1", s.runs_with_e_over_rho_ge_1},
+           {"worst_min_clearance_body", jsonNumber(s.worst_min_clearance_body)},
+           {"worst_min_clearance_offset", jsonNumber(s.worst_min_clearance_offset)},
+           {"worst_max_e_over_rho", jsonNumber(s.worst_max_e_over_rho)},
+           {"mean_ase", jsonNumber(s.mean_ase)},
+           {"mean_aae", jsonNumber(s.mean_aae)},
+           {"mean_true_ase", jsonNumber(s.mean_true_ase)},
+           {"sim_time_s", jsonNumber(s.sim_time)},
+           {"wall_time_s", jsonNumber(s.wall_time)},
+           {"realtime_factor", jsonNumber(s.wall_time > 0.0 ? s.sim_time / s.wall_time : 0.0)},
+           {"per_run", s.per_run}};
 }
 
 std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {

@@ -17,12 +17,13 @@
 
 using namespace amigobot_tracking;
 
+const ros_layer::NodeHelp kHelp{
+    "Broadcasts map -> odom from the emulator's ground truth (status socket) and "
+    "publishes it as `ground_truth`.",
+    "include/amigobot_tracking/ros/ground_truth.h (GroundTruthConfig)."};
+
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "ground_truth_localization");
-  ros_layer::parseNodeCommandLine(argc, argv, "ground_truth_localization",
-                                  "Broadcasts map -> odom from the emulator's ground truth (status socket) and "
-                                  "publishes it as `ground_truth`.",
-                                  "include/amigobot_tracking/ros/ground_truth.h (GroundTruthConfig).");
+  ros_layer::initNode(argc, argv, "ground_truth_localization", kHelp);
   ros::NodeHandle nh, pnh("~");
   ros_layer::GroundTruthConfig config;
   const std::string error = ros_layer::loadGroundTruthConfig(pnh, &config);

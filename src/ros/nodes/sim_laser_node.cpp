@@ -15,12 +15,13 @@
 
 using namespace amigobot_tracking;
 
+const ros_layer::NodeHelp kHelp{
+    "A planar laser for the emulated robot: ray casts the world file from the pose of "
+    "laser_frame and publishes `scan`.",
+    "include/amigobot_tracking/ros/sim_laser.h (SimLaserConfig)."};
+
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "sim_laser");
-  ros_layer::parseNodeCommandLine(argc, argv, "sim_laser",
-                                  "A planar laser for the emulated robot: ray casts the world file from the pose of "
-                                  "laser_frame and publishes `scan`.",
-                                  "include/amigobot_tracking/ros/sim_laser.h (SimLaserConfig).");
+  ros_layer::initNode(argc, argv, "sim_laser", kHelp);
   ros::NodeHandle nh, pnh("~");
   ros_layer::SimLaserConfig config;
   const std::string error = ros_layer::loadSimLaserConfig(pnh, &config);
