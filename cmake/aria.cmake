@@ -11,12 +11,13 @@ amigobot_add_library(amigobot_tracking_aria
   src/aria/client.cpp
   src/aria/emulator.cpp
   src/aria/emulator_server.cpp
+  src/aria/emulator_status.cpp
 )
 target_include_directories(amigobot_tracking_aria PUBLIC include)
 target_link_libraries(amigobot_tracking_aria PUBLIC amigobot_tracking_core mrpt::comms mrpt::poses yaml-cpp Threads::Threads)
 
 amigobot_add_tool(amigobot_emulator src/tools/amigobot_emulator.cpp)
-target_link_libraries(amigobot_emulator amigobot_tracking_aria)
+target_link_libraries(amigobot_emulator amigobot_tracking_aria amigobot_tracking_world)
 amigobot_add_tool(amigobot_drive src/tools/amigobot_drive.cpp)
 target_link_libraries(amigobot_drive amigobot_tracking_aria)
 amigobot_add_tool(aria_command_study src/tools/aria_command_study.cpp)
@@ -34,6 +35,11 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(test_aria_driver_emulator amigobot_tracking_aria)
   target_compile_definitions(test_aria_driver_emulator PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
   add_dependencies(test_aria_driver_emulator amigobot_emulator)
+  # The status protocol: writer, parser, and the client's reconnect against the real emulator.
+  amigobot_add_unit_test(test_aria_emulator_status test/unit/test_aria_emulator_status.cpp)
+  target_link_libraries(test_aria_emulator_status amigobot_tracking_aria)
+  target_compile_definitions(test_aria_emulator_status PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
+  add_dependencies(test_aria_emulator_status amigobot_emulator)
 endif()
 
 # The libFuzzer target of the packet parser is built by scripts/run_fuzz.sh with clang.

@@ -4,6 +4,7 @@
 # in devel and in an install space.
 function(amigobot_add_tool name)
   add_executable(${name} ${ARGN})
+  target_link_libraries(${name} CLI11::CLI11)
   target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
   install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

@@ -5,7 +5,7 @@ add_dependencies(amigobot_tracking_ros_report ${PROJECT_NAME}_generate_messages_
 
 amigobot_add_tool(run_report src/ros/programs/run_report.cpp)
 target_include_directories(run_report SYSTEM PRIVATE ${rosbag_INCLUDE_DIRS})
-target_link_libraries(run_report amigobot_tracking_ros_report amigobot_tracking_aria ${rosbag_LIBRARIES} ${catkin_LIBRARIES})
+target_link_libraries(run_report amigobot_tracking_ros_report amigobot_tracking_world ${rosbag_LIBRARIES} ${catkin_LIBRARIES})
 
 if(CATKIN_ENABLE_TESTING)
   amigobot_add_unit_test(test_recorded_run test/unit/test_recorded_run.cpp)

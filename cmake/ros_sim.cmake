@@ -9,7 +9,7 @@ amigobot_add_library(amigobot_tracking_ros_sim
 target_link_libraries(amigobot_tracking_ros_sim amigobot_tracking_ros amigobot_tracking_aria ${catkin_LIBRARIES})
 
 amigobot_add_tool(sim_laser src/ros/programs/sim_laser_node.cpp)
-target_link_libraries(sim_laser amigobot_tracking_ros_sim)
+target_link_libraries(sim_laser amigobot_tracking_ros_sim amigobot_tracking_world)
 amigobot_add_tool(trail_publisher src/ros/programs/trail_publisher_node.cpp)
 target_link_libraries(trail_publisher amigobot_tracking_ros_sim)
 amigobot_add_tool(ground_truth_localization src/ros/programs/ground_truth_localization_node.cpp)

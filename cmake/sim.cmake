@@ -1,5 +1,5 @@
 # Layer 2, sim: the offline-simulation model over the core (closed loop, integrators, sensor
-# models, metrics, baselines, scenario files, Monte Carlo). Core + yaml-cpp; no ROS, no MRPT.
+# models, metrics, baselines, scenario files, Monte Carlo). Core + yaml-cpp + nlohmann-json; no ROS, no MRPT.
 amigobot_add_library(amigobot_tracking_sim
   src/sim/closed_loop.cpp
   src/sim/step_size.cpp
@@ -10,9 +10,10 @@ amigobot_add_library(amigobot_tracking_sim
   src/sim/scenario.cpp
   src/sim/simulator.cpp
   src/sim/monte_carlo.cpp
+  src/sim/json.cpp
 )
 target_include_directories(amigobot_tracking_sim PUBLIC include)
-target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML_CPP_LIBRARIES})
+target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML_CPP_LIBRARIES} nlohmann_json::nlohmann_json)
 
 amigobot_add_tool(amigobot_sim src/tools/amigobot_sim.cpp)
 target_link_libraries(amigobot_sim amigobot_tracking_sim)

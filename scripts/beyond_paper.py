@@ -7,7 +7,6 @@ Usage: scripts/beyond_paper.py --sim PATH/amigobot_sim [--out out/reproduce] [--
 import argparse
 import json
 import os
-import re
 import statistics
 import subprocess
 
@@ -16,6 +15,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+import scenario_yaml  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SHIPPED = ["paper_5_1", "paper_5_2_rose", "experiment_5_3", "saddle_line", "crossing_obstacles"]
@@ -51,13 +52,8 @@ def monte_carlo(sim, scenario, out, args, runs=MC_RUNS):
 
 
 def variant_file(out_root, name, edit, label):
-    """A copy of a shipped scenario with one edit (text substitution or appended section)."""
-    text = open(scenario_path(name)).read()
-    text = edit(text)
-    path = os.path.join(out_root, f"{name}_{label}.yaml")
-    with open(path, "w") as f:
-        f.write(text)
-    return path
+    """A copy of a shipped scenario with `edit(data)` applied to its YAML data (scenario_yaml.py)."""
+    return scenario_yaml.write_variant(scenario_path(name), os.path.join(out_root, f"{name}_{label}.yaml"), edit)
 
 
 def g(x, digits=3):
@@ -110,15 +106,15 @@ def saddle(sim, out_root, figs):
     # The same with 1 cm measurement noise, which breaks the symmetry for the paper law too: at 10 Hz
     # like SLAM, and at every 10 ms step (a stress case: v_hat is then mostly differentiated noise).
     noisy = {}
-    for label, section in [("10hz", "target:\n  sample_period: 0.1\n  noise_std: 0.01\n"),
-                           ("100hz", "target:\n  noise_std: 0.01\n")]:
-        noisy_path = variant_file(out_root, "saddle_line", lambda t, s=section: t + s, "noisy_" + label)
+    for label, section in [("10hz", {"sample_period": 0.1, "noise_std": 0.01}), ("100hz", {"noise_std": 0.01})]:
+        noisy_path = variant_file(out_root, "saddle_line", lambda d, s=section: scenario_yaml.set_key(
+            d, "target", dict(s), must_exist=False), "noisy_" + label)
         for on in ("false", "true"):
             noisy[(label, on)] = [run(sim, noisy_path, os.path.join(base, f"noisy_{label}_{on}_{s}"),
                                       ["--tangential", on, "--seed", str(s)]) for s in SEEDS]
     # The side latch: the previous default margin 0.2 against 0.6.
     h02 = variant_file(out_root, "saddle_line",
-                       lambda t: t.replace("tangential_hysteresis: 0.6 ", "tangential_hysteresis: 0.2 "), "h02")
+                       lambda d: scenario_yaml.set_key(d, "controller.tangential_hysteresis", 0.2), "h02")
     latch = {"0.2": run(sim, h02, os.path.join(base, "h02"), ["--tangential", "true"]), "0.6": exact["true"]}
     return exact, noisy, latch
 
@@ -126,7 +122,7 @@ def saddle(sim, out_root, figs):
 def clearance(sim, out_root):
     rows = []
     for name in SHIPPED:
-        ships_safe = "body_safe: true" in open(scenario_path(name)).read()
+        ships_safe = scenario_yaml.load(scenario_path(name))["controller"].get("body_safe") is True
         for radius in ("shipped",) if ships_safe else ("shipped", "true"):
             extra = [] if radius == "shipped" else ["--body-safe", "true"]
             m = {on: run(sim, scenario_path(name), os.path.join(out_root, "beyond", "clearance", name, radius, on),
@@ -181,11 +177,12 @@ def delay(sim, out_root, figs):
                     flags + ["--target-delay", f"{d}", "--seed", str(s)])["true_ase"] for s in SEEDS]
     # Prediction against measurement noise: the shipped 1 cm, none, and either without obstacles.
     noise = {}
-    for label, edit in [("1 cm noise", lambda t: t), ("no noise", lambda t: t.replace("noise_std: 0.01 ", "noise_std: 0.0 "))]:
-        for place, edit2 in [("with the square", lambda t: t),
-                             ("no obstacles", lambda t: re.sub(r"^obstacles:.*?\nsimulation:", "obstacles: []\nsimulation:",
-                                                               t, flags=re.S | re.M))]:
-            f = variant_file(out_root, "experiment_5_3", lambda t, a=edit, b=edit2: b(a(t)),
+    def keep(data):
+        pass
+    for label, edit in [("1 cm noise", keep), ("no noise", lambda d: scenario_yaml.set_key(d, "target.noise_std", 0.0))]:
+        for place, edit2 in [("with the square", keep),
+                             ("no obstacles", lambda d: scenario_yaml.set_key(d, "obstacles", []))]:
+            f = variant_file(out_root, "experiment_5_3", lambda d, a=edit, b=edit2: (a(d), b(d)),
                              (label + "_" + place).replace(" ", "_"))
             for d in (0.0, 0.3):
                 for p in ("false", "true"):

@@ -16,6 +16,7 @@ import subprocess
 import sys
 
 import beyond_paper
+import scenario_yaml
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENARIOS = {
@@ -83,13 +84,8 @@ def ratio(a, b):
 
 def no_obstacle_copy(name, out_root):
     """The rose without obstacles (for the speed figure of the free curve)."""
-    src = scenario_path(name)
-    dst = os.path.join(out_root, name + "_no_obstacles.yaml")
-    text = open(src).read()
-    text = re.sub(r"^obstacles:.*?\nsimulation:", "obstacles: []\nsimulation:", text, flags=re.S | re.M)
-    with open(dst, "w") as f_out:
-        f_out.write(text)
-    return dst
+    return scenario_yaml.write_variant(scenario_path(name), os.path.join(out_root, name + "_no_obstacles.yaml"),
+                                       lambda data: scenario_yaml.set_key(data, "obstacles", []))
 
 
 def main():

@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include <mrpt/poses/CPose2D.h>
-#include <yaml-cpp/yaml.h>
 
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/core/unicycle.h"
@@ -344,44 +343,8 @@ std::vector<std::uint8_t> RobotEmulator::makeSip() {
   return encodeSip(sip, tail);
 }
 
-std::string RobotEmulator::statusLine(double now) const {
-  char line[256];
-  std::snprintf(line, sizeof(line), "%.4f %.6f %.6f %.6f %.6f %.6f %d %d %d", now, pose_.x, pose_.y, pose_.theta, v_,
-                w_, motors_ ? 1 : 0, open_ ? 1 : 0, watchdog_tripped_ ? 1 : 0);
-  return line;
-}
-
-void loadWorld(const std::string& path, EmulatorOptions& options) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw std::runtime_error(path + ": cannot read world: " + e.what());
-  }
-  try {
-    if (const YAML::Node pose = root["initial_pose"]) {
-      const auto v = pose.as<std::vector<double>>();
-      if (v.size() != 3) throw std::runtime_error(path + ": initial_pose: expected [x, y, theta]");
-      options.initial_pose = {v[0], v[1], v[2]};
-    }
-  } catch (const YAML::Exception& e) {
-    throw std::runtime_error(path + ": initial_pose: expected [x, y, theta] (" + e.msg + ")");
-  }
-  const YAML::Node obstacles = root["obstacles"];
-  if (!obstacles) return;
-  if (!obstacles.IsSequence()) throw std::runtime_error(path + ": obstacles: expected a list");
-  for (std::size_t i = 0; i < obstacles.size(); ++i) {
-    const YAML::Node o = obstacles[i];
-    try {
-      const auto c = o["center"].as<std::vector<double>>();
-      const double r = o["radius"].as<double>();
-      if (c.size() != 2 || !(r > 0.0)) throw YAML::Exception(o.Mark(), "center [x, y] and radius > 0");
-      options.obstacles.push_back({{c[0], c[1]}, r});
-    } catch (const YAML::Exception& e) {
-      throw std::runtime_error(path + ":" + std::to_string(o.Mark().line + 1) + ": obstacles[" + std::to_string(i) +
-                               "]: expected {center: [x, y], radius: r > 0} (" + e.msg + ")");
-    }
-  }
+EmulatorStatus RobotEmulator::status(double now) const {
+  return {now, pose_, v_, w_, motors_, open_, watchdog_tripped_};
 }
 
 }  // namespace aria

@@ -191,7 +191,7 @@ void EmulatorServer::serveStatus(std::size_t index, bool& quit) {
     const std::string line = pending.substr(0, eol);
     pending.erase(0, eol + 1);
     if (line.rfind("quit", 0) == 0) quit = true;
-    const std::string reply = robot_.statusLine(now()) + "\n";
+    const std::string reply = formatStatusLine(robot_.status(now())) + "\n";
     writeAll(status_clients_[index], std::vector<std::uint8_t>(reply.begin(), reply.end()));
   }
 }

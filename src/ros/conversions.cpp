@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2/utils.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
 namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
@@ -26,9 +30,7 @@ geometry_msgs::Point point(const Eigen::Vector2d& v) {
 }  // namespace
 
 core::Pose2 toPose2(const geometry_msgs::Transform& t) {
-  const geometry_msgs::Quaternion& q = t.rotation;
-  const double yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
-  return {t.translation.x, t.translation.y, yaw};
+  return {t.translation.x, t.translation.y, tf2::getYaw(t.rotation)};
 }
 
 Eigen::Affine2d toAffine2d(const geometry_msgs::Transform& t) {
@@ -57,14 +59,19 @@ geometry_msgs::TransformStamped toTransform(const std::string& parent, const std
   t.child_frame_id = child;
   t.transform.translation.x = pose.x;
   t.transform.translation.y = pose.y;
-  t.transform.rotation.z = std::sin(0.5 * pose.theta);
-  t.transform.rotation.w = std::cos(0.5 * pose.theta);
+  t.transform.rotation = toQuaternion(pose.theta);
   return t;
 }
 
 double ageOf(const ros::Time& stamp, const ros::Time& now) {
   if (stamp.isZero()) return 0.0;  // static transform: always current
   return std::max(0.0, (now - stamp).toSec());
+}
+
+geometry_msgs::Quaternion toQuaternion(double yaw) {
+  tf2::Quaternion q;
+  q.setRPY(0.0, 0.0, yaw);
+  return tf2::toMsg(q);
 }
 
 void fillState(const core::ControllerOutput& out, TrackingState* s) {

@@ -9,16 +9,17 @@
 #include <sensor_msgs/Range.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Float64.h>
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
 
 geometry_msgs::Quaternion yawQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(0.5 * yaw);
-  q.w = std::cos(0.5 * yaw);
-  return q;
+  tf2::Quaternion q;
+  q.setRPY(0.0, 0.0, yaw);
+  return tf2::toMsg(q);
 }
 
 template <typename T>

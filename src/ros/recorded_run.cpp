@@ -1,10 +1,10 @@
 #include "amigobot_tracking/ros/recorded_run.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/sim/json.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -122,44 +122,40 @@ RecordedRunSummary RecordedRun::summary() const {
   return s;
 }
 
-std::string recordedRunJson(const RecordedRunSummary& s, const RecordedRunConfig& config,
-                            const std::vector<core::Disk>& all_obstacles, const std::string& name) {
+void to_json(sim::Json& j, const RecordedRunSummary& s) {
   using sim::jsonNumber;
   const sim::RunMetrics& m = s.metrics;
-  std::ostringstream j;
-  auto num = [&](const char* key, double value) { j << "  \"" << key << "\": " << jsonNumber(value) << ",\n"; };
-  j << "{\n";
-  j << "  \"safe\": " << (s.collided() || s.command_violations > 0 ? "false" : "true") << ",\n";
-  j << "  \"ran\": " << (s.ran() ? "true" : "false") << ",\n";
-  sim::writeSharedMetricsJson(j, m);
-  num("within_rho_fraction", s.within_rho_fraction);
-  num("min_clearance_world", s.min_clearance_world);
-  num("min_clearance_virtual", s.min_clearance_virtual);
-  num("commands", static_cast<double>(s.commands));
-  num("command_diamond_violations", static_cast<double>(s.command_violations));
-  num("max_command_diamond_norm", s.max_command_norm);
-  num("invalid_steps", static_cast<double>(m.nan_count));
-  num("tracking_time_s", m.sim_time);
-  num("path_length", s.path_length);
-  num("virtual_obstacles", static_cast<double>(s.virtual_obstacles));
-  num("truth_samples", static_cast<double>(s.truth_samples));
-  j << "  \"scenario\": {\n"
-    << "    \"name\": \"" << name << "\",\n"
-    << "    \"variant\": \"recorded\",\n"
-    << "    \"estimator\": \"paper\",\n"
-    << "    \"robot_radius\": " << jsonNumber(config.robot_radius) << ",\n"
-    << "    \"offset\": " << jsonNumber(config.offset) << ",\n"
-    << "    \"v_max\": " << jsonNumber(config.v_max) << ",\n"
-    << "    \"w_max\": " << jsonNumber(config.w_max) << ",\n"
-    << "    \"rho_inf\": " << jsonNumber(config.rho_inf) << ",\n"
-    << "    \"obstacles\": [";
-  for (std::size_t i = 0; i < all_obstacles.size(); ++i) {
-    const core::Disk& d = all_obstacles[i];
-    j << (i ? ", " : "") << "{\"center\": [" << jsonNumber(d.center.x()) << ", " << jsonNumber(d.center.y())
-      << "], \"radius\": " << jsonNumber(d.radius) << ", \"velocity\": [0, 0]}";
-  }
-  j << "]\n  }\n}\n";
-  return j.str();
+  j = {{"safe", !(s.collided() || s.command_violations > 0)}, {"ran", s.ran()}};
+  j.update(sim::sharedMetricsJson(m));
+  j.update(sim::Json{{"within_rho_fraction", jsonNumber(s.within_rho_fraction)},
+                     {"min_clearance_world", jsonNumber(s.min_clearance_world)},
+                     {"min_clearance_virtual", jsonNumber(s.min_clearance_virtual)},
+                     {"commands", s.commands},
+                     {"command_diamond_violations", s.command_violations},
+                     {"max_command_diamond_norm", jsonNumber(s.max_command_norm)},
+                     {"invalid_steps", m.nan_count},
+                     {"tracking_time_s", jsonNumber(m.sim_time)},
+                     {"path_length", jsonNumber(s.path_length)},
+                     {"virtual_obstacles", s.virtual_obstacles},
+                     {"truth_samples", s.truth_samples}});
+}
+
+std::string recordedRunJson(const RecordedRunSummary& summary, const RecordedRunConfig& config,
+                            const std::vector<core::Disk>& all_obstacles, const std::string& name) {
+  using sim::jsonNumber;
+  sim::Json j = summary;
+  sim::Json& s = j["scenario"];
+  s["name"] = name;
+  s["variant"] = "recorded";
+  s["estimator"] = "paper";
+  s["robot_radius"] = jsonNumber(config.robot_radius);
+  s["offset"] = jsonNumber(config.offset);
+  s["v_max"] = jsonNumber(config.v_max);
+  s["w_max"] = jsonNumber(config.w_max);
+  s["rho_inf"] = jsonNumber(config.rho_inf);
+  s["obstacles"] = sim::Json::array();
+  for (const core::Disk& d : all_obstacles) s["obstacles"].push_back(sim::obstacleJson(d, Eigen::Vector2d::Zero()));
+  return sim::dumpJson(j);
 }
 
 }  // namespace ros_layer

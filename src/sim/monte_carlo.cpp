@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <random>
-#include <sstream>
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
@@ -78,71 +77,88 @@ Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, s
   return base;
 }
 
-std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
-  int body_runs = 0, offset_runs = 0, violation_runs = 0, nan_runs = 0, bound_runs = 0;
-  std::uint64_t body_episodes = 0, offset_episodes = 0;
-  int stall_runs = 0;  // runs with a stall longer than 0.5 s (metrics.h)
-  double worst_stall = 0.0;
-  double sum_true_ase = 0.0;
-  double worst_body = std::numeric_limits<double>::infinity(), worst_offset = worst_body;
-  double worst_ratio = 0.0, sim_time = 0.0, wall = 0.0, sum_ase = 0.0, sum_aae = 0.0;
-  std::ostringstream per_run;
+void to_json(Json& j, const MonteCarloRun& r) {
+  j["index"] = r.index;
+  j["initial_pose"] = {jsonNumber(r.initial_pose.x), jsonNumber(r.initial_pose.y), jsonNumber(r.initial_pose.theta)};
+  j.update(pick(r.metrics, {"ase", "true_ase", "max_true_error", "longest_stall_s", "aae", "max_e_over_rho",
+                            "min_clearance_offset", "min_clearance_body", "body_collisions", "offset_collisions",
+                            "diamond_violations", "nan_count"}));
+}
+
+MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
+  MonteCarloSummary sum;
+  sum.scenario = base.file;
+  sum.options = options;
+  sum.variant = toString(base.setup.law);
+  sum.body_safe = base.setup.controller.body_safe;
+  sum.tangential_avoidance = base.setup.controller.tangential_avoidance;
+  sum.moving_obstacles = base.setup.controller.moving_obstacles;
+  double sum_ase = 0.0, sum_aae = 0.0, sum_true_ase = 0.0;
   for (int i = 0; i < options.runs; ++i) {
     const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
     const RunResult r = runScenario(s, false);
     const sim::RunMetrics& m = r.summary.metrics;
-    body_runs += m.body_collisions > 0;
-    body_episodes += m.body_collisions;
-    offset_episodes += m.offset_collisions;
+    sum.runs_with_body_collision += m.body_collisions > 0;
+    sum.body_collision_episodes += m.body_collisions;
+    sum.offset_collision_episodes += m.offset_collisions;
     sum_true_ase += m.true_ase;
-    stall_runs += m.longest_stall > 0.5;
-    worst_stall = std::max(worst_stall, m.longest_stall);
-    offset_runs += m.offset_collisions > 0;
-    violation_runs += m.diamond_violations > 0;
-    nan_runs += m.nan_count > 0;
-    bound_runs += m.max_e_over_rho >= 1.0;
-    worst_body = std::min(worst_body, m.min_clearance_body);
-    worst_offset = std::min(worst_offset, m.min_clearance_offset);
-    worst_ratio = std::max(worst_ratio, m.max_e_over_rho);
-    sim_time += m.sim_time;
-    wall += r.wall_time;
+    sum.runs_with_long_stall += m.longest_stall > 0.5;
+    sum.worst_stall = std::max(sum.worst_stall, m.longest_stall);
+    sum.runs_with_offset_collision += m.offset_collisions > 0;
+    sum.runs_with_diamond_violation += m.diamond_violations > 0;
+    sum.runs_with_nan += m.nan_count > 0;
+    sum.runs_with_e_over_rho_ge_1 += m.max_e_over_rho >= 1.0;
+    sum.worst_min_clearance_body = std::min(sum.worst_min_clearance_body, m.min_clearance_body);
+    sum.worst_min_clearance_offset = std::min(sum.worst_min_clearance_offset, m.min_clearance_offset);
+    sum.worst_max_e_over_rho = std::max(sum.worst_max_e_over_rho, m.max_e_over_rho);
+    sum.sim_time += m.sim_time;
+    sum.wall_time += r.wall_time;
     sum_ase += m.ase;
     sum_aae += m.aae;
-    per_run << (i ? ",\n" : "") << "    {\"index\": " << i << ", \"initial_pose\": [" << jsonNumber(s.setup.initial_pose.x)
-            << ", " << jsonNumber(s.setup.initial_pose.y) << ", " << jsonNumber(s.setup.initial_pose.theta)
-            << "], \"ase\": " << jsonNumber(m.ase) << ", \"true_ase\": " << jsonNumber(m.true_ase)
-            << ", \"max_true_error\": " << jsonNumber(m.max_true_error)
-            << ", \"longest_stall_s\": " << jsonNumber(m.longest_stall) << ", \"aae\": " << jsonNumber(m.aae)
-            << ", \"max_e_over_rho\": " << jsonNumber(m.max_e_over_rho)
-            << ", \"min_clearance_offset\": " << jsonNumber(m.min_clearance_offset)
-            << ", \"min_clearance_body\": " << jsonNumber(m.min_clearance_body)
-            << ", \"body_collisions\": " << m.body_collisions << ", \"offset_collisions\": " << m.offset_collisions
-            << ", \"diamond_violations\": " << m.diamond_violations << ", \"nan_count\": " << m.nan_count << "}";
+    sum.per_run.push_back({i, s.setup.initial_pose, m});
   }
   const double n = std::max(1, options.runs);
-  std::ostringstream j;
-  j << "{\n  \"scenario\": \"" << base.file << "\",\n  \"runs\": " << options.runs << ",\n  \"seed\": " << options.seed
-    << ",\n  \"variant\": \"" << toString(base.setup.law) << "\",\n  \"body_safe\": "
-    << (base.setup.controller.body_safe ? "true" : "false") << ",\n  \"obstacle_shift\": "
-    << jsonNumber(options.obstacle_shift) << ",\n  \"pose_shift\": " << jsonNumber(options.pose_shift)
-    << ",\n  \"heading_shift\": " << jsonNumber(options.heading_shift)
-    << ",\n  \"obstacle_speed\": " << jsonNumber(options.obstacle_speed)
-    << ",\n  \"tangential_avoidance\": " << (base.setup.controller.tangential_avoidance ? "true" : "false")
-    << ",\n  \"moving_obstacles\": " << (base.setup.controller.moving_obstacles ? "true" : "false")
-    << ",\n  \"body_collision_episodes\": " << body_episodes
-    << ",\n  \"offset_collision_episodes\": " << offset_episodes
-    << ",\n  \"runs_with_stall_over_0_5s\": " << stall_runs << ",\n  \"worst_stall_s\": " << jsonNumber(worst_stall)
-    << ",\n  \"runs_with_body_collision\": " << body_runs << ",\n  \"runs_with_offset_collision\": " << offset_runs
-    << ",\n  \"runs_with_diamond_violation\": " << violation_runs << ",\n  \"runs_with_nan\": " << nan_runs
-    << ",\n  \"runs_with_e_over_rho_ge_1\": " << bound_runs
-    << ",\n  \"worst_min_clearance_body\": " << jsonNumber(worst_body)
-    << ",\n  \"worst_min_clearance_offset\": " << jsonNumber(worst_offset)
-    << ",\n  \"worst_max_e_over_rho\": " << jsonNumber(worst_ratio) << ",\n  \"mean_ase\": " << jsonNumber(sum_ase / n)
-    << ",\n  \"mean_aae\": " << jsonNumber(sum_aae / n) << ",\n  \"mean_true_ase\": " << jsonNumber(sum_true_ase / n) << ",\n  \"sim_time_s\": " << jsonNumber(sim_time)
-    << ",\n  \"wall_time_s\": " << jsonNumber(wall)
-    << ",\n  \"realtime_factor\": " << jsonNumber(wall > 0.0 ? sim_time / wall : 0.0) << ",\n  \"per_run\": [\n"
-    << per_run.str() << "\n  ]\n}\n";
-  return j.str();
+  sum.mean_ase = sum_ase / n;
+  sum.mean_aae = sum_aae / n;
+  sum.mean_true_ase = sum_true_ase / n;
+  return sum;
+}
+
+void to_json(Json& j, const MonteCarloSummary& s) {
+  j = Json{{"scenario", s.scenario},
+           {"runs", s.options.runs},
+           {"seed", s.options.seed},
+           {"variant", s.variant},
+           {"body_safe", s.body_safe},
+           {"obstacle_shift", jsonNumber(s.options.obstacle_shift)},
+           {"pose_shift", jsonNumber(s.options.pose_shift)},
+           {"heading_shift", jsonNumber(s.options.heading_shift)},
+           {"obstacle_speed", jsonNumber(s.options.obstacle_speed)},
+           {"tangential_avoidance", s.tangential_avoidance},
+           {"moving_obstacles", s.moving_obstacles},
+           {"body_collision_episodes", s.body_collision_episodes},
+           {"offset_collision_episodes", s.offset_collision_episodes},
+           {"runs_with_stall_over_0_5s", s.runs_with_long_stall},
+           {"worst_stall_s", jsonNumber(s.worst_stall)},
+           {"runs_with_body_collision", s.runs_with_body_collision},
+           {"runs_with_offset_collision", s.runs_with_offset_collision},
+           {"runs_with_diamond_violation", s.runs_with_diamond_violation},
+           {"runs_with_nan", s.runs_with_nan},
+           {"runs_with_e_over_rho_ge_1", s.runs_with_e_over_rho_ge_1},
+           {"worst_min_clearance_body", jsonNumber(s.worst_min_clearance_body)},
+           {"worst_min_clearance_offset", jsonNumber(s.worst_min_clearance_offset)},
+           {"worst_max_e_over_rho", jsonNumber(s.worst_max_e_over_rho)},
+           {"mean_ase", jsonNumber(s.mean_ase)},
+           {"mean_aae", jsonNumber(s.mean_aae)},
+           {"mean_true_ase", jsonNumber(s.mean_true_ase)},
+           {"sim_time_s", jsonNumber(s.sim_time)},
+           {"wall_time_s", jsonNumber(s.wall_time)},
+           {"realtime_factor", jsonNumber(s.wall_time > 0.0 ? s.sim_time / s.wall_time : 0.0)},
+           {"per_run", s.per_run}};
+}
+
+std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
+  return dumpJson(summarizeMonteCarlo(base, options));
 }
 
 }  // namespace sim

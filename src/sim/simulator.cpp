@@ -1,21 +1,15 @@
 #include "amigobot_tracking/sim/simulator.h"
 
+#include "amigobot_tracking/sim/json.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace amigobot_tracking {
 namespace sim {
-
-std::string jsonNumber(double value) {
-  if (!std::isfinite(value)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", value);
-  return buf;
-}
 
 RunResult runScenario(const Scenario& scenario, bool log) {
   RunResult result;
@@ -67,86 +61,46 @@ void writeTrajectoryCsv(const std::string& path, const std::vector<CsvRow>& rows
   if (std::fclose(f) != 0 || !ok) throw std::runtime_error(path + ": write failed");
 }
 
-void writeSharedMetricsJson(std::ostream& j, const sim::RunMetrics& m) {
-  auto num = [&](const char* key, double value) { j << "  \"" << key << "\": " << jsonNumber(value) << ",\n"; };
-  num("ase", m.ase);
-  num("aae", m.aae);
-  num("tec", m.tec);
-  num("max_e_over_rho", m.max_e_over_rho);
-  num("max_rho", m.max_rho);
-  num("final_error", m.final_error);
-  num("min_clearance_offset", m.min_clearance_offset);
-  num("min_clearance_body", m.min_clearance_body);
-  num("body_collisions", static_cast<double>(m.body_collisions));
-  num("body_contact_time_s", m.body_contact_time);
-  num("diamond_violations", static_cast<double>(m.diamond_violations));
-  num("saturated_steps", static_cast<double>(m.saturated_steps));
-  num("envelope_widenings", static_cast<double>(m.envelope_widenings));
-  num("estimator_rms_error", m.estimator_rms_error);
-  num("estimator_max_error_settled", m.estimator_max_error_settled);
-  num("steps", static_cast<double>(m.steps));
-}
-
 std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   const sim::RunMetrics& m = result.summary.metrics;
   const sim::ClosedLoopSetup& setup = scenario.setup;
   const core::ControllerConfig& c = setup.controller;
-  std::ostringstream j;
-  auto num = [&](const char* key, double value, bool comma = true) {
-    j << "  \"" << key << "\": " << jsonNumber(value) << (comma ? ",\n" : "\n");
-  };
-  j << "{\n";
-  writeSharedMetricsJson(j, m);
-  num("offset_collisions", static_cast<double>(m.offset_collisions));
-  num("offset_contact_time_s", m.offset_contact_time);
-  num("nan_count", static_cast<double>(m.nan_count));
-  num("true_ase", m.true_ase);
-  num("true_aae", m.true_aae);
-  num("max_true_error", m.max_true_error);
-  num("longest_stall_s", m.longest_stall);
-  num("conflict_steps", static_cast<double>(m.conflict_steps));
-  num("escape_steps", static_cast<double>(m.escape_steps));
-  num("side_flips", static_cast<double>(m.side_flips));
-  num("sim_time_s", m.sim_time);
-  num("wall_time_s", result.wall_time);
-  num("realtime_factor", result.realtimeFactor());
-  j << "  \"scenario\": {\n"
-    << "    \"name\": \"" << scenario.name << "\",\n"
-    << "    \"file\": \"" << scenario.file << "\",\n"
-    << "    \"reference\": \"" << scenario.reference.type << "\",\n"
-    << "    \"variant\": \"" << toString(setup.law) << "\",\n"
-    << "    \"estimator\": \"" << toString(setup.velocity_source) << "\",\n"
-    << "    \"body_safe\": " << (c.body_safe ? "true" : "false") << ",\n"
-    << "    \"tangential_avoidance\": " << (c.tangential_avoidance ? "true" : "false") << ",\n"
-    << "    \"moving_obstacles\": " << (c.moving_obstacles ? "true" : "false") << ",\n"
-    << "    \"predict_target\": " << (c.predict_target ? "true" : "false") << ",\n"
-    << "    \"compensate_pose_age\": " << (c.compensate_pose_age ? "true" : "false") << ",\n"
-    << "    \"target_delay\": " << jsonNumber(setup.sensor.delay) << ",\n"
-    << "    \"target_sample_period\": " << jsonNumber(setup.sample_period) << ",\n"
-    << "    \"pose_delay\": " << jsonNumber(setup.pose_sensor.delay) << ",\n"
-    << "    \"pose_sample_period\": " << jsonNumber(setup.pose_sensor.sample_period) << ",\n"
-    << "    \"robot_radius\": " << jsonNumber(c.robot_radius) << ",\n"
-    << "    \"offset\": " << jsonNumber(c.offset) << ",\n"
-    << "    \"effective_radius\": " << jsonNumber(c.effectiveRadius()) << ",\n"
-    << "    \"v_max\": " << jsonNumber(c.v_max) << ",\n"
-    << "    \"w_max\": " << jsonNumber(c.w_max) << ",\n"
-    << "    \"rho_inf\": " << jsonNumber(c.rho_inf) << ",\n"
-    << "    \"rho_o\": " << jsonNumber(c.estimator.rho_o) << ",\n"
-    << "    \"control_period\": " << jsonNumber(setup.control_period) << ",\n"
-    << "    \"max_step\": " << jsonNumber(setup.max_step) << ",\n"
-    << "    \"integrator\": \"" << toString(setup.integrator) << "\",\n"
-    << "    \"duration\": " << jsonNumber(setup.duration) << ",\n"
-    << "    \"obstacles\": [";
+  Json j = m;
+  j["wall_time_s"] = jsonNumber(result.wall_time);
+  j["realtime_factor"] = jsonNumber(result.realtimeFactor());
+  Json& s = j["scenario"];
+  s["name"] = scenario.name;
+  s["file"] = scenario.file;
+  s["reference"] = scenario.reference.type;
+  s["variant"] = toString(setup.law);
+  s["estimator"] = toString(setup.velocity_source);
+  s["body_safe"] = c.body_safe;
+  s["tangential_avoidance"] = c.tangential_avoidance;
+  s["moving_obstacles"] = c.moving_obstacles;
+  s["predict_target"] = c.predict_target;
+  s["compensate_pose_age"] = c.compensate_pose_age;
+  s["target_delay"] = jsonNumber(setup.sensor.delay);
+  s["target_sample_period"] = jsonNumber(setup.sample_period);
+  s["pose_delay"] = jsonNumber(setup.pose_sensor.delay);
+  s["pose_sample_period"] = jsonNumber(setup.pose_sensor.sample_period);
+  s["robot_radius"] = jsonNumber(c.robot_radius);
+  s["offset"] = jsonNumber(c.offset);
+  s["effective_radius"] = jsonNumber(c.effectiveRadius());
+  s["v_max"] = jsonNumber(c.v_max);
+  s["w_max"] = jsonNumber(c.w_max);
+  s["rho_inf"] = jsonNumber(c.rho_inf);
+  s["rho_o"] = jsonNumber(c.estimator.rho_o);
+  s["control_period"] = jsonNumber(setup.control_period);
+  s["max_step"] = jsonNumber(setup.max_step);
+  s["integrator"] = toString(setup.integrator);
+  s["duration"] = jsonNumber(setup.duration);
+  s["obstacles"] = Json::array();
   for (size_t i = 0; i < setup.obstacles.size(); ++i) {
-    const core::Disk& d = setup.obstacles[i];
-    const Eigen::Vector2d v =
-        setup.obstacle_velocities.empty() ? Eigen::Vector2d::Zero() : setup.obstacle_velocities[i];
-    j << (i ? ", " : "") << "{\"center\": [" << jsonNumber(d.center.x()) << ", " << jsonNumber(d.center.y())
-      << "], \"radius\": " << jsonNumber(d.radius) << ", \"velocity\": [" << jsonNumber(v.x()) << ", "
-      << jsonNumber(v.y()) << "]}";
+    s["obstacles"].push_back(obstacleJson(setup.obstacles[i], setup.obstacle_velocities.empty()
+                                                                  ? Eigen::Vector2d::Zero()
+                                                                  : setup.obstacle_velocities[i]));
   }
-  j << "]\n  }\n}\n";
-  return j.str();
+  return dumpJson(j);
 }
 
 }  // namespace sim

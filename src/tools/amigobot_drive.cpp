@@ -3,10 +3,11 @@
 // link figures once a second. A bring-up and smoke-test tool.
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <thread>
+
+#include <CLI/CLI.hpp>
 
 #include "amigobot_tracking/aria/client.h"
 
@@ -15,41 +16,29 @@ using namespace amigobot_tracking::aria;
 int main(int argc, char** argv) {
   ClientConfig config;
   config.port = "localhost:8101";
-  std::string model = "amigo", params_file;
+  std::string model = "amigo", params_file, mode = "vel_rvel";
   double v = 0.0, w = 0.0, duration = 5.0;
   bool enable = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::cerr << "amigobot_drive: " << a << " needs a value\n";
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    try {
-      if (a == "--port") config.port = value();
-      else if (a == "--baud") config.baud = std::stoi(value());
-      else if (a == "--model") model = value();
-      else if (a == "--robot-params") params_file = value();
-      else if (a == "--mode") {
-        const auto mode = parseCommandMode(value());
-        if (!mode) throw std::invalid_argument("--mode: expected vel_rvel or vel2");
-        config.command_mode = *mode;
-      } else if (a == "--v") v = std::stod(value());
-      else if (a == "--w") w = std::stod(value());
-      else if (a == "--duration") duration = std::stod(value());
-      else if (a == "--enable") enable = true;
-      else {
-        std::cerr << "usage: amigobot_drive [--port /dev/ttyUSB0|host:port] [--baud N] [--model amigo|amigo-sh]\n"
-                     "       [--robot-params FILE] [--mode vel_rvel|vel2] [--enable] [--v M/S] [--w RAD/S]\n"
-                     "       [--duration S]\n";
-        return a == "-h" || a == "--help" ? 0 : 2;
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "amigobot_drive: " << a << ": " << e.what() << "\n";
-      return 2;
-    }
+  CLI::App app("Drives an AmigoBot (or the emulator, or a simulator) at a constant (v, w) with the ROS-free "
+               "driver, printing odometry and link figures once a second.",
+               "amigobot_drive");
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.add_option("--port", config.port, "/dev/ttyUSB0 or host:port")->capture_default_str();
+  app.add_option("--baud", config.baud, "serial baud rate")->capture_default_str();
+  app.add_option("--model", model, "amigo | amigo-sh (built-in parameters)")->capture_default_str();
+  app.add_option("--robot-params", params_file, "robot parameter YAML instead of the built-in set");
+  app.add_option("--mode", mode, "motion commands: vel_rvel | vel2")->capture_default_str();
+  app.add_flag("--enable", enable, "enable the motors (else the robot only reports)");
+  app.add_option("--v", v, "[m/s] forward speed")->capture_default_str();
+  app.add_option("--w", w, "[rad/s] turn rate")->capture_default_str();
+  app.add_option("--duration", duration, "[s] how long to drive")->capture_default_str();
+  try {
+    app.parse(argc, argv);
+    const auto command_mode = parseCommandMode(mode);
+    if (!command_mode) throw CLI::ValidationError("--mode", "expected vel_rvel or vel2, got '" + mode + "'");
+    config.command_mode = *command_mode;
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
   }
   try {
     config.robot = params_file.empty() ? builtinRobotParams(model) : loadRobotParams(params_file);

@@ -3,14 +3,17 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "amigobot_tracking/aria/emulator.h"
 #include "amigobot_tracking/aria/emulator_server.h"
+#include "amigobot_tracking/world/world.h"
 
 using namespace amigobot_tracking::aria;
 
@@ -19,34 +22,14 @@ namespace {
 std::atomic<bool> g_stop{false};
 void onSignal(int) { g_stop = true; }
 
-const char* kUsage =
-    "usage: amigobot_emulator [options]\n"
-    "  --tcp-port N        robot port over TCP (default 8101; 0 = any free port; -1 = none)\n"
-    "  --bind ADDR         IPv4 address to listen on (default 127.0.0.1)\n"
-    "  --pty LINK          also serve a pseudo-terminal, symlinked at LINK\n"
-    "  --status-port N     ground-truth status socket (0 = any free port; default none):\n"
-    "                      send any line, get 't x y theta v w motors open watchdog'\n"
-    "  --model M           amigo | amigo-sh (built-in parameters; default amigo)\n"
-    "  --robot-params FILE robot parameter YAML instead of the built-in set\n"
-    "  --world FILE        obstacles (disks) for the sonar and an optional initial pose\n"
-    "  --name NAME         SYNC2 robot name\n"
-    "  --odometry-noise S  relative std-dev of the wheel speeds the firmware integrates\n"
-    "  --seed N            noise seed (default 1)\n"
-    "  --time-scale K      emulated seconds per wall second (default 1)\n"
-    "  --corrupt P         noisy line: each robot packet is damaged with probability P\n"
-    "  --command-log FILE  journal of every motion command received: 't command v w' per line\n"
-    "  --simulator-mode    behave like an ARIA simulator (MobileSim): motors start enabled,\n"
-    "                      SIPs always 0x32, watchdog only warns, CLOSE drops the connection\n"
-    "Prints 'READY tcp=PORT status=PORT pty=PATH' on stdout once it listens.\n";
-
-double number(const std::string& flag, const char* text) {
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0') {
-    std::cerr << "amigobot_emulator: " << flag << ": '" << text << "' is not a number\n";
-    std::exit(2);
+// The arguments CLI11 parses (in its reversed order), without the remappings roslaunch
+// appends (__name:=emulator, __log:=...): this tool is ROS-free.
+std::vector<std::string> ownArguments(int argc, char** argv) {
+  std::vector<std::string> args;
+  for (int i = argc - 1; i > 0; --i) {
+    if (std::string(argv[i]).find(":=") == std::string::npos) args.emplace_back(argv[i]);
   }
-  return v;
+  return args;
 }
 
 }  // namespace
@@ -55,41 +38,48 @@ int main(int argc, char** argv) {
   EmulatorOptions robot;
   EmulatorServerOptions server;
   std::string model = "amigo", params_file, world_file, name, command_log;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> const char* {
-      if (i + 1 >= argc) {
-        std::cerr << "amigobot_emulator: " << a << " needs a value\n" << kUsage;
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a.find(":=") != std::string::npos) continue;  // ROS remappings roslaunch appends (__name:=, __log:=)
-    if (a == "--tcp-port") server.tcp_port = static_cast<int>(number(a, value()));
-    else if (a == "--bind") server.bind_address = value();
-    else if (a == "--pty") server.pty_link = value();
-    else if (a == "--status-port") server.status_port = static_cast<int>(number(a, value()));
-    else if (a == "--model") model = value();
-    else if (a == "--robot-params") params_file = value();
-    else if (a == "--world") world_file = value();
-    else if (a == "--name") name = value();
-    else if (a == "--odometry-noise") robot.odometry_noise = number(a, value());
-    else if (a == "--seed") robot.seed = server.corrupt_seed = static_cast<std::uint32_t>(number(a, value()));
-    else if (a == "--time-scale") server.time_scale = number(a, value());
-    else if (a == "--corrupt") server.corrupt_probability = number(a, value());
-    else if (a == "--command-log") command_log = value();
-    else if (a == "--simulator-mode") robot.simulator_mode = true;
-    else if (a == "-h" || a == "--help") {
-      std::cout << kUsage;
-      return 0;
-    } else {
-      std::cerr << "amigobot_emulator: unknown option '" << a << "'\n" << kUsage;
-      return 2;
-    }
+  std::uint32_t seed = robot.seed;
+  CLI::App app("A ROS-free AmigoBot stand-in: the robot's protocol over TCP and a pseudo-terminal, its "
+               "ground truth on a status socket.",
+               "amigobot_emulator");
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // a repeated option: the last wins
+  app.add_option("--tcp-port", server.tcp_port, "robot port over TCP (0 = any free port; -1 = none)")
+      ->capture_default_str();
+  app.add_option("--bind", server.bind_address, "IPv4 address to listen on")->capture_default_str();
+  app.add_option("--pty", server.pty_link, "also serve a pseudo-terminal, symlinked at this path");
+  app.add_option("--status-port", server.status_port,
+                 "ground-truth status socket (0 = any free port; -1 = none): send any line, get "
+                 "'t x y theta v w motors open watchdog'")
+      ->capture_default_str();
+  app.add_option("--model", model, "amigo | amigo-sh (built-in parameters)")->capture_default_str();
+  app.add_option("--robot-params", params_file, "robot parameter YAML instead of the built-in set");
+  app.add_option("--world", world_file, "world YAML (world/world.h): disks for the sonar, the initial pose");
+  app.add_option("--name", name, "SYNC2 robot name (default amigo-emulator, MobileSim in simulator mode)");
+  app.add_option("--odometry-noise", robot.odometry_noise,
+                 "relative std-dev of the wheel speeds the firmware integrates")->capture_default_str();
+  app.add_option("--seed", seed, "noise seed (odometry and line corruption)")->capture_default_str();
+  app.add_option("--time-scale", server.time_scale, "emulated seconds per wall second")->capture_default_str();
+  app.add_option("--corrupt", server.corrupt_probability,
+                 "noisy line: each robot packet is damaged with this probability")->capture_default_str();
+  app.add_option("--command-log", command_log, "journal of every motion command received: 't command v w' per line");
+  app.add_flag("--simulator-mode", robot.simulator_mode,
+               "behave like an ARIA simulator (MobileSim): motors start enabled, SIPs always 0x32, watchdog "
+               "only warns, CLOSE drops the connection");
+  app.footer("Prints 'READY tcp=PORT status=PORT pty=PATH' on stdout once it listens.");
+  std::vector<std::string> args = ownArguments(argc, argv);
+  try {
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;  // --help: 0; a bad option: 2, as the usage errors before
   }
+  robot.seed = server.corrupt_seed = seed;
   try {
     robot.robot = params_file.empty() ? builtinRobotParams(model) : loadRobotParams(params_file);
-    if (!world_file.empty()) loadWorld(world_file, robot);
+    if (!world_file.empty()) {
+      const amigobot_tracking::world::World room = amigobot_tracking::world::loadWorld(world_file);
+      robot.obstacles = room.obstacles;
+      if (room.initial_pose) robot.initial_pose = *room.initial_pose;
+    }
     robot.name = !name.empty() ? name : (robot.simulator_mode ? "MobileSim" : "amigo-emulator");
     RobotEmulator emulator(robot);
     std::ofstream journal;

@@ -112,18 +112,18 @@ TEST_P(AriaSquare, DrivesASquareWithOdometryMatchingGroundTruth) {
     const Truth corner = emu.truth();
     // The k-th corner of the square (counter-clockwise), judged by ground truth.
     const double cx[] = {side, side, 0.0, 0.0}, cy[] = {0.0, side, side, 0.0};
-    EXPECT_NEAR(corner.x, cx[k], 0.05) << "corner " << k;
-    EXPECT_NEAR(corner.y, cy[k], 0.05) << "corner " << k;
+    EXPECT_NEAR(corner.pose.x, cx[k], 0.05) << "corner " << k;
+    EXPECT_NEAR(corner.pose.y, cy[k], 0.05) << "corner " << k;
     turnLeftTo(*client, wrapAngle((k + 1) * M_PI / 2));
     waitStopped(emu);
   }
   const Truth truth = emu.truth();
   const Pose2 est = odom(*client);
   // Odometry agrees with ground truth up to the firmware's quantisation.
-  EXPECT_NEAR(est.x, truth.x, 0.01);
-  EXPECT_NEAR(est.y, truth.y, 0.01);
-  EXPECT_NEAR(wrapAngle(est.theta - truth.theta), 0.0, 0.01);
-  EXPECT_NEAR(std::hypot(truth.x, truth.y), 0.0, 0.08) << "the square did not close";
+  EXPECT_NEAR(est.x, truth.pose.x, 0.01);
+  EXPECT_NEAR(est.y, truth.pose.y, 0.01);
+  EXPECT_NEAR(wrapAngle(est.theta - truth.pose.theta), 0.0, 0.01);
+  EXPECT_NEAR(std::hypot(truth.pose.x, truth.pose.y), 0.0, 0.08) << "the square did not close";
   const ClientStatus s = client->status();
   EXPECT_EQ(s.parser.errors(), 0u);
   EXPECT_GT(s.sip_rate, 5.0);
@@ -273,10 +273,10 @@ TEST(AriaDriverEmulator, NoisyLineKeepsTheLinkAndTheOdometry) {
   EXPECT_EQ(s.connections, 1u) << "the link dropped: " << s.last_error;
   const Truth truth = emu.truth();
   const Pose2 est = odom(*client);
-  EXPECT_GT(std::hypot(truth.x, truth.y), 0.2);
-  EXPECT_NEAR(est.x, truth.x, 0.01);
-  EXPECT_NEAR(est.y, truth.y, 0.01);
-  EXPECT_NEAR(wrapAngle(est.theta - truth.theta), 0.0, 0.01);
+  EXPECT_GT(std::hypot(truth.pose.x, truth.pose.y), 0.2);
+  EXPECT_NEAR(est.x, truth.pose.x, 0.01);
+  EXPECT_NEAR(est.y, truth.pose.y, 0.01);
+  EXPECT_NEAR(wrapAngle(est.theta - truth.pose.theta), 0.0, 0.01);
 }
 
 // The emulator's --time-scale (for faster-than-real-time runs) keeps the protocol intact:
@@ -291,7 +291,7 @@ TEST(AriaDriverEmulator, TimeScaledEmulatorStillDrives) {
   EXPECT_TRUE(waitFor([&] { return odom(*client).x > 0.2; }, 10.0));
   client->setVelocity({0.0, 0.0});
   waitStopped(emu);
-  EXPECT_NEAR(odom(*client).x, emu.truth().x, 0.01);
+  EXPECT_NEAR(odom(*client).x, emu.truth().pose.x, 0.01);
 }
 
 // OPEN is sent with ARIA's int argument by default; p2os sends it bare. Both must open.

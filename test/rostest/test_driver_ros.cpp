@@ -109,9 +109,9 @@ TEST(DriverRos, NodeletDrivesTheEmulatorAndReportsEverything) {
   ros::Duration(0.3).sleep();
   const Truth truth = emu.truth();
   const nav_msgs::Odometry odom = locked([&] { return in.odom; });
-  EXPECT_GT(truth.x, 0.3);
-  EXPECT_NEAR(odom.pose.pose.position.x, truth.x, 0.01);
-  EXPECT_NEAR(odom.pose.pose.position.y, truth.y, 0.01);
+  EXPECT_GT(truth.pose.x, 0.3);
+  EXPECT_NEAR(odom.pose.pose.position.x, truth.pose.x, 0.01);
+  EXPECT_NEAR(odom.pose.pose.position.y, truth.pose.y, 0.01);
   EXPECT_EQ(odom.header.frame_id, "odom");
   EXPECT_EQ(odom.child_frame_id, "base_link");
   EXPECT_GT(odom.pose.covariance[0], 0.0);

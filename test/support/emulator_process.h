@@ -1,5 +1,5 @@
 // Test helpers: the amigobot_emulator executable as a child process (killed on scope exit),
-// its ground-truth status socket, and a minimal raw protocol client over a real TCP socket
+// its ground-truth status socket (aria::StatusClient), and a minimal raw protocol client over a real TCP socket
 // or pty. Used by the driver <-> emulator tests; no mocks.
 #pragma once
 
@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "amigobot_tracking/aria/commands.h"
+#include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/aria/packet.h"
 
 namespace amigobot_test {
@@ -70,10 +72,7 @@ inline int connectTcp(int port) {
   return fd;
 }
 
-struct Truth {
-  double t = 0, x = 0, y = 0, theta = 0, v = 0, w = 0;
-  bool motors = false, open = false, watchdog = false;
-};
+using Truth = EmulatorStatus;
 
 class EmulatorProcess {
  public:
@@ -134,36 +133,26 @@ class EmulatorProcess {
       ::waitpid(pid_, &status, 0);
     }
     pid_ = -1;
-    if (status_fd_ >= 0) ::close(status_fd_);
-    status_fd_ = -1;
+    status_.reset();
   }
 
   int tcpPort() const { return tcp_port_; }
   int statusPort() const { return status_port_; }
   std::string address() const { return "127.0.0.1:" + std::to_string(tcp_port_); }
 
-  // Ground truth from the status socket.
+  // Ground truth from the status socket; throws when it does not answer.
   Truth truth() {
-    if (status_fd_ < 0) status_fd_ = connectTcp(status_port_);
-    if (status_fd_ < 0 || ::write(status_fd_, "status\n", 7) != 7) throw std::runtime_error("status socket");
-    std::string line;
-    char c;
-    while (::read(status_fd_, &c, 1) == 1 && c != '\n') line.push_back(c);
+    if (!status_) status_ = std::make_unique<StatusClient>("127.0.0.1", status_port_, 5.0);
     Truth t;
-    int motors = 0, open = 0, watchdog = 0;
-    if (std::sscanf(line.c_str(), "%lf %lf %lf %lf %lf %lf %d %d %d", &t.t, &t.x, &t.y, &t.theta, &t.v, &t.w, &motors,
-                    &open, &watchdog) != 9) {
-      throw std::runtime_error("bad status line '" + line + "'");
-    }
-    t.motors = motors;
-    t.open = open;
-    t.watchdog = watchdog;
+    const std::string error = status_->query(&t);
+    if (!error.empty()) throw std::runtime_error(error);
     return t;
   }
 
  private:
   pid_t pid_ = -1;
-  int tcp_port_ = -1, status_port_ = -1, status_fd_ = -1;
+  int tcp_port_ = -1, status_port_ = -1;
+  std::unique_ptr<StatusClient> status_;
 };
 
 // A bare-bones ARIA client speaking through a file descriptor (TCP socket or pty).

@@ -1,5 +1,5 @@
 // The end-to-end tests' judge: what the emulator says happened, never what the controller
-// thinks. Ground truth from the emulator's status socket (ros_layer::StatusClient), the
+// thinks. Ground truth from the emulator's status socket (aria::StatusClient), the
 // motion commands it decoded from the wire (its --command-log journal), and a few ROS
 // helpers (process id of a node, retried Trigger calls, geometry of the offset point).
 #pragma once
@@ -19,14 +19,14 @@
 #include <std_srvs/Trigger.h>
 #include <xmlrpcpp/XmlRpcClient.h>
 
-#include "amigobot_tracking/ros/ground_truth.h"
+#include "amigobot_tracking/aria/emulator_status.h"
 #include "emulator_process.h"  // waitFor, now
 
 namespace e2e {
 
 using amigobot_test::now;
 using amigobot_test::waitFor;
-using amigobot_tracking::ros_layer::EmulatorStatus;
+using amigobot_tracking::aria::EmulatorStatus;
 
 // A private parameter of the test node (the .test file sets them); throws if missing.
 template <typename T>
@@ -63,7 +63,7 @@ class GroundTruth {
   }
 
  private:
-  amigobot_tracking::ros_layer::StatusClient client_;
+  amigobot_tracking::aria::StatusClient client_;
 };
 
 // One line of the emulator's command journal: the setpoint pair (v, w) the robot holds

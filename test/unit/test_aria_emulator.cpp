@@ -4,9 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/aria/emulator.h"
@@ -202,27 +200,6 @@ TEST(AriaEmulator, SonarScaleReadingsRoundTripAndAMismatchIsVisible) {
     other.range_conv_factor = scale == 1.0 ? 0.555 : 1.0;
     EXPECT_NEAR(sonarRange(front, other) / sonarRange(front, o.robot), other.range_conv_factor / scale, 1e-9);
   }
-}
-
-TEST(AriaEmulator, WorldFileLoadsAndBadEntriesAreNamed) {
-  EmulatorOptions o;
-  loadWorld(std::string(AMIGOBOT_SOURCE_DIR) + "/config/worlds/emulator_example.yaml", o);
-  ASSERT_EQ(o.obstacles.size(), 3u);
-  EXPECT_DOUBLE_EQ(o.obstacles[0].center.x(), 1.5);
-  EXPECT_DOUBLE_EQ(o.obstacles[2].radius, 0.3);
-  EXPECT_EQ(o.validate(), "");
-  const std::string path = "/tmp/amigobot_bad_world_" + std::to_string(::getpid()) + ".yaml";
-  std::ofstream(path) << "obstacles:\n  - {center: [1, 2], radius: 0.1}\n  - {center: [1], radius: 0.1}\n";
-  EmulatorOptions bad;
-  try {
-    loadWorld(path, bad);
-    FAIL() << "accepted a centre with one coordinate";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("obstacles[1]"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(":3:"), std::string::npos) << e.what();
-  }
-  std::remove(path.c_str());
-  EXPECT_THROW(loadWorld("/nonexistent/world.yaml", bad), std::runtime_error);
 }
 
 TEST(AriaEmulator, CommandLogJournalsEverySetpointPairAsDecoded) {

@@ -1,34 +1,15 @@
-// ground_truth_localization: status-line parsing, the map -> odom correction, and the
-// status client against the real emulator (including the emulator going away).
+// ground_truth_localization: the map -> odom correction, its parameters, and the status
+// client it reads (aria/emulator_status.h) against the real emulator, including the
+// emulator going away.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/ros/ground_truth.h"
 #include "emulator_process.h"
 
 using namespace amigobot_tracking;
-
-TEST(GroundTruth, ParsesAStatusLine) {
-  ros_layer::EmulatorStatus s;
-  ASSERT_EQ(ros_layer::parseEmulatorStatus("12.5 1.25 -0.5 0.75 0.2 -0.1 1 1 0", &s), "");
-  EXPECT_DOUBLE_EQ(s.t, 12.5);
-  EXPECT_DOUBLE_EQ(s.pose.x, 1.25);
-  EXPECT_DOUBLE_EQ(s.pose.y, -0.5);
-  EXPECT_DOUBLE_EQ(s.pose.theta, 0.75);
-  EXPECT_DOUBLE_EQ(s.v, 0.2);
-  EXPECT_DOUBLE_EQ(s.w, -0.1);
-  EXPECT_TRUE(s.motors);
-  EXPECT_TRUE(s.open);
-  EXPECT_FALSE(s.watchdog);
-}
-
-TEST(GroundTruth, RejectsBadLinesSayingWhy) {
-  ros_layer::EmulatorStatus s;
-  EXPECT_NE(ros_layer::parseEmulatorStatus("1 2 3", &s).find("t x y theta"), std::string::npos);
-  EXPECT_NE(ros_layer::parseEmulatorStatus("1 2 3 4 5 6 1 1 0 9", &s).find("extra"), std::string::npos);
-  EXPECT_NE(ros_layer::parseEmulatorStatus("1 nan 3 4 5 6 1 1 0", &s), "");
-}
 
 TEST(GroundTruth, MapToOdomComposesToTheTruth) {
   const core::Pose2 truth{2.0, -1.0, 2.5};
@@ -53,12 +34,12 @@ TEST(GroundTruth, ValidateNamesTheBadField) {
 
 TEST(GroundTruth, ClientReadsTheEmulatorAndReportsItsLoss) {
   amigobot_test::EmulatorProcess emu;
-  ros_layer::StatusClient client("127.0.0.1", emu.statusPort(), 5.0);
-  ros_layer::EmulatorStatus s;
+  aria::StatusClient client("127.0.0.1", emu.statusPort(), 5.0);
+  aria::EmulatorStatus s;
   ASSERT_EQ(client.query(&s), "");
   EXPECT_TRUE(client.connected());
   EXPECT_NEAR(s.pose.x, 0.0, 1e-9);  // default world: the robot starts at the origin
-  ros_layer::EmulatorStatus later;
+  aria::EmulatorStatus later;
   ASSERT_EQ(client.query(&later), "");
   EXPECT_GE(later.t, s.t);
   emu.kill(SIGTERM);

@@ -105,3 +105,19 @@ TEST(RecordedRun, ValidateNamesTheBadField) {
   c.world = {disk(0, 0, -1)};
   EXPECT_NE(c.validate().find("world obstacle 0"), std::string::npos);
 }
+
+TEST(RecordedRun, JsonEscapesTheRunNameAndKeepsTheSharedKeys) {
+  ros_layer::RecordedRunConfig config;
+  config.world = {disk(0.0, 3.0, 0.2)};
+  ros_layer::RecordedRun run(config);
+  drive(&run, 0.05, 0.5);
+  const std::string name = "demo \"quoted\" C:\\runs\\1";
+  const std::string text = ros_layer::recordedRunJson(run.summary(), config, run.allObstacles(), name);
+  const nlohmann::json j = nlohmann::json::parse(text);  // throws on invalid JSON
+  EXPECT_EQ(j["scenario"]["name"], name);
+  EXPECT_EQ(j["safe"], true);
+  EXPECT_EQ(j["ran"], true);
+  EXPECT_EQ(j["steps"], run.summary().metrics.steps);
+  EXPECT_TRUE(j["min_clearance_virtual"].is_null()) << "no virtual obstacle: an infinite clearance is null";
+  EXPECT_DOUBLE_EQ(j["scenario"]["obstacles"][0]["center"][1].get<double>(), 3.0);
+}

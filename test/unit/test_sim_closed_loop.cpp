@@ -10,6 +10,7 @@
 
 #include "amigobot_tracking/sim/baseline_estimators.h"
 #include "amigobot_tracking/sim/target_sensor.h"
+#include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"
@@ -192,6 +193,28 @@ TEST(SimOutput, MetricsJsonHasEveryKeyTheIssueLists) {
   for (const char* bad : {": inf", ": -inf", ": nan", ": -nan"}) EXPECT_EQ(json.find(bad), std::string::npos) << bad;
 }
 
+TEST(SimOutput, ReportsStayValidJsonForAPathWithQuotesAndBackslashes) {
+  sim::Scenario s = shipped("paper_5_2_rose", 0.2);
+  s.file = "/tmp/a \"quoted\" dir\\back\\slash.yaml";
+  s.name = "rose \"x\"";
+  const nlohmann::json metrics = nlohmann::json::parse(sim::metricsJson(s, sim::runScenario(s, false)));
+  EXPECT_EQ(metrics["scenario"]["file"], s.file);
+  EXPECT_EQ(metrics["scenario"]["name"], s.name);
+  EXPECT_EQ(metrics["scenario"]["obstacles"].size(), s.setup.obstacles.size());
+  sim::MonteCarloOptions options;
+  options.runs = 1;
+  const nlohmann::json mc = nlohmann::json::parse(sim::runMonteCarlo(s, options));
+  EXPECT_EQ(mc["scenario"], s.file);
+  EXPECT_EQ(mc["per_run"].size(), 1u);
+}
+
+TEST(SimOutput, NumbersKeepTenSignificantDigitsAndIntegersStayIntegers) {
+  EXPECT_EQ(sim::jsonNumber(0.123456789012345).dump(), "0.123456789");
+  EXPECT_EQ(sim::jsonNumber(60.0).dump(), "60");
+  EXPECT_EQ(sim::jsonNumber(-2.5e-7).dump(), "-2.5e-07");
+  EXPECT_EQ(sim::jsonNumber(std::nan("")).dump(), "null");
+}
+
 TEST(SimOutput, CsvHasTheHeaderAndOneLinePerRowAndNamesAnUnwritablePath) {
   const sim::Scenario s = shipped("paper_5_2_rose", 0.05);
   const sim::RunResult r = sim::runScenario(s, true);
@@ -210,7 +233,7 @@ TEST(SimOutput, CsvHasTheHeaderAndOneLinePerRowAndNamesAnUnwritablePath) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/x.csv"), std::string::npos);
   }
-  EXPECT_EQ(sim::jsonNumber(std::numeric_limits<double>::infinity()), "null");
+  EXPECT_EQ(sim::jsonNumber(std::numeric_limits<double>::infinity()).dump(), "null");
 }
 
 namespace {

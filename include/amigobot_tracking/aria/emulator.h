@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/aria/packet.h"
 #include "amigobot_tracking/aria/robot_params.h"
 #include "amigobot_tracking/aria/sip.h"
@@ -23,7 +24,7 @@ struct EmulatorOptions {
   std::string name = "amigo-emulator";   // SYNC2 name
   bool simulator_mode = false;  // motors start enabled, SIPs always 0x32, watchdog only warns,
                                 // SYNC0 while open = PULSE, a client disconnect closes the robot
-  std::vector<core::Disk> obstacles;     // world, for sonar ranges
+  std::vector<core::Disk> obstacles;     // world (world/world.h), for sonar ranges
   core::Pose2 initial_pose;              // [m, m, rad] ground truth at start
   double odometry_noise = 0.0;  // [-] relative std-dev of the wheel speeds the firmware integrates
   std::uint32_t seed = 1;
@@ -64,9 +65,8 @@ class RobotEmulator {
   bool watchdogTripped() const { return watchdog_tripped_; }
   const EmulatorCounters& counters() const { return counters_; }
   const EmulatorOptions& options() const { return options_; }
-  // Ground truth in the status socket's line format:
-  // "t x y theta v w motors open watchdog" (SI units, motors/open/watchdog 0 or 1).
-  std::string statusLine(double now) const;
+  // Ground truth at `now` [s] for the status socket (aria/emulator_status.h).
+  EmulatorStatus status(double now) const;
   // Sonar ranges [m] for the current true pose.
   std::vector<double> sonarRanges() const;
   // Journal of what reached the robot on the wire: after every motion command (VEL, RVEL,
@@ -104,10 +104,6 @@ class RobotEmulator {
   std::size_t next_sonar_ = 0;
   EmulatorCounters counters_;
 };
-
-// Reads a world file: `obstacles: [{center: [x, y], radius: r}, ...]` and an optional
-// `initial_pose: [x, y, theta]` (SI). Throws std::runtime_error naming the file and entry.
-void loadWorld(const std::string& path, EmulatorOptions& options);
 
 }  // namespace aria
 }  // namespace amigobot_tracking

@@ -29,6 +29,8 @@ geometry_msgs::TransformStamped toTransform(const std::string& parent, const std
 // Age [s] at `now` of a message or transform stamped `stamp`, >= 0; a zero stamp (a static
 // transform) is always current.
 double ageOf(const ros::Time& stamp, const ros::Time& now);
+// Rotation by `yaw` about z.
+geometry_msgs::Quaternion toQuaternion(double yaw);
 // Fills the controller part of the state message (the node adds status, ages, flags).
 void fillState(const core::ControllerOutput& out, TrackingState* state);
 

@@ -12,6 +12,7 @@
 #include "amigobot_tracking/TrackingState.h"
 #include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/sim/simulator.h"
 
 namespace amigobot_tracking {
@@ -84,6 +85,9 @@ class RecordedRun {
   Step pending_;
   std::uint64_t within_rho_ = 0;
 };
+
+// The figures of metrics.json: the shared metrics (sim/json.h) and the recorded-run ones.
+void to_json(sim::Json& json, const RecordedRunSummary& summary);
 
 // metrics.json of a recorded run (same keys as the offline simulator's where they mean
 // the same, plus the recorded-run ones); `scenario` gives plot_run.py its metadata.

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/sim/scenario.h"
 
 namespace amigobot_tracking {
@@ -32,8 +34,38 @@ double encounterTime(const core::Disk& obstacle, const Eigen::Vector2d& velocity
 // contact of the body or the offset disk); redrawn up to 100 times, else the original.
 Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, std::uint64_t index);
 
-// Runs them all and returns the summary JSON (collisions, violations, worst clearances,
-// per-run figures). Prints nothing.
+// One randomised run of a batch.
+struct MonteCarloRun {
+  int index = 0;
+  core::Pose2 initial_pose;  // [m, m, rad] as drawn
+  sim::RunMetrics metrics;
+};
+
+// A batch: what was run, the counts, worst cases and means over its runs, and each run.
+struct MonteCarloSummary {
+  std::string scenario;  // file of the base scenario
+  MonteCarloOptions options;
+  std::string variant;
+  bool body_safe = false, tangential_avoidance = false, moving_obstacles = false;
+  std::uint64_t body_collision_episodes = 0, offset_collision_episodes = 0;
+  int runs_with_long_stall = 0;  // a stall longer than 0.5 s (core/metrics.h)
+  int runs_with_body_collision = 0, runs_with_offset_collision = 0, runs_with_diamond_violation = 0;
+  int runs_with_nan = 0, runs_with_e_over_rho_ge_1 = 0;
+  double worst_stall = 0.0;  // [s]
+  double worst_min_clearance_body = std::numeric_limits<double>::infinity();    // [m]
+  double worst_min_clearance_offset = std::numeric_limits<double>::infinity();  // [m]
+  double worst_max_e_over_rho = 0.0;
+  double mean_ase = 0.0, mean_aae = 0.0, mean_true_ase = 0.0;  // [m^2], [m], [m^2]
+  double sim_time = 0.0, wall_time = 0.0;  // [s] summed over the runs
+  std::vector<MonteCarloRun> per_run;
+};
+
+// Runs them all. Prints nothing.
+MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOptions& options);
+// monte_carlo.json
+void to_json(Json& json, const MonteCarloRun& run);
+void to_json(Json& json, const MonteCarloSummary& summary);
+// The summary's JSON text.
 std::string runMonteCarlo(const Scenario& base, const MonteCarloOptions& options);
 
 }  // namespace sim

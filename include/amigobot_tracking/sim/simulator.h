@@ -3,7 +3,6 @@
 #pragma once
 
 #include <array>
-#include <ostream>
 #include <string>
 #include <vector>
 
@@ -38,12 +37,6 @@ RunResult runScenario(const Scenario& scenario, bool log);
 void writeTrajectoryCsv(const std::string& path, const std::vector<CsvRow>& rows);
 std::string metricsJson(const Scenario& scenario, const RunResult& result);
 void writeText(const std::string& path, const std::string& text);
-
-// A JSON number; non-finite values become null (JSON has no infinity).
-std::string jsonNumber(double value);
-// The metrics every run report shares (offline run or recorded run), one `"key": value,`
-// line each, so both metrics.json files keep one schema for plot_run.py and the tests.
-void writeSharedMetricsJson(std::ostream& json, const sim::RunMetrics& metrics);
 
 }  // namespace sim
 }  // namespace amigobot_tracking

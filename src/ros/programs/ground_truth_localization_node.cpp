@@ -2,20 +2,28 @@
 // robot and broadcasts map -> odom so that map -> base_link is that pose (REP 105), and
 // publishes the true pose as `ground_truth` (nav_msgs/Odometry in map) for recording.
 // When the socket goes away it says so, stops broadcasting (consumers see the pose age
-// and stop the robot) and reconnects. Parameters: ros/ground_truth.h (GroundTruthConfig).
+// and stop the robot) and reconnects every reconnect_period (aria::StatusClient).
+// Parameters: ros/ground_truth.h (GroundTruthConfig).
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/ground_truth.h"
+#include "amigobot_tracking/ros/node_command_line.h"
 
 using namespace amigobot_tracking;
 
+const ros_layer::NodeHelp kHelp{
+    "Broadcasts map -> odom from the emulator's ground truth (status socket) and "
+    "publishes it as `ground_truth`.",
+    "include/amigobot_tracking/ros/ground_truth.h (GroundTruthConfig)."};
+
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "ground_truth_localization");
+  ros_layer::initNode(argc, argv, "ground_truth_localization", kHelp);
   ros::NodeHandle nh, pnh("~");
   ros_layer::GroundTruthConfig config;
   const std::string error = ros_layer::loadGroundTruthConfig(pnh, &config);
@@ -27,18 +35,15 @@ int main(int argc, char** argv) {
   tf2_ros::TransformListener listener(tf);
   tf2_ros::TransformBroadcaster broadcaster;
   ros::Publisher truth_pub = nh.advertise<nav_msgs::Odometry>("ground_truth", 10);
-  ros_layer::StatusClient client(config.host, config.port, config.socket_timeout);
+  aria::StatusClient client(config.host, config.port, config.socket_timeout, config.reconnect_period);
 
   ros::Rate rate(config.rate);
-  ros::Time next_connect;
   bool was_up = false;
   while (ros::ok()) {
     rate.sleep();
-    if (!client.connected() && ros::Time::now() < next_connect) continue;
-    ros_layer::EmulatorStatus status;
+    aria::EmulatorStatus status;
     const std::string problem = client.query(&status);
     if (!problem.empty()) {
-      next_connect = ros::Time::now() + ros::Duration(config.reconnect_period);
       if (was_up) ROS_ERROR_STREAM("ground_truth_localization: lost the emulator: " << problem << "; map -> odom stops");
       else ROS_ERROR_STREAM_THROTTLE(10.0, "ground_truth_localization: " << problem << " (retrying every "
                                                                           << config.reconnect_period << " s)");
@@ -54,8 +59,7 @@ int main(int argc, char** argv) {
     truth.child_frame_id = config.base_frame;
     truth.pose.pose.position.x = status.pose.x;
     truth.pose.pose.position.y = status.pose.y;
-    truth.pose.pose.orientation.z = std::sin(status.pose.theta / 2.0);
-    truth.pose.pose.orientation.w = std::cos(status.pose.theta / 2.0);
+    truth.pose.pose.orientation = ros_layer::toQuaternion(status.pose.theta);
     truth.twist.twist.linear.x = status.v;
     truth.twist.twist.angular.z = status.w;
     truth_pub.publish(truth);

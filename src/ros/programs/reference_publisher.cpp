@@ -22,6 +22,7 @@
 #include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/core/waypoint_reference.h"
 #include "amigobot_tracking/ros/conversions.h"
+#include "amigobot_tracking/ros/node_command_line.h"
 
 using amigobot_tracking::core::Reference;
 
@@ -110,8 +111,13 @@ std::unique_ptr<Reference> makeReference(const ros::NodeHandle& pnh) {
 
 }  // namespace
 
+const amigobot_tracking::ros_layer::NodeHelp kHelp{
+    "Broadcasts tf global_frame -> target_frame moving along a reference (rose, circle, spline, waypoints).",
+    "global_frame, target_frame, rate, time_scale, start_delay, origin, reference/type and its keys: see the head of "
+    "src/tools/reference_publisher.cpp."};
+
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "reference_publisher");
+  amigobot_tracking::ros_layer::initNode(argc, argv, "reference_publisher", kHelp);
   ros::NodeHandle pnh("~");
   std::string global_frame = "map", target_frame = "target";
   pnh.getParam("global_frame", global_frame);

@@ -4,9 +4,10 @@
 // outside the diamond; 4: the run did not happen (too few steps, no ground truth, no
 // motion); 2: bad arguments or unreadable input.
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <string>
+
+#include <CLI/CLI.hpp>
 
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
@@ -16,72 +17,40 @@
 
 #include "amigobot_tracking/TrackingState.h"
 #include "amigobot_tracking/VirtualObstacleArray.h"
-#include "amigobot_tracking/aria/emulator.h"
 #include "amigobot_tracking/ros/recorded_run.h"
+#include "amigobot_tracking/world/world.h"
 
 using namespace amigobot_tracking;
-
-namespace {
-
-const char* kUsage =
-    "usage: run_report --bag FILE --world FILE.yaml --out DIR [options]\n"
-    "  --name NAME          run name for the plots (default sim)\n"
-    "  --tracking-ns NS     namespace of the tracking node's topics (default /tracking)\n"
-    "  --cmd-topic T        commands (default /cmd_vel)\n"
-    "  --truth-topic T      ground truth, nav_msgs/Odometry in map (default /ground_truth)\n"
-    "  --robot-radius R     [m] (0.18)   --offset r [m] (0.3)   --rho-inf [m] (0.1)\n"
-    "  --v-max V [m/s] (0.3)   --w-max W [rad/s] (0.8): the diamond of the run\n";
-
-double number(const std::string& flag, const char* text) {
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0') {
-    std::cerr << "run_report: " << flag << ": '" << text << "' is not a number\n";
-    std::exit(2);
-  }
-  return v;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   std::string bag_path, world_path, out, name = "sim", ns = "/tracking", cmd_topic = "/cmd_vel",
                                             truth_topic = "/ground_truth";
   ros_layer::RecordedRunConfig config;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> const char* {
-      if (i + 1 >= argc) {
-        std::cerr << "run_report: " << a << " needs a value\n" << kUsage;
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--bag") bag_path = value();
-    else if (a == "--world") world_path = value();
-    else if (a == "--out") out = value();
-    else if (a == "--name") name = value();
-    else if (a == "--tracking-ns") ns = value();
-    else if (a == "--cmd-topic") cmd_topic = value();
-    else if (a == "--truth-topic") truth_topic = value();
-    else if (a == "--robot-radius") config.robot_radius = number(a, value());
-    else if (a == "--offset") config.offset = number(a, value());
-    else if (a == "--rho-inf") config.rho_inf = number(a, value());
-    else if (a == "--v-max") config.v_max = number(a, value());
-    else if (a == "--w-max") config.w_max = number(a, value());
-    else {
-      std::cerr << "run_report: unknown option '" << a << "'\n" << kUsage;
-      return 2;
-    }
-  }
-  if (bag_path.empty() || world_path.empty() || out.empty()) {
-    std::cerr << kUsage;
-    return 2;
+  CLI::App app("Scores a run recorded from sim.launch (rosbag) with the offline simulator's metrics; writes "
+               "trajectory.csv and metrics.json (scripts/plot_run.py draws them).",
+               "run_report");
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.add_option("--bag", bag_path, "the recorded run")->required();
+  app.add_option("--world", world_path, "world YAML of the run (world/world.h)")->required();
+  app.add_option("--out", out, "folder for trajectory.csv and metrics.json")->required();
+  app.add_option("--name", name, "run name for the plots")->capture_default_str();
+  app.add_option("--tracking-ns", ns, "namespace of the tracking node's topics")->capture_default_str();
+  app.add_option("--cmd-topic", cmd_topic, "commands (geometry_msgs/Twist)")->capture_default_str();
+  app.add_option("--truth-topic", truth_topic, "ground truth, nav_msgs/Odometry in map")->capture_default_str();
+  app.add_option("--robot-radius", config.robot_radius, "[m] R")->capture_default_str();
+  app.add_option("--offset", config.offset, "[m] r, offset of the controlled point")->capture_default_str();
+  app.add_option("--rho-inf", config.rho_inf, "[m] for the plots")->capture_default_str();
+  app.add_option("--v-max", config.v_max, "[m/s] the run's diamond")->capture_default_str();
+  app.add_option("--w-max", config.w_max, "[rad/s] the run's diamond")->capture_default_str();
+  app.footer("Exit 0: safe run; 3: collision or a command outside the diamond; 4: the run did not happen; "
+             "2: bad arguments or unreadable input.");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
   }
   try {
-    aria::EmulatorOptions world;
-    aria::loadWorld(world_path, world);
-    config.world = world.obstacles;
+    config.world = world::loadWorld(world_path).obstacles;
     const std::string error = config.validate();
     if (!error.empty()) throw std::invalid_argument("run_report: " + error);
 

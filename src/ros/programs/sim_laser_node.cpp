@@ -8,14 +8,20 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
-#include "amigobot_tracking/aria/emulator.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/sim_laser.h"
+#include "amigobot_tracking/world/world.h"
+#include "amigobot_tracking/ros/node_command_line.h"
 
 using namespace amigobot_tracking;
 
+const ros_layer::NodeHelp kHelp{
+    "A planar laser for the emulated robot: ray casts the world file from the pose of "
+    "laser_frame and publishes `scan`.",
+    "include/amigobot_tracking/ros/sim_laser.h (SimLaserConfig)."};
+
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "sim_laser");
+  ros_layer::initNode(argc, argv, "sim_laser", kHelp);
   ros::NodeHandle nh, pnh("~");
   ros_layer::SimLaserConfig config;
   const std::string error = ros_layer::loadSimLaserConfig(pnh, &config);
@@ -23,14 +29,14 @@ int main(int argc, char** argv) {
     ROS_FATAL_STREAM("sim_laser: " << error);
     return 1;
   }
-  aria::EmulatorOptions world;
+  world::World room;
   try {
-    aria::loadWorld(config.world_file, world);
+    room = world::loadWorld(config.world_file);
   } catch (const std::exception& e) {
     ROS_FATAL_STREAM("sim_laser: " << e.what());
     return 1;
   }
-  ROS_INFO_STREAM("sim_laser: " << world.obstacles.size() << " obstacles from " << config.world_file << ", "
+  ROS_INFO_STREAM("sim_laser: " << room.obstacles.size() << " obstacles from " << config.world_file << ", "
                                 << config.beams << " beams in '" << config.laser_frame << "' at " << config.rate
                                 << " Hz");
 
@@ -52,7 +58,7 @@ int main(int argc, char** argv) {
     }
     if (pose.header.stamp == last_stamp) continue;  // no new pose: no new scan (tf stalled)
     last_stamp = pose.header.stamp;
-    sensor_msgs::LaserScan scan = ros_layer::simulateScan(ros_layer::toPose2(pose.transform), world.obstacles, config, &rng);
+    sensor_msgs::LaserScan scan = ros_layer::simulateScan(ros_layer::toPose2(pose.transform), room.obstacles, config, &rng);
     scan.header.stamp = pose.header.stamp;
     pub.publish(scan);
   }

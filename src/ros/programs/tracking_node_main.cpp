@@ -2,9 +2,14 @@
 #include <ros/ros.h>
 
 #include "amigobot_tracking/ros/tracking_node.h"
+#include "amigobot_tracking/ros/node_command_line.h"
+
+const amigobot_tracking::ros_layer::NodeHelp kHelp{
+    "The tracking controller (the nodelet amigobot_tracking/Tracking) in its own process.",
+    "config/tracking.yaml and the README's parameter tables."};
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "tracking");
+  amigobot_tracking::ros_layer::initNode(argc, argv, "tracking", kHelp);
   ros::NodeHandle nh, pnh("~");
   amigobot_tracking::ros_layer::TrackingNode node(nh, pnh);
   if (!node.start()) return 1;  // configuration error: logged, nothing enabled

@@ -7,11 +7,16 @@
 
 #include "amigobot_tracking/ros/logged_param.h"
 #include "amigobot_tracking/ros/trail.h"
+#include "amigobot_tracking/ros/node_command_line.h"
 
 using namespace amigobot_tracking;
 
+const ros_layer::NodeHelp kHelp{
+    "The recent path of one tf frame in global_frame as nav_msgs/Path on `trail`, for rviz.",
+    "frame (base_link), global_frame (map), rate [Hz] (5), min_distance [m] (0.02), max_poses (3000)."};
+
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "trail_publisher");
+  ros_layer::initNode(argc, argv, "trail_publisher", kHelp);
   ros::NodeHandle nh, pnh("~");
   std::string frame = "base_link", global_frame = "map";
   double rate = 5.0;

@@ -1,0 +1,35 @@
+// The start of a ROS node whose settings are all ROS parameters: ros::init (which removes
+// roslaunch's remappings: __name:=, topic:=...), then the node's own command line, where
+// `--help` tells what the node does and where its parameters are described and anything
+// else is refused by name.
+#pragma once
+
+#include <cstdlib>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <ros/init.h>
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+struct NodeHelp {
+  const char* about;       // what the node does
+  const char* parameters;  // its private parameters, or where they are described
+};
+
+// Returns when the command line is empty; exits 0 after --help, 2 on anything else.
+inline void initNode(int& argc, char** argv, const std::string& node_name, const NodeHelp& help) {
+  ros::init(argc, argv, node_name);
+  const std::string program = argv[0];
+  CLI::App app(help.about, program.substr(program.find_last_of('/') + 1));
+  app.footer(std::string("Parameters (private ROS parameters, ~name): ") + help.parameters);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    std::exit(app.exit(e) == 0 ? 0 : 2);
+  }
+}
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

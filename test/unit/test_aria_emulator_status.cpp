@@ -1,0 +1,77 @@
+// The emulator's status protocol (aria/emulator_status.h): the writer and the parser agree,
+// malformed lines are refused saying why, and the client waits out its reconnect period.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "amigobot_tracking/aria/emulator_status.h"
+#include "emulator_process.h"
+
+using namespace amigobot_tracking::aria;
+
+TEST(EmulatorStatus, ParsesAStatusLine) {
+  EmulatorStatus s;
+  ASSERT_EQ(parseStatusLine("12.5 1.25 -0.5 0.75 0.2 -0.1 1 1 0", &s), "");
+  EXPECT_DOUBLE_EQ(s.t, 12.5);
+  EXPECT_DOUBLE_EQ(s.pose.x, 1.25);
+  EXPECT_DOUBLE_EQ(s.pose.y, -0.5);
+  EXPECT_DOUBLE_EQ(s.pose.theta, 0.75);
+  EXPECT_DOUBLE_EQ(s.v, 0.2);
+  EXPECT_DOUBLE_EQ(s.w, -0.1);
+  EXPECT_TRUE(s.motors);
+  EXPECT_TRUE(s.open);
+  EXPECT_FALSE(s.watchdog);
+}
+
+TEST(EmulatorStatus, WriterAndParserRoundTrip) {
+  for (int k = 0; k < 8; ++k) {
+    EmulatorStatus in;
+    in.t = 0.1234 * k;
+    in.pose = {1.5 - k, -0.25 * k, std::remainder(0.9 * k, 2.0 * M_PI)};
+    in.v = 0.05 * k;
+    in.w = -0.125 * k;
+    in.motors = k & 1;
+    in.open = k & 2;
+    in.watchdog = k & 4;
+    EmulatorStatus out;
+    const std::string line = formatStatusLine(in);
+    ASSERT_EQ(parseStatusLine(line, &out), "") << line;
+    EXPECT_NEAR(out.t, in.t, 5e-5);  // the line keeps 4 decimals of t, 6 of the rest
+    EXPECT_NEAR(out.pose.x, in.pose.x, 5e-7);
+    EXPECT_NEAR(out.pose.y, in.pose.y, 5e-7);
+    EXPECT_NEAR(out.pose.theta, in.pose.theta, 5e-7);
+    EXPECT_NEAR(out.v, in.v, 5e-7);
+    EXPECT_NEAR(out.w, in.w, 5e-7);
+    EXPECT_EQ(out.motors, in.motors);
+    EXPECT_EQ(out.open, in.open);
+    EXPECT_EQ(out.watchdog, in.watchdog);
+  }
+}
+
+TEST(EmulatorStatus, RejectsBadLinesSayingWhy) {
+  EmulatorStatus s;
+  s.t = 42.0;
+  EXPECT_NE(parseStatusLine("1 2 3", &s).find("t x y theta"), std::string::npos);
+  EXPECT_NE(parseStatusLine("1 2 3 4 5 6 1 1 0 9", &s).find("extra"), std::string::npos);
+  EXPECT_NE(parseStatusLine("1 nan 3 4 5 6 1 1 0", &s), "");
+  EXPECT_NE(parseStatusLine("1 2 3 4 5 6 1 2 0", &s).find("0 or 1"), std::string::npos);
+  EXPECT_NE(parseStatusLine("1 2 3 4 5 6 1 1", &s).find("0 or 1"), std::string::npos);
+  EXPECT_NE(parseStatusLine("", &s), "");
+  EXPECT_NE(parseStatusLine("t x y theta v w 1 1 0", &s), "");
+  EXPECT_DOUBLE_EQ(s.t, 42.0) << "a refused line must leave the status alone";
+}
+
+TEST(EmulatorStatus, ClientRepeatsTheFailureUntilTheReconnectPeriodHasPassed) {
+  const int port = amigobot_test::freePort();  // nobody listens there
+  StatusClient client("127.0.0.1", port, 1.0, 0.5);
+  EmulatorStatus s;
+  const std::string first = client.query(&s);
+  EXPECT_NE(first.find("cannot connect"), std::string::npos) << first;
+  EXPECT_FALSE(client.connected());
+  // The emulator appears at once, but the client waits out the period before it looks again.
+  amigobot_test::EmulatorProcess emu({"--status-port", std::to_string(port)});
+  EXPECT_EQ(client.query(&s), first);
+  EXPECT_TRUE(amigobot_test::waitFor([&] { return client.query(&s).empty(); }, 5.0));
+  EXPECT_TRUE(client.connected());
+}
