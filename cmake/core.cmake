@@ -8,6 +8,7 @@ add_library(amigobot_tracking_core
   src/core/performance.cpp
   src/core/controller.cpp
   src/core/controller_config.cpp
+  src/core/field_table.cpp
   src/core/unicycle.cpp
   src/core/reference.cpp
   src/core/closed_loop.cpp

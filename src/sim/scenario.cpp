@@ -122,12 +122,57 @@ double nonNegative(Section& s, const std::string& name, double value) {
   return value;
 }
 
+// The scenario files' names of controller fields: the estimator's rows sit flat in
+// `controller` (its key `estimator` names the velocity source), R is robot.radius.
+std::string scenarioKey(const std::string& key) {
+  if (key == "robot_radius") return "radius";
+  const std::string nested = "estimator/";
+  return key.rfind(nested, 0) == 0 ? key.substr(nested.size()) : key;
+}
+
+bool inRobotSection(const std::string& key) {
+  return key == "robot_radius" || key == "offset" || key == "v_max" || key == "w_max";
+}
+
+// Keys every scenario must give (the paper's Table 1); the others default to the struct's.
+bool requiredKey(const std::string& name) {
+  static const std::set<std::string> required = {"radius", "offset", "v_max",  "w_max", "k_d",      "k_o",
+                                                 "k_r",    "lambda", "rho_inf", "rho_0", "delta",    "a1",
+                                                 "a2",     "lambda_o", "rho_o", "rho_o0", "body_safe"};
+  return required.count(name) > 0;
+}
+
+// Reads the controller table's rows that belong to this section (type, bounds, required).
+void readControllerFields(Section& s, bool robot_section, core::ControllerConfig& c) {
+  for (const core::Field<core::ControllerConfig>& f : core::controllerFields()) {
+    if (inRobotSection(f.key) != robot_section) continue;
+    const std::string name = scenarioKey(f.key);
+    if (!s.has(name)) {
+      if (requiredKey(name)) s.required(name);  // throws "missing (required)"
+      s.optional(name);
+      continue;
+    }
+    const YAML::Node node = s.optional(name);
+    core::FieldValue value;
+    switch (f.type) {
+      case core::FieldType::kReal: value = s.toNumber(node, s.key(name)); break;
+      case core::FieldType::kBoolean: value = s.toBool(node, s.key(name)); break;
+      case core::FieldType::kText: value = s.toText(node, s.key(name)); break;
+      case core::FieldType::kInteger: {
+        const double v = s.toNumber(node, s.key(name));
+        if (v != std::floor(v) || std::abs(v) > 2e9) fail(s.file(), node, s.key(name), "expected an integer, got " + describe(node));
+        value = static_cast<int>(v);
+        break;
+      }
+    }
+    const std::string why = core::checkValue(f.type, f.bounds, value);
+    if (!why.empty()) fail(s.file(), node, s.key(name), why);
+    f.set(c, value);
+  }
+}
+
 void parseRobot(Section s, core::ClosedLoopSetup& setup) {
-  core::ControllerConfig& c = setup.controller;
-  c.robot_radius = positive(s, "radius", s.number("radius"));
-  c.offset = positive(s, "offset", s.number("offset"));
-  c.v_max = positive(s, "v_max", s.number("v_max"));
-  c.w_max = positive(s, "w_max", s.number("w_max"));
+  readControllerFields(s, true, setup.controller);
   const std::vector<double> pose = s.numbers("initial_pose", 3);
   setup.initial_pose = {pose[0], pose[1], pose[2]};
   s.finish();
@@ -135,35 +180,7 @@ void parseRobot(Section s, core::ClosedLoopSetup& setup) {
 
 void parseController(Section s, core::ClosedLoopSetup& setup) {
   core::ControllerConfig& c = setup.controller;
-  c.k_d = s.number("k_d");
-  c.k_o = s.number("k_o");
-  c.k_r = s.number("k_r");
-  c.lambda = s.number("lambda");
-  c.rho_inf = s.number("rho_inf");
-  c.rho_0 = s.number("rho_0");
-  c.delta = s.number("delta");
-  c.estimator.a1 = s.number("a1");
-  c.estimator.a2 = s.number("a2");
-  c.estimator.lambda_o = s.number("lambda_o");
-  c.estimator.rho_o = s.number("rho_o");
-  c.estimator.rho_o0 = s.number("rho_o0");
-  c.body_safe = s.boolean("body_safe");
-  // Optional.
-  c.min_margin = s.number("min_margin", 1e-3);
-  c.max_error_ratio = s.number("max_error_ratio", c.max_error_ratio);
-  c.estimator.jump_threshold = s.number("jump_threshold", c.estimator.jump_threshold);
-  // Beyond the paper (issue 8), all optional; the defaults are the paper's law.
-  c.tangential_avoidance = s.boolean("tangential_avoidance", c.tangential_avoidance);
-  c.k_t = nonNegative(s, "k_t", s.number("k_t", c.k_t));
-  c.tangential_hysteresis = nonNegative(s, "tangential_hysteresis", s.number("tangential_hysteresis", c.tangential_hysteresis));
-  if (c.tangential_hysteresis >= 1.0)
-    fail(s.file(), s.node()["tangential_hysteresis"], s.key("tangential_hysteresis"),
-         "must be < 1 (a sine margin), got " + std::to_string(c.tangential_hysteresis));
-  c.moving_obstacles = s.boolean("moving_obstacles", c.moving_obstacles);
-  c.obstacle_horizon = nonNegative(s, "obstacle_horizon", s.number("obstacle_horizon", c.obstacle_horizon));
-  c.predict_target = s.boolean("predict_target", c.predict_target);
-  c.compensate_pose_age = s.boolean("compensate_pose_age", c.compensate_pose_age);
-  c.max_prediction = nonNegative(s, "max_prediction", s.number("max_prediction", c.max_prediction));
+  readControllerFields(s, false, c);
   const std::string variant = s.text("variant", "paper");
   try {
     setup.law = parseControlLaw(variant);
@@ -361,25 +378,18 @@ std::string toString(core::ControlLaw law) { return nameOf(kLaws, law); }
 std::string toString(core::VelocitySource source) { return nameOf(kSources, source); }
 std::string toString(core::Integrator integrator) { return nameOf(kIntegrators, integrator); }
 
-// The YAML key of a field named first in a validate() message.
-static std::string keyOf(const std::string& message) {
-  const std::string field = message.substr(0, message.find(' '));
-  for (const char* robot : {"radius", "offset", "v_max", "w_max", "initial_pose"})
-    if (field == robot) return "robot." + field;
-  for (const char* simulation : {"duration", "control_period", "max_step"})
-    if (field == simulation) return "simulation." + field;
-  for (const char* target : {"sample_period", "noise_std", "delay", "jumps:"})
-    if (field == target) return "target." + field.substr(0, field.find(':'));
-  if (field == "pose_sample_period") return "localization.sample_period";
-  if (field == "pose_delay") return "localization.delay";
-  if (field == "obstacles:" || field == "obstacle_velocities") return "obstacles";
-  return "controller." + field;
-}
-
 void checkScenario(const Scenario& scenario) {
   const core::ClosedLoopSetup& setup = scenario.setup;
+  // The controller's rules across fields name a table key ("key: reason"); the parser has
+  // checked every other field, so validateSetup's own messages are a last guard.
+  const std::string controller = setup.controller.validate();
+  if (!controller.empty()) {
+    const std::string key = controller.substr(0, controller.find(':'));
+    throw ScenarioError(scenario.file + ": " + (inRobotSection(key) ? "robot." : "controller.") + scenarioKey(key) +
+                        controller.substr(key.size()));
+  }
   const std::string err = core::validateSetup(setup);
-  if (!err.empty()) throw ScenarioError(scenario.file + ": " + keyOf(err) + ": " + err);
+  if (!err.empty()) throw ScenarioError(scenario.file + ": " + err);
   const auto reference = scenario.makeReference();
   const Eigen::Vector2d p_d = reference->at(0.0).position;
   const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, setup.controller.offset);
@@ -393,13 +403,38 @@ void checkScenario(const Scenario& scenario) {
   }
 }
 
-Scenario parseScenario(const std::string& text, const std::string& file) {
+namespace {
+
+// `section.key=value` on the YAML tree: the value is read as YAML (a number, a word, a list),
+// the parser then checks it like a value in the file.
+void applyOverride(YAML::Node& root, const std::string& file, const std::string& assignment) {
+  const size_t eq = assignment.find('=');
+  const std::string path = assignment.substr(0, eq);
+  const size_t dot = path.find('.');
+  if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == path.size())
+    throw ScenarioError("--set " + assignment + ": expected section.key=value");
+  const std::string section = path.substr(0, dot), key = path.substr(dot + 1);
+  YAML::Node value;
+  try {
+    value = YAML::Load(assignment.substr(eq + 1));
+  } catch (const YAML::Exception& e) {
+    throw ScenarioError("--set " + path + ": not a YAML value: " + e.msg);
+  }
+  if (root[section].IsDefined() && !root[section].IsNull() && !root[section].IsMap())
+    throw ScenarioError(file + ": --set " + path + ": " + section + " is not a mapping");
+  root[section][key] = value;
+}
+
+}  // namespace
+
+Scenario parseScenario(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw ScenarioError(file + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
+  for (const std::string& o : overrides) applyOverride(root, file, o);
   Scenario scenario;
   scenario.file = file;
   scenario.name = stem(file);
@@ -420,12 +455,12 @@ Scenario parseScenario(const std::string& text, const std::string& file) {
   return scenario;
 }
 
-Scenario loadScenario(const std::string& path) {
+Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides) {
   std::ifstream in(path);
   if (!in) throw ScenarioError(path + ": cannot open the scenario file");
   std::stringstream text;
   text << in.rdbuf();
-  return parseScenario(text.str(), path);
+  return parseScenario(text.str(), path, overrides);
 }
 
 }  // namespace sim

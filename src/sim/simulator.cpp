@@ -1,5 +1,7 @@
 #include "amigobot_tracking/sim/simulator.h"
 
+#include "amigobot_tracking/sim/config_json.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -111,8 +113,9 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   num("wall_time_s", result.wall_time);
   num("realtime_factor", result.realtimeFactor());
   j << "  \"scenario\": {\n"
-    << "    \"name\": \"" << scenario.name << "\",\n"
-    << "    \"file\": \"" << scenario.file << "\",\n"
+    << "    \"name\": " << nlohmann::json(scenario.name).dump() << ",\n"
+    << "    \"file\": " << nlohmann::json(scenario.file).dump() << ",\n"
+    << "    \"controller\": " << nlohmann::json(c).dump() << ",\n"
     << "    \"reference\": \"" << scenario.reference.type << "\",\n"
     << "    \"variant\": \"" << toString(setup.law) << "\",\n"
     << "    \"estimator\": \"" << toString(setup.velocity_source) << "\",\n"
