@@ -125,7 +125,7 @@ TEST(ParamCoverage, EveryFieldIsInTheReadmeAndEveryRowNamesOne) {
 }
 
 TEST(ParamCoverage, TheCfgHasExactlyTheLiveFields) {
-  static const std::regex add(R"(gen\.add\(\s*"([A-Za-z0-9_]+)")");
+  static const std::regex add(R"re(gen\.add\(\s*"([A-Za-z0-9_]+)")re");
   std::set<std::string> cfg;
   for (const std::string& line : lines("cfg/Tracking.cfg")) {
     std::smatch m;
