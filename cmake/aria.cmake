@@ -14,6 +14,7 @@ add_library(amigobot_tracking_aria
   src/aria/transport.cpp
   src/aria/client.cpp
   src/aria/emulator.cpp
+  src/aria/emulator_options.cpp
   src/aria/emulator_server.cpp
 )
 target_include_directories(amigobot_tracking_aria PUBLIC include)

@@ -7,7 +7,7 @@ add_library(amigobot_tracking_ros_driver
   src/ros/driver.cpp
   src/ros/driver_nodelet.cpp
 )
-target_link_libraries(amigobot_tracking_ros_driver amigobot_tracking_aria ${catkin_LIBRARIES})
+target_link_libraries(amigobot_tracking_ros_driver amigobot_tracking_aria amigobot_tracking_ros_params ${catkin_LIBRARIES})
 target_compile_options(amigobot_tracking_ros_driver PRIVATE ${AMIGOBOT_WARNINGS})
 install(TARGETS amigobot_tracking_ros_driver LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})

@@ -6,7 +6,7 @@ add_library(amigobot_tracking_ros_sim
   src/ros/ground_truth.cpp
   src/ros/trail.cpp
 )
-target_link_libraries(amigobot_tracking_ros_sim amigobot_tracking_ros amigobot_tracking_aria ${catkin_LIBRARIES})
+target_link_libraries(amigobot_tracking_ros_sim amigobot_tracking_ros amigobot_tracking_ros_params amigobot_tracking_aria ${catkin_LIBRARIES})
 target_compile_options(amigobot_tracking_ros_sim PRIVATE ${AMIGOBOT_WARNINGS})
 install(TARGETS amigobot_tracking_ros_sim LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 

@@ -1,6 +1,8 @@
 # Offline simulator: scenario files (yaml-cpp) and run outputs over the core. No ROS.
 add_library(amigobot_tracking_sim
   src/sim/scenario.cpp
+  src/sim/scenario_fields.cpp
+  src/sim/scenario_names.cpp
   src/sim/simulator.cpp
   src/sim/monte_carlo.cpp
 )

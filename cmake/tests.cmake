@@ -69,7 +69,7 @@ amigobot_add_unit_test(test_field_table test/unit/test_field_table.cpp)
 target_link_libraries(test_field_table amigobot_tracking_core)
 # Every table field in config/*.yaml (with its comment), the README's tables and cfg/*.cfg.
 amigobot_add_unit_test(test_param_coverage test/unit/test_param_coverage.cpp)
-target_link_libraries(test_param_coverage amigobot_tracking_ros)
+target_link_libraries(test_param_coverage amigobot_tracking_ros amigobot_tracking_ros_driver)
 target_compile_definitions(test_param_coverage PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 add_rostest_gtest(test_param_reader test/rostest/param_reader.test test/rostest/test_param_reader.cpp)
 target_link_libraries(test_param_reader amigobot_tracking_ros ${catkin_LIBRARIES})

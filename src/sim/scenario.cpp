@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/sim/scenario_fields.h"
 
 namespace amigobot_tracking {
 namespace sim {
@@ -117,38 +118,15 @@ double positive(Section& s, const std::string& name, double value) {
   return value;
 }
 
-double nonNegative(Section& s, const std::string& name, double value) {
-  if (!(value >= 0.0)) fail(s.file(), s.node()[name], s.key(name), "must be >= 0, got " + std::to_string(value));
-  return value;
-}
-
-// The scenario files' names of controller fields: the estimator's rows sit flat in
-// `controller` (its key `estimator` names the velocity source), R is robot.radius.
-std::string scenarioKey(const std::string& key) {
-  if (key == "robot_radius") return "radius";
-  const std::string nested = "estimator/";
-  return key.rfind(nested, 0) == 0 ? key.substr(nested.size()) : key;
-}
-
-bool inRobotSection(const std::string& key) {
-  return key == "robot_radius" || key == "offset" || key == "v_max" || key == "w_max";
-}
-
-// Keys every scenario must give (the paper's Table 1); the others default to the struct's.
-bool requiredKey(const std::string& name) {
-  static const std::set<std::string> required = {"radius", "offset", "v_max",  "w_max", "k_d",      "k_o",
-                                                 "k_r",    "lambda", "rho_inf", "rho_0", "delta",    "a1",
-                                                 "a2",     "lambda_o", "rho_o", "rho_o0", "body_safe"};
-  return required.count(name) > 0;
-}
-
-// Reads the controller table's rows that belong to this section (type, bounds, required).
-void readControllerFields(Section& s, bool robot_section, core::ControllerConfig& c) {
-  for (const core::Field<core::ControllerConfig>& f : core::controllerFields()) {
-    if (inRobotSection(f.key) != robot_section) continue;
-    const std::string name = scenarioKey(f.key);
+// Reads the rows of `table` that `nameOf` places in this section (their YAML names; "" for
+// rows of other sections): type, bounds, and whether the key is required.
+template <class C, class NameOf>
+void readSection(Section& s, const core::FieldTable<C>& table, C& config, NameOf&& nameOf) {
+  for (const core::Field<C>& f : table) {
+    const std::string name = nameOf(f.key);
+    if (name.empty()) continue;
     if (!s.has(name)) {
-      if (requiredKey(name)) s.required(name);  // throws "missing (required)"
+      if (requiredScenarioKey(s.key(name))) s.required(name);  // throws "missing (required)"
       s.optional(name);
       continue;
     }
@@ -160,19 +138,35 @@ void readControllerFields(Section& s, bool robot_section, core::ControllerConfig
       case core::FieldType::kText: value = s.toText(node, s.key(name)); break;
       case core::FieldType::kInteger: {
         const double v = s.toNumber(node, s.key(name));
-        if (v != std::floor(v) || std::abs(v) > 2e9) fail(s.file(), node, s.key(name), "expected an integer, got " + describe(node));
+        if (v != std::floor(v) || std::abs(v) > 2e9)
+          fail(s.file(), node, s.key(name), "expected an integer, got " + describe(node));
         value = static_cast<int>(v);
         break;
       }
     }
     const std::string why = core::checkValue(f.type, f.bounds, value);
     if (!why.empty()) fail(s.file(), node, s.key(name), why);
-    f.set(c, value);
+    f.set(config, value);
   }
 }
 
+// The controller's rows of one section (robot or controller) under their scenario names.
+void readControllerFields(Section& s, const std::string& section, core::ControllerConfig& c) {
+  readSection(s, core::controllerFields(), c, [&](const std::string& key) {
+    const std::string path = scenarioPath(key);
+    return path.rfind(section + ".", 0) == 0 ? path.substr(section.size() + 1) : std::string();
+  });
+}
+
+// The scenario's own rows ("simulation/duration") of one section.
+void readScenarioFields(Section& s, const std::string& section, Scenario& scenario) {
+  readSection(s, scenarioFields(), scenario, [&](const std::string& key) {
+    return key.rfind(section + "/", 0) == 0 ? key.substr(section.size() + 1) : std::string();
+  });
+}
+
 void parseRobot(Section s, core::ClosedLoopSetup& setup) {
-  readControllerFields(s, true, setup.controller);
+  readControllerFields(s, "robot", setup.controller);
   const std::vector<double> pose = s.numbers("initial_pose", 3);
   setup.initial_pose = {pose[0], pose[1], pose[2]};
   s.finish();
@@ -180,7 +174,7 @@ void parseRobot(Section s, core::ClosedLoopSetup& setup) {
 
 void parseController(Section s, core::ClosedLoopSetup& setup) {
   core::ControllerConfig& c = setup.controller;
-  readControllerFields(s, false, c);
+  readControllerFields(s, "controller", c);
   const std::string variant = s.text("variant", "paper");
   try {
     setup.law = parseControlLaw(variant);
@@ -260,20 +254,13 @@ void parseObstacles(const YAML::Node& list, const std::string& file, core::Close
 
 void parseSimulation(Section s, Scenario& scenario) {
   core::ClosedLoopSetup& setup = scenario.setup;
-  setup.duration = positive(s, "duration", s.number("duration"));
-  setup.control_period = positive(s, "control_period", s.number("control_period", 1e-3));
-  setup.max_step = s.number("max_step", 0.0);
-  scenario.log_period = s.number("log_period", 0.0);
-  if (scenario.log_period < 0.0) fail(s.file(), s.node()["log_period"], s.key("log_period"), "must be >= 0");
-  if (setup.max_step < 0.0) fail(s.file(), s.node()["max_step"], s.key("max_step"), "must be >= 0 (0 = fixed step)");
+  readScenarioFields(s, "simulation", scenario);
   const double seed = s.number("seed", 1.0);
   if (!(seed >= 0.0 && seed <= 9.0e15 && seed == std::floor(seed)))
     fail(s.file(), s.node()["seed"], s.key("seed"), "must be a whole number >= 0");
   setup.sensor.seed = static_cast<std::uint64_t>(seed);
-  core::StepPolicy& policy = setup.step_policy;
-  policy.comfortable_ratio = s.number("comfortable_ratio", policy.comfortable_ratio);
-  policy.tight_ratio = s.number("tight_ratio", policy.tight_ratio);
-  if (!(policy.comfortable_ratio >= 0.0 && policy.comfortable_ratio < policy.tight_ratio))
+  const core::StepPolicy& policy = setup.step_policy;
+  if (!(policy.comfortable_ratio < policy.tight_ratio))
     fail(s.file(), s.node()["comfortable_ratio"], s.key("comfortable_ratio"), "must be >= 0 and < tight_ratio");
   if (s.has("integrator")) {
     try {
@@ -284,14 +271,12 @@ void parseSimulation(Section s, Scenario& scenario) {
   } else {
     s.optional("integrator");
   }
-  scenario.name = s.text("name", scenario.name);
   s.finish();
 }
 
-void parseTarget(Section s, core::ClosedLoopSetup& setup) {
-  setup.sample_period = s.number("sample_period", 0.0);
-  setup.sensor.noise_std = s.number("noise_std", 0.0);
-  setup.sensor.delay = s.number("delay", 0.0);
+void parseTarget(Section s, Scenario& scenario) {
+  core::ClosedLoopSetup& setup = scenario.setup;
+  readScenarioFields(s, "target", scenario);
   const YAML::Node jumps = s.optional("jumps");
   if (jumps.IsDefined() && !jumps.IsNull()) {
     if (!jumps.IsSequence()) fail(s.file(), jumps, s.key("jumps"), "expected a list of {t, offset}, got " + describe(jumps));
@@ -305,14 +290,10 @@ void parseTarget(Section s, core::ClosedLoopSetup& setup) {
     }
   }
   s.finish();
-  const std::string err = setup.sensor.validate();
-  if (!err.empty()) fail(s.file(), s.node(), s.key(err.substr(0, err.find(' '))), err);
-  if (setup.sample_period < 0.0) fail(s.file(), s.node()["sample_period"], s.key("sample_period"), "must be >= 0");
 }
 
-void parseLocalization(Section s, core::ClosedLoopSetup& setup) {
-  setup.pose_sensor.sample_period = nonNegative(s, "sample_period", s.number("sample_period", 0.0));
-  setup.pose_sensor.delay = nonNegative(s, "delay", s.number("delay", 0.0));
+void parseLocalization(Section s, Scenario& scenario) {
+  readScenarioFields(s, "localization", scenario);
   s.finish();
 }
 
@@ -332,51 +313,6 @@ std::unique_ptr<core::Reference> Scenario::makeReference() const {
   return std::make_unique<core::SplineReference>(r.waypoints, r.duration);
 }
 
-namespace {
-
-// The YAML names of an enumeration, in the order the messages list them.
-template <typename E>
-struct Named {
-  const char* name;
-  E value;
-};
-
-constexpr Named<core::ControlLaw> kLaws[] = {
-    {"paper", core::ControlLaw::kPaper}, {"fixed_rho", core::ControlLaw::kFixedRho},
-    {"proportional", core::ControlLaw::kProportional}};
-constexpr Named<core::VelocitySource> kSources[] = {
-    {"paper", core::VelocitySource::kPaperEstimator}, {"finite_difference", core::VelocitySource::kFiniteDifference},
-    {"kalman", core::VelocitySource::kKalman}};
-constexpr Named<core::Integrator> kIntegrators[] = {
-    {"explicit", core::Integrator::kExplicit}, {"band_implicit", core::Integrator::kBandImplicit},
-    {"second_order", core::Integrator::kSecondOrder}};
-
-// Throws std::invalid_argument("unknown WHAT 'name' (choice, choice, ...)").
-template <typename E, size_t N>
-E byName(const Named<E> (&table)[N], const std::string& name, const std::string& what) {
-  std::string choices;
-  for (const Named<E>& n : table) {
-    if (name == n.name) return n.value;
-    choices += (choices.empty() ? "" : ", ") + std::string(n.name);
-  }
-  throw std::invalid_argument("unknown " + what + " '" + name + "' (" + choices + ")");
-}
-
-template <typename E, size_t N>
-std::string nameOf(const Named<E> (&table)[N], E value) {
-  for (const Named<E>& n : table)
-    if (n.value == value) return n.name;
-  return "?";
-}
-
-}  // namespace
-
-core::ControlLaw parseControlLaw(const std::string& name) { return byName(kLaws, name, "controller variant"); }
-core::VelocitySource parseVelocitySource(const std::string& name) { return byName(kSources, name, "estimator"); }
-core::Integrator parseIntegrator(const std::string& name) { return byName(kIntegrators, name, "integrator"); }
-std::string toString(core::ControlLaw law) { return nameOf(kLaws, law); }
-std::string toString(core::VelocitySource source) { return nameOf(kSources, source); }
-std::string toString(core::Integrator integrator) { return nameOf(kIntegrators, integrator); }
 
 void checkScenario(const Scenario& scenario) {
   const core::ClosedLoopSetup& setup = scenario.setup;
@@ -385,8 +321,7 @@ void checkScenario(const Scenario& scenario) {
   const std::string controller = setup.controller.validate();
   if (!controller.empty()) {
     const std::string key = controller.substr(0, controller.find(':'));
-    throw ScenarioError(scenario.file + ": " + (inRobotSection(key) ? "robot." : "controller.") + scenarioKey(key) +
-                        controller.substr(key.size()));
+    throw ScenarioError(scenario.file + ": " + scenarioPath(key) + controller.substr(key.size()));
   }
   const std::string err = core::validateSetup(setup);
   if (!err.empty()) throw ScenarioError(scenario.file + ": " + err);
@@ -403,30 +338,6 @@ void checkScenario(const Scenario& scenario) {
   }
 }
 
-namespace {
-
-// `section.key=value` on the YAML tree: the value is read as YAML (a number, a word, a list),
-// the parser then checks it like a value in the file.
-void applyOverride(YAML::Node& root, const std::string& file, const std::string& assignment) {
-  const size_t eq = assignment.find('=');
-  const std::string path = assignment.substr(0, eq);
-  const size_t dot = path.find('.');
-  if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == path.size())
-    throw ScenarioError("--set " + assignment + ": expected section.key=value");
-  const std::string section = path.substr(0, dot), key = path.substr(dot + 1);
-  YAML::Node value;
-  try {
-    value = YAML::Load(assignment.substr(eq + 1));
-  } catch (const YAML::Exception& e) {
-    throw ScenarioError("--set " + path + ": not a YAML value: " + e.msg);
-  }
-  if (root[section].IsDefined() && !root[section].IsNull() && !root[section].IsMap())
-    throw ScenarioError(file + ": --set " + path + ": " + section + " is not a mapping");
-  root[section][key] = value;
-}
-
-}  // namespace
-
 Scenario parseScenario(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
   YAML::Node root;
   try {
@@ -434,7 +345,7 @@ Scenario parseScenario(const std::string& text, const std::string& file, const s
   } catch (const YAML::Exception& e) {
     throw ScenarioError(file + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
-  for (const std::string& o : overrides) applyOverride(root, file, o);
+  for (const std::string& o : overrides) applyOverride(&root, file, o);
   Scenario scenario;
   scenario.file = file;
   scenario.name = stem(file);
@@ -446,9 +357,9 @@ Scenario parseScenario(const std::string& text, const std::string& file, const s
   if (!obstacles.IsDefined()) fail(file, root, "obstacles", "missing (required; [] for none)");
   if (!obstacles.IsNull()) parseObstacles(obstacles, file, scenario.setup);
   parseSimulation(Section(top.required("simulation"), "simulation", file), scenario);
-  if (top.has("target")) parseTarget(Section(top.optional("target"), "target", file), scenario.setup);
+  if (top.has("target")) parseTarget(Section(top.optional("target"), "target", file), scenario);
   else top.optional("target");
-  if (top.has("localization")) parseLocalization(Section(top.optional("localization"), "localization", file), scenario.setup);
+  if (top.has("localization")) parseLocalization(Section(top.optional("localization"), "localization", file), scenario);
   else top.optional("localization");
   top.finish();
   checkScenario(scenario);

@@ -126,7 +126,12 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000000));
   app.add_option("--benchmark-json", benchmark_json, "with --benchmark: also write its figures to this JSON file");
   app.add_flag("--no-plot", no_plot, "write CSV and JSON only");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;  // --help: 0; a bad command line: 2, as a bad scenario
+  }
   if (out.empty() && benchmark == 0) {
     std::fprintf(stderr, "amigobot_sim: --out DIR is required (or --benchmark N)\n%s", app.help().c_str());
     return 2;

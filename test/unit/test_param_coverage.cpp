@@ -1,8 +1,9 @@
-// The field tables are the one description of the tracking nodelet's parameters; this test
-// fails when the files that document them drift: every field in config/tracking.yaml or
+// The field tables are the one description of the nodelets' parameters; this test fails
+// when the files that document them drift: every tracking field in config/tracking.yaml or
 // config/controller_experiment.yaml (with a comment on its line; "(reconfigurable)" exactly
-// for the live ones), in the README's parameter tables, and in cfg/Tracking.cfg exactly when
-// live -- and the other way, no cfg entry or README row of the nodelet's table naming no field.
+// for the live ones), every driver field in config/driver.yaml, each in the README's
+// parameter tables, and in cfg/Tracking.cfg exactly when live -- and the other way, no cfg
+// entry or README row of the two nodelets' tables naming no field.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -14,6 +15,7 @@
 #include "amigobot_tracking/core/controller_config.h"
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/ros/driver.h"
 #include "amigobot_tracking/ros/tracking_params.h"
 
 using namespace amigobot_tracking;
@@ -38,6 +40,15 @@ std::map<std::string, Row> nodeletFields() {
   add(&rows, "obstacle_tracker/", core::obstacleTrackerFields());
   return rows;
 }
+
+std::map<std::string, Row> driverRows() {
+  std::map<std::string, Row> rows;
+  add(&rows, "", ros_layer::driverFields());
+  return rows;
+}
+
+const char kTrackingHeader[] = "| Parameter | Type | Unit | Default | Meaning |";
+const char kDriverHeader[] = "| Parameter | Type | Default | Meaning |";
 
 std::vector<std::string> lines(const std::string& relative) {
   std::ifstream in(std::string(AMIGOBOT_SOURCE_DIR) + "/" + relative);
@@ -81,16 +92,16 @@ std::vector<std::string> expand(const std::string& name) {
   return out;
 }
 
-// Names in backticks in the first cell of the README's table rows; `only_nodelet`: the rows
-// of the tracking nodelet's parameter table alone.
-std::set<std::string> readmeNames(bool only_nodelet) {
+// Names in backticks in the first cell of the README's table rows; with a `header`, the rows
+// of the table under that header alone.
+std::set<std::string> readmeNames(const std::string& header = "") {
   static const std::regex code("`([^`]+)`");
   std::set<std::string> names;
   bool in_nodelet = false;
   for (const std::string& line : lines("README.md")) {
-    if (line.rfind("| Parameter | Type | Unit | Default | Meaning |", 0) == 0) in_nodelet = true;
+    if (!header.empty() && line.rfind(header, 0) == 0) in_nodelet = true;
     else if (line.rfind("|", 0) != 0) in_nodelet = false;
-    if (line.rfind("|", 0) != 0 || (only_nodelet && !in_nodelet)) continue;
+    if (line.rfind("|", 0) != 0 || (!header.empty() && !in_nodelet)) continue;
     const std::string cell = line.substr(1, line.find('|', 1) - 1);
     for (std::sregex_iterator it(cell.begin(), cell.end(), code), end; it != end; ++it)
       for (const std::string& n : expand((*it)[1].str())) names.insert(n);
@@ -115,13 +126,26 @@ TEST(ParamCoverage, EveryFieldIsInTheYamlWithAComment) {
   }
 }
 
+TEST(ParamCoverage, EveryDriverFieldIsInItsYamlWithAComment) {
+  const std::map<std::string, std::string> keys = yamlKeys("config/driver.yaml");
+  for (const auto& [key, row] : driverRows()) {
+    const auto it = keys.find(key);
+    ASSERT_NE(it, keys.end()) << key << " is not in config/driver.yaml";
+    EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
+  }
+  for (const auto& [key, comment] : keys) EXPECT_TRUE(driverRows().count(key)) << "config/driver.yaml: " << key;
+}
+
 TEST(ParamCoverage, EveryFieldIsInTheReadmeAndEveryRowNamesOne) {
-  const std::set<std::string> all = readmeNames(false);
-  const std::map<std::string, Row> fields = nodeletFields();
+  const std::set<std::string> all = readmeNames();
+  const std::map<std::string, Row> fields = nodeletFields(), driver = driverRows();
   for (const auto& [key, row] : fields) EXPECT_TRUE(all.count(key)) << key << " is in no README parameter table";
+  for (const auto& [key, row] : driver) EXPECT_TRUE(all.count(key)) << key << " is in no README parameter table";
   const std::set<std::string> not_in_tables = {"virtual_obstacles"};  // a list (tracking_params.h)
-  for (const std::string& name : readmeNames(true))
+  for (const std::string& name : readmeNames(kTrackingHeader))
     EXPECT_TRUE(fields.count(name) || not_in_tables.count(name)) << "README row `" << name << "` names no field";
+  for (const std::string& name : readmeNames(kDriverHeader))
+    EXPECT_TRUE(driver.count(name)) << "README driver row `" << name << "` names no field";
 }
 
 TEST(ParamCoverage, TheCfgHasExactlyTheLiveFields) {

@@ -29,6 +29,7 @@ struct Bounds {
   std::vector<std::string> choices;
 };
 
+inline Bounds anyValue() { return Bounds(); }  // finite, any number
 inline Bounds interval(double min, bool min_open, double max, bool max_open) {
   Bounds b;
   b.min = min;

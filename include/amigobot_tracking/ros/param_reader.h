@@ -21,10 +21,10 @@ std::string readParamValue(const ros::NodeHandle& pnh, const std::string& key, c
 void logParamValue(const ros::NodeHandle& pnh, const std::string& key, const core::FieldValue& value,
                    const std::string& unit, bool is_default);
 
-// Reads every row of `table` under ~prefix ("", or "scan/") over *config, then config->validate()
-// for the rules across fields. Returns "" or "~prefix/key: reason".
+// Reads every row of `table` under ~prefix ("", or "scan/") over *config, each checked against
+// its bounds. Returns "" or "~prefix/key: reason".
 template <class C>
-std::string readParams(const ros::NodeHandle& pnh, const core::FieldTable<C>& table, C* config,
+std::string readFields(const ros::NodeHandle& pnh, const core::FieldTable<C>& table, C* config,
                        const std::string& prefix = "") {
   for (const core::Field<C>& f : table) {
     const std::string key = prefix + f.key;
@@ -39,6 +39,15 @@ std::string readParams(const ros::NodeHandle& pnh, const core::FieldTable<C>& ta
     }
     logParamValue(pnh, key, f.get(*config), f.unit, !present);
   }
+  return "";
+}
+
+// readFields, then config->validate() for the rules across fields.
+template <class C>
+std::string readParams(const ros::NodeHandle& pnh, const core::FieldTable<C>& table, C* config,
+                       const std::string& prefix = "") {
+  const std::string error = readFields(pnh, table, config, prefix);
+  if (!error.empty()) return error;
   const std::string invalid = config->validate();
   return invalid.empty() ? "" : "~" + prefix + invalid;
 }
