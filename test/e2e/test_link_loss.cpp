@@ -21,7 +21,6 @@ using e2e::EmulatorStatus;
 using e2e::kPoseLagTolerance;
 using e2e::kRhoInf;
 using e2e::requiredParam;
-using e2e::Step;
 using e2e::StepRecorder;
 using e2e::waitForSteps;
 
@@ -59,7 +58,7 @@ TEST(E2E, LinkLossReconnectsAndTracksAgain) {
   // Tracking again: 20 s after the reconnection the robot is back on the circle.
   ASSERT_TRUE(waitForSteps(recorder, steps_at_up + 25.0, 120.0));
   double final_max = 0.0;
-  for (const Step& st : recorder.steps()) {
+  for (const e2e::Step& st : recorder.steps()) {
     if (st.t >= steps_at_up + 20.0) final_max = std::max(final_max, st.e_true);
   }
   RecordProperty("final_error_max_mm", static_cast<int>(final_max * 1e3));
