@@ -9,6 +9,7 @@ amigobot_add_library(amigobot_tracking_aria
   src/aria/wheel_command.cpp
   src/aria/transport.cpp
   src/aria/client.cpp
+  src/aria/client_handshake.cpp
   src/aria/client_config.cpp
   src/aria/emulator.cpp
   src/aria/emulator_options.cpp

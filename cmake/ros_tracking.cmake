@@ -31,7 +31,8 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(test_${unit} amigobot_tracking_ros)
   endforeach()
   # The tracking nodelet in a real nodelet manager with a scripted world.
-  amigobot_add_rostest_gtest(test_tracking_nodelet test/rostest/tracking_nodelet.test test/rostest/test_tracking_nodelet.cpp)
+  amigobot_add_rostest_gtest(test_tracking_nodelet test/rostest/tracking_nodelet.test test/rostest/test_tracking_nodelet.cpp
+                             test/rostest/test_tracking_param_loading.cpp)
   target_link_libraries(test_tracking_nodelet amigobot_tracking_ros)
   add_dependencies(test_tracking_nodelet amigobot_tracking_ros)
   amigobot_add_rostest_gtest(test_tracking_bad_param test/rostest/tracking_bad_param.test test/rostest/test_tracking_bad_param.cpp)

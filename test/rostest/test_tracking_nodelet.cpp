@@ -1,194 +1,27 @@
-// rostest: the tracking nodelet in a nodelet manager (tracking_nodelet.test). This process
-// plays the world: it integrates cmd_vel into the robot pose (tf map -> base_link), moves a
-// target along a circle (tf map -> target), mounts a laser (static base_link -> laser) and
-// publishes its scans. Checks: zero while disabled, inside the diamond when enabled, one
-// zero on disable, zero when the target tf stops and a gentle restart when it comes back,
-// virtual obstacle topic/services, reconfigure capping, markers, diagnostics, and the
-// parameter loaders' refusals.
+// rostest: the tracking nodelet in a nodelet manager (tracking_nodelet.test), in the
+// scripted world of tracking_world.h. Checks: zero while disabled, inside the diamond when
+// enabled, one zero on disable, zero when the target tf stops and a gentle restart when it
+// comes back, virtual obstacle topic/services, reconfigure capping, markers, diagnostics.
+// The parameter loaders' refusals: test_tracking_param_loading.cpp (same executable).
 #include <gtest/gtest.h>
 
-#include <atomic>
+#include <algorithm>
 #include <cmath>
-#include <functional>
-#include <limits>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <geometry_msgs/PointStamped.h>
-#include <geometry_msgs/Twist.h>
-#include <ros/ros.h>
-#include <sensor_msgs/LaserScan.h>
-#include <std_srvs/Trigger.h>
-#include <tf2_ros/static_transform_broadcaster.h>
-#include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "amigobot_tracking/RemoveVirtualObstacle.h"
-#include "amigobot_tracking/TrackingState.h"
-#include "amigobot_tracking/VirtualObstacle.h"
-#include "amigobot_tracking/VirtualObstacleArray.h"
-#include "amigobot_tracking/core/unicycle.h"
-#include "amigobot_tracking/ros/conversions.h"
-#include "amigobot_tracking/ros/tracking_params.h"
+#include "tracking_world.h"
 
 using namespace amigobot_tracking;
-using amigobot_tracking::ros_layer::toTransform;
-
-namespace {
-
-const double kTimeout = 30.0;  // [s] wall time for anything to happen on a loaded machine
-
-bool waitFor(const std::function<bool()>& condition, double seconds = kTimeout) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (ros::ok() && ros::WallTime::now() < end) {
-    if (condition()) return true;
-    ros::WallDuration(0.01).sleep();
-  }
-  return condition();
-}
-
-// The scripted world around the nodelet.
-class World {
- public:
-  World() : pnh_("~") {
-    cmd_sub_ = nh_.subscribe("cmd_vel", 100, &World::onCmd, this);
-    state_sub_ = nh_.subscribe("tracking/state", 100, &World::onState, this);
-    virtual_sub_ = nh_.subscribe("tracking/virtual_obstacles", 10, &World::onVirtual, this);
-    scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 5);
-    virtual_pub_ = nh_.advertise<VirtualObstacle>("tracking/virtual_obstacle", 10, true);
-    static_tf_.sendTransform(toTransform("base_link", "laser", {0.1, 0.0, 0.0}, ros::Time::now()));
-    robot_timer_ = nh_.createWallTimer(ros::WallDuration(0.02), &World::onRobotTick, this);
-    target_timer_ = nh_.createWallTimer(ros::WallDuration(0.05), &World::onTargetTick, this);
-    scan_timer_ = nh_.createWallTimer(ros::WallDuration(0.1), &World::onScanTick, this);
-  }
-
-  std::atomic<bool> target_on{true};
-  std::atomic<bool> scan_broken{false};  // publish scans with angle_increment 0
-
-  struct Cmd {
-    ros::WallTime received;
-    geometry_msgs::Twist twist;
-  };
-  std::vector<Cmd> commandsSince(const ros::WallTime& since) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<Cmd> out;
-    for (const Cmd& c : commands_) {
-      if (c.received >= since) out.push_back(c);
-    }
-    return out;
-  }
-  std::vector<TrackingState> statesSince(const ros::Time& since) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<TrackingState> out;
-    for (const TrackingState& s : states_) {
-      if (s.header.stamp >= since) out.push_back(s);
-    }
-    return out;
-  }
-  VirtualObstacleArray virtualObstacles() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return virtual_;
-  }
-  void publishVirtual(const VirtualObstacle& o) { virtual_pub_.publish(o); }
-
- private:
-  void onCmd(const geometry_msgs::Twist::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    commands_.push_back({ros::WallTime::now(), *msg});
-    u_ = {msg->linear.x, msg->angular.z};
-  }
-  void onState(const TrackingState::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    states_.push_back(*msg);
-  }
-  void onVirtual(const VirtualObstacleArray::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    virtual_ = *msg;
-  }
-  // The robot follows the last command exactly (an ideal unicycle).
-  void onRobotTick(const ros::WallTimerEvent&) {
-    core::Pose2 pose;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      pose_ = core::integrateUnicycle(pose_, u_, 0.02);
-      pose = pose_;
-    }
-    tf_.sendTransform(toTransform("map", "base_link", pose, ros::Time::now()));
-  }
-  // Target on a circle of radius 1 m around the origin, 60 s per turn (0.1 m/s).
-  void onTargetTick(const ros::WallTimerEvent&) {
-    if (!target_on) return;
-    const double phase = 2.0 * M_PI * (ros::WallTime::now() - start_).toSec() / 60.0;
-    const core::Pose2 target{std::cos(phase), std::sin(phase), phase + M_PI / 2};
-    tf_.sendTransform(toTransform("map", "target", target, ros::Time::now()));
-  }
-  // 360 beams: a pillar 2 m to the laser's left, REP 117 specials, +inf elsewhere.
-  void onScanTick(const ros::WallTimerEvent&) {
-    sensor_msgs::LaserScan scan;
-    scan.header.stamp = ros::Time::now();
-    scan.header.frame_id = "laser";
-    scan.angle_min = -M_PI;
-    scan.angle_increment = scan_broken ? 0.0f : static_cast<float>(2.0 * M_PI / 360);
-    scan.angle_max = scan.angle_min + 359 * scan.angle_increment;
-    scan.range_min = 0.05f;
-    scan.range_max = 10.0f;
-    for (int i = 0; i < 360; ++i) {
-      const double a = scan.angle_min + i * scan.angle_increment;
-      float r = std::numeric_limits<float>::infinity();
-      if (std::abs(a - M_PI / 2) < 0.05) r = 2.0f;
-      if (i % 17 == 0) r = std::numeric_limits<float>::quiet_NaN();
-      if (i % 23 == 0) r = -std::numeric_limits<float>::infinity();
-      scan.ranges.push_back(r);
-    }
-    scan_pub_.publish(scan);
-  }
-
-  ros::NodeHandle nh_, pnh_;
-  ros::Subscriber cmd_sub_, state_sub_, virtual_sub_;
-  ros::Publisher scan_pub_, virtual_pub_;
-  tf2_ros::TransformBroadcaster tf_;
-  tf2_ros::StaticTransformBroadcaster static_tf_;
-  ros::WallTimer robot_timer_, target_timer_, scan_timer_;
-  ros::WallTime start_ = ros::WallTime::now();
-  std::mutex mutex_;
-  core::Pose2 pose_;
-  core::Twist2 u_;
-  std::vector<Cmd> commands_;
-  std::vector<TrackingState> states_;
-  VirtualObstacleArray virtual_;
-};
-
-World* world = nullptr;
-
-// Calls an idempotent Trigger service. A call can fail in transport on a loaded machine
-// even though the server ran it (seen once in 3 runs under 2 busy loops): retry twice.
-bool trigger(const std::string& service) {
-  if (!ros::service::waitForService(service, ros::Duration(kTimeout))) return false;
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    std_srvs::Trigger srv;
-    if (ros::service::call(service, srv)) return srv.response.success;
-    ROS_WARN("call to %s failed in transport, retrying", service.c_str());
-    ros::WallDuration(0.2).sleep();
-  }
-  return false;
-}
-
-bool isZero(const geometry_msgs::Twist& t) { return t.linear.x == 0.0 && t.angular.z == 0.0; }
-
-double diamondNorm(const geometry_msgs::Twist& t, double v_max, double w_max) {
-  return std::abs(t.linear.x) / v_max + std::abs(t.angular.z) / w_max;
-}
-
-double param(const std::string& name) {
-  double value = std::numeric_limits<double>::quiet_NaN();
-  ros::param::get(name, value);
-  return value;
-}
-
-}  // namespace
+using namespace tracking_world;
 
 // The tests share one nodelet and run in this order.
 
@@ -426,102 +259,6 @@ TEST(TrackingNodelet, MarkersAndDiagnostics) {
                           "rho [m]", "min clearance [m]"}) {
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
   }
-}
-
-// The loaders refuse bad parameters with a message naming them (run here: they need a master).
-TEST(TrackingParams, LoadersNameTheBadParameter) {
-  ros::NodeHandle pnh("~bad");
-  ros_layer::TrackingNodeConfig node;
-  EXPECT_EQ(ros_layer::loadNodeConfig(pnh, &node), "");
-  pnh.setParam("control_rate", -5.0);
-  EXPECT_NE(ros_layer::loadNodeConfig(pnh, &node).find("control_rate"), std::string::npos);
-  pnh.deleteParam("control_rate");
-  pnh.setParam("autostart", "yes");  // wrong type must not fall back to a default
-  node = ros_layer::TrackingNodeConfig();
-  EXPECT_NE(ros_layer::loadNodeConfig(pnh, &node).find("autostart"), std::string::npos);
-  pnh.deleteParam("autostart");
-
-  core::ControllerConfig controller;
-  pnh.setParam("v_max", 0.9);  // above robot_v_max
-  node = ros_layer::TrackingNodeConfig();
-  node.robot_v_max = 0.5;
-  EXPECT_NE(ros_layer::loadControllerConfig(pnh, node, &controller).find("v_max"), std::string::npos);
-  pnh.setParam("v_max", 0.3);
-  pnh.setParam("estimator/rho_o", -1.0);
-  controller = core::ControllerConfig();
-  EXPECT_NE(ros_layer::loadControllerConfig(pnh, node, &controller).find("rho_o"), std::string::npos);
-  pnh.deleteParam("estimator");
-
-  core::ScanObstacleConfig scan;
-  pnh.setParam("scan/max_disk_radius", 0.0);
-  EXPECT_NE(ros_layer::loadScanObstacleConfig(pnh, &scan).find("max_disk_radius"), std::string::npos);
-
-  // Geometry from a URDF found by searching up from ~ (here ~bad/robot_description);
-  // parameters override it.
-  pnh.setParam("robot_description", std::string(R"(<robot name="r">
-    <link name="base_link"><collision><geometry><box size="0.32 0.24 0.2"/></geometry></collision></link>
-    <link name="control_point"/>
-    <joint name="cp" type="fixed"><parent link="base_link"/><child link="control_point"/>
-      <origin xyz="0.25 0 0"/></joint></robot>)"));
-  controller = core::ControllerConfig();
-  ASSERT_EQ(ros_layer::loadControllerConfig(pnh, node, &controller), "");
-  EXPECT_DOUBLE_EQ(controller.robot_radius, 0.2);  // half diagonal of 0.32 x 0.24
-  EXPECT_DOUBLE_EQ(controller.offset, 0.25);
-  pnh.setParam("offset", 0.35);
-  ASSERT_EQ(ros_layer::loadControllerConfig(pnh, node, &controller), "");
-  EXPECT_DOUBLE_EQ(controller.offset, 0.35);
-  pnh.setParam("robot_description", std::string("<robot"));
-  EXPECT_NE(ros_layer::loadControllerConfig(pnh, node, &controller).find("robot_description"), std::string::npos);
-  pnh.deleteParam("robot_description");
-
-  std::vector<core::VirtualObstacle> list;
-  XmlRpc::XmlRpcValue entries;
-  entries[0]["id"] = "a";
-  entries[0]["center"][0] = 1.0;
-  entries[0]["center"][1] = 2.0;
-  entries[0]["radius"] = 0.2;
-  entries[1]["id"] = "b";
-  entries[1]["center"][0] = 1.0;  // missing y
-  entries[1]["radius"] = 0.2;
-  pnh.setParam("virtual_obstacles", entries);
-  const std::string error = ros_layer::loadVirtualObstacles(pnh, &list);
-  EXPECT_NE(error.find("entry 1"), std::string::npos) << error;
-  EXPECT_NE(error.find("center"), std::string::npos) << error;
-}
-
-// config/tracking.yaml and config/virtual_obstacles.yaml load without error (YAML 1.1 has
-// traps: 1.0e9 is a string) and give what they say.
-TEST(TrackingParams, ShippedConfigLoads) {
-  ros::NodeHandle shipped("/shipped");
-  ros_layer::TrackingNodeConfig node;
-  core::ControllerConfig controller;
-  core::ScanObstacleConfig scan;
-  std::vector<core::VirtualObstacle> list;
-  ASSERT_TRUE(shipped.hasParam("control_rate"));
-  EXPECT_EQ(ros_layer::loadNodeConfig(shipped, &node), "");
-  EXPECT_EQ(ros_layer::loadControllerConfig(shipped, node, &controller), "");
-  EXPECT_EQ(ros_layer::loadScanObstacleConfig(shipped, &scan), "");
-  EXPECT_EQ(ros_layer::loadVirtualObstacles(shipped, &list), "");
-  EXPECT_FALSE(node.autostart);
-  EXPECT_GT(scan.max_range, 1e6);
-  ASSERT_EQ(list.size(), 1u);
-  EXPECT_EQ(list[0].id, "box");
-  EXPECT_DOUBLE_EQ(controller.k_d, 0.15);  // controller_experiment.yaml: Section 5.3
-  EXPECT_DOUBLE_EQ(controller.v_max, 0.3);
-}
-
-// config/controller_sim.yaml (Table 1) loads over tracking.yaml and gives Table 1's values.
-TEST(TrackingParams, ShippedSimControllerLoads) {
-  ros::NodeHandle shipped("/shipped_sim");
-  ros_layer::TrackingNodeConfig node;
-  core::ControllerConfig controller;
-  ASSERT_TRUE(shipped.hasParam("k_d"));
-  EXPECT_EQ(ros_layer::loadNodeConfig(shipped, &node), "");
-  EXPECT_EQ(ros_layer::loadControllerConfig(shipped, node, &controller), "");
-  EXPECT_DOUBLE_EQ(controller.k_d, 3.0);
-  EXPECT_DOUBLE_EQ(controller.v_max, 5.0);
-  EXPECT_DOUBLE_EQ(controller.delta, 0.016);
-  EXPECT_DOUBLE_EQ(controller.rho_0, 1.84);
 }
 
 int main(int argc, char** argv) {

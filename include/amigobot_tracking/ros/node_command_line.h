@@ -8,6 +8,7 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <ros/console.h>
 #include <ros/init.h>
 
 namespace amigobot_tracking {
@@ -29,6 +30,14 @@ inline void initNode(int& argc, char** argv, const std::string& node_name, const
   } catch (const CLI::ParseError& e) {
     std::exit(app.exit(e) == 0 ? 0 : 2);
   }
+}
+
+// A program's parameter loader returned `error` ("" when all is well): on an error it is
+// logged as FATAL under the program's name, and main() should return 1.
+inline bool configLoaded(const std::string& program, const std::string& error) {
+  if (error.empty()) return true;
+  ROS_FATAL_STREAM(program << ": " << error);
+  return false;
 }
 
 }  // namespace ros_layer

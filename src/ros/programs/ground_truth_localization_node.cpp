@@ -27,10 +27,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh, pnh("~");
   ros_layer::GroundTruthConfig config;
   const std::string error = ros_layer::loadGroundTruthConfig(pnh, &config);
-  if (!error.empty()) {
-    ROS_FATAL_STREAM("ground_truth_localization: " << error);
-    return 1;
-  }
+  if (!ros_layer::configLoaded("ground_truth_localization", error)) return 1;
   tf2_ros::Buffer tf;
   tf2_ros::TransformListener listener(tf);
   tf2_ros::TransformBroadcaster broadcaster;

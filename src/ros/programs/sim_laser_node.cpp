@@ -24,11 +24,7 @@ int main(int argc, char** argv) {
   ros_layer::initNode(argc, argv, "sim_laser", kHelp);
   ros::NodeHandle nh, pnh("~");
   ros_layer::SimLaserConfig config;
-  const std::string error = ros_layer::loadSimLaserConfig(pnh, &config);
-  if (!error.empty()) {
-    ROS_FATAL_STREAM("sim_laser: " << error);
-    return 1;
-  }
+  if (!ros_layer::configLoaded("sim_laser", ros_layer::loadSimLaserConfig(pnh, &config))) return 1;
   world::World room;
   try {
     room = world::loadWorld(config.world_file);

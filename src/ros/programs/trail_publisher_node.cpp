@@ -20,10 +20,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh, pnh("~");
   ros_layer::TrailNodeConfig params;
   const std::string error = ros_layer::readParams(pnh, ros_layer::trailNodeFields(), &params);
-  if (!error.empty()) {
-    ROS_FATAL_STREAM("trail_publisher: " << error);
-    return 1;
-  }
+  if (!ros_layer::configLoaded("trail_publisher", error)) return 1;
   const std::string &frame = params.frame, &global_frame = params.global_frame;
   const ros_layer::TrailConfig& config = params.trail;
   const double rate = params.rate;
