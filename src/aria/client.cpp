@@ -13,9 +13,7 @@ namespace {
 
 constexpr int kPollMs = 20;
 constexpr double kInterByteTimeout = 0.1;  // [s] ARIA drops a partial packet after 100 ms
-constexpr double kDrainTime = 0.2;         // [s] input drained after opening the port
 constexpr double kEnableRetry = 1.0;       // [s] ENABLE re-sent while the SIP disagrees
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 double seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
@@ -146,7 +144,18 @@ bool AriaClient::sleepUnlessStopped(double s) {
   return !stop_requested_;
 }
 
-void AriaClient::send(const std::vector<std::uint8_t>& bytes) { transport_->write(bytes); }
+void AriaClient::send(const std::vector<std::uint8_t>& bytes) {
+  transport_->write(bytes);
+  std::lock_guard<std::mutex> lock(mutex_);
+  status_.bytes_sent += bytes.size();
+}
+
+void AriaClient::setLineBaud(int baud) {
+  transport_->setBaud(baud);
+  std::lock_guard<std::mutex> lock(mutex_);
+  parser_.reset();
+  status_.baud = transport_->baud();
+}
 
 void AriaClient::run() {
   double backoff = config_.reconnect_delay_min;
@@ -187,6 +196,7 @@ void AriaClient::pump(int timeout_ms) {
     last_rx_ = now;
     std::lock_guard<std::mutex> lock(mutex_);  // status() copies the parser's counters
     parser_.feed(buffer, n);
+    status_.bytes_received += n;
   } else if (parser_.hasPartial() && seconds(now - last_rx_) > kInterByteTimeout) {
     std::lock_guard<std::mutex> lock(mutex_);
     parser_.expirePartial();
@@ -210,83 +220,6 @@ bool AriaClient::receiveFor(double duration, const std::function<bool(const Pack
   return false;
 }
 
-std::optional<RobotIdentity> AriaClient::synchronise() {
-  const auto ignore = [](const Packet&) { return false; };
-  receiveFor(kDrainTime, ignore);  // stale bytes from an earlier session
-  int stage = 0;
-  for (int tries = 0; tries < config_.max_sync_tries && !stop_requested_; ++tries) {
-    send(syncPacket(stage));
-    std::optional<Packet> reply;
-    receiveFor(config_.sync_timeout, [&](const Packet& p) {
-      reply = p;
-      return true;
-    });
-    if (!reply) {
-      log(LogLevel::kDebug, "no reply to SYNC" + std::to_string(stage) + "; restarting at SYNC0");
-      stage = 0;
-    } else if (reply->type == stage && stage < 2) {
-      ++stage;
-    } else if (reply->type == kSync2 && stage == 2) {
-      std::string error;
-      std::optional<RobotIdentity> identity = decodeSync2(*reply, &error);
-      if (!identity) throw std::runtime_error(transport_->describe() + ": " + error);
-      return identity;
-    } else if (isSipType(reply->type)) {
-      // The robot is still open from an earlier session: close it, then start again.
-      log(LogLevel::kWarn, "robot still open from an earlier session: sending CLOSE and restarting the handshake");
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        ++status_.still_open_recoveries;
-      }
-      for (int i = 0; i < 3; ++i) {
-        send(commandPacket(Command::kClose, 1));
-        receiveFor(0.1, ignore);
-      }
-      receiveFor(0.3, ignore);
-      stage = 0;
-    } else {
-      log(LogLevel::kDebug, "unexpected packet type " + std::to_string(reply->type) + " during SYNC" +
-                                std::to_string(stage) + "; restarting at SYNC0");
-      stage = 0;
-    }
-  }
-  if (stop_requested_) return std::nullopt;
-  throw std::runtime_error(transport_->describe() + ": no SYNC0/1/2 handshake after " +
-                           std::to_string(config_.max_sync_tries) + " tries (robot off, wrong port or baud?)");
-}
-
-std::optional<ConfigPac> AriaClient::openRobot() {
-  send(config_.open_with_argument ? commandPacket(Command::kOpen, 1) : commandPacket(Command::kOpen));
-  send(commandPacket(Command::kSonar, config_.sonar ? 1 : 0));
-  std::optional<ConfigPac> config;
-  bool have_sip = false;
-  const auto handle = [&](const Packet& p) {
-    if (p.type == kConfigPacType) {
-      std::string error;
-      config = decodeConfigPac(p, &error);
-      if (!config) log(LogLevel::kWarn, error);
-    }
-    have_sip = have_sip || isSipType(p.type);
-    return false;
-  };
-  // CONFIGpac, re-requested every 200 ms as ARIA does.
-  for (double waited = 0.0; !config && waited < config_.config_timeout && !stop_requested_; waited += 0.2) {
-    send(commandPacket(Command::kConfig, 1));
-    receiveFor(0.2, [&](const Packet& p) { return handle(p) || config.has_value(); });
-  }
-  if (!config && config_.config_timeout > 0.0) {
-    log(LogLevel::kWarn, "no CONFIGpac; using the parameter file's limits");
-  }
-  const auto sendInt = [&](Command c, double value) { send(commandPacket(c, static_cast<int>(std::lround(value)))); };
-  if (config_.trans_accel > 0) sendInt(Command::kSetA, config_.trans_accel * 1e3);
-  if (config_.trans_decel > 0) sendInt(Command::kSetA, -config_.trans_decel * 1e3);
-  if (config_.rot_accel > 0) sendInt(Command::kSetRA, config_.rot_accel * kRadToDeg);
-  if (config_.rot_decel > 0) sendInt(Command::kSetRA, -config_.rot_decel * kRadToDeg);
-  if (!have_sip) receiveFor(config_.link_timeout, [&](const Packet& p) { return handle(p) || have_sip; });
-  if (!have_sip && !stop_requested_) throw std::runtime_error(transport_->describe() + ": robot sent no SIP after OPEN");
-  return config;
-}
-
 bool AriaClient::connect() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -295,6 +228,10 @@ bool AriaClient::connect() {
   transport_ = makeTransport(config_.port, config_.baud);
   log(LogLevel::kInfo, "connecting to the robot over " + transport_->describe());
   transport_->open();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_.baud = transport_->baud();
+  }
   const std::optional<RobotIdentity> identity = synchronise();
   if (!identity) return false;  // stop requested
   if (identity->subclass != config_.robot.model) {

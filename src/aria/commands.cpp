@@ -98,5 +98,12 @@ std::string commandName(std::uint8_t command) {
   return "command " + std::to_string(command);
 }
 
+int hostBaudIndex(int baud) {
+  for (int i = 0; i < 5; ++i) {
+    if (kHostBauds[i] == baud) return i;
+  }
+  return -1;
+}
+
 }  // namespace aria
 }  // namespace amigobot_tracking

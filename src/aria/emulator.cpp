@@ -46,6 +46,7 @@ std::string EmulatorOptions::validate() const {
     }
   }
   if (name.empty() || name.size() > 60) return "name: must be 1..60 characters";
+  if (left_open_at_baud < 0) return "left_open_at_baud: must be 0 (closed) or a positive baud";
   return {};
 }
 
@@ -55,11 +56,16 @@ RobotEmulator::RobotEmulator(EmulatorOptions options)
   if (!error.empty()) throw std::invalid_argument("emulator: " + error);
   close();
   counters_.closes = 0;
+  if (options_.left_open_at_baud > 0) {
+    open_ = true;  // SIPs from the start; the watchdog has already stopped the wheels
+    baud_ = options_.left_open_at_baud;
+  }
 }
 
 void RobotEmulator::close() {
   // CLOSE reverts the settings to the FLASH defaults and stops everything.
   open_ = false;
+  baud_ = kFlashBaud;
   sync_stage_ = 0;
   motors_ = false;
   sonar_on_ = true;
@@ -188,6 +194,14 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
     case Command::kSonar:
       sonar_on_ = value != 0;
       break;
+    case Command::kHostBaud:
+      // The reply to this command, if any, still goes out at the old rate: none is sent.
+      if (options_.simulator_mode || value < 0 || value > 4) {
+        ++counters_.unknown_commands;
+      } else {
+        baud_ = kHostBauds[value];
+      }
+      break;
     case Command::kConfig: {
       ConfigPac c;
       c.robot_type = "Pioneer";
@@ -206,7 +220,8 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       c.trans_acc = static_cast<std::uint16_t>(std::lround(accel_ * 1e3));
       c.trans_decel = static_cast<std::uint16_t>(std::lround(decel_ * 1e3));
       c.front_sonar = 1;
-      c.auto_baud = 0;
+      c.host_baud = static_cast<std::uint8_t>(std::max(0, hostBaudIndex(baud_)));
+      c.auto_baud = options_.simulator_mode ? 0 : 2;  // 2: the firmware can switch (HOSTBAUD)
       c.firmware_version = "amigobot_emulator";
       return encodeConfigPac(c);
     }

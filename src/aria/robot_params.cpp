@@ -5,6 +5,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "amigobot_tracking/aria/commands.h"
+
 namespace amigobot_tracking {
 namespace aria {
 namespace {
@@ -35,7 +37,10 @@ std::string RobotParams::validate() const {
   }
   if (model.empty()) return "model: must not be empty";
   if (angle_units_per_turn < 8) return "angle_units_per_turn: must be at least 8, got " + std::to_string(angle_units_per_turn);
-  if (switch_to_baud <= 0) return "switch_to_baud: must be positive";
+  if (hostBaudIndex(switch_to_baud) < 0) {
+    return "switch_to_baud: must be a HOSTBAUD rate (9600, 19200, 38400, 57600, 115200), got " +
+           std::to_string(switch_to_baud);
+  }
   for (std::size_t i = 0; i < sonars.size(); ++i) {
     const auto& s = sonars[i];
     if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.yaw)) {

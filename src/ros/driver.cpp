@@ -229,11 +229,15 @@ void AmigobotDriver::diagnose(diagnostic_updater::DiagnosticStatusWrapper& d) {
   }
   d.add("link", aria::linkStateName(s.link));
   d.add("port", params_.client.port);
+  d.add("baud", s.baud > 0 ? std::to_string(s.baud) : std::string("- (TCP)"));
   if (s.identity) d.add("robot", s.identity->name + " (" + s.identity->robot_class + " " + s.identity->subclass + ")");
   sip_rate_->report(d, connected);  // "SIP rate [Hz]" and its window; no SIPs is no news without a link
   d.add("SIPs", s.sips);
   d.add("connections", s.connections);
   d.add("still-open recoveries", s.still_open_recoveries);
+  d.add("baud recoveries (CLOSE at every baud)", s.baud_recoveries);
+  d.add("bytes received", s.bytes_received);
+  d.add("bytes sent", s.bytes_sent);
   d.add("parser packets", s.parser.packets);
   d.add("parser garbage bytes", s.parser.garbage_bytes);
   d.add("parser bad checksums", s.parser.bad_checksum);

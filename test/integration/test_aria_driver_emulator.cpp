@@ -22,14 +22,9 @@ std::string ptyLink(const std::string& tag) {
 }
 
 ClientConfig clientConfig(const std::string& port) {
-  ClientConfig c;
-  c.port = port;
+  ClientConfig c = emulatorClientConfig(port);
   c.v_max = 0.5;
   c.w_max = 2.0;
-  c.reconnect_delay_min = 0.2;
-  c.reconnect_delay_max = 1.0;
-  c.link_timeout = 1.5;
-  c.command_timeout = 0.0;  // the tests drive with sparse setVelocity calls
   return c;
 }
 

@@ -28,7 +28,8 @@ namespace aria {
 
 struct ClientConfig {
   std::string port = "/dev/ttyUSB0";  // serial device, or host:port for TCP
-  int baud = 9600;                    // [baud] serial only
+  int baud = 9600;                    // [baud] serial only: the connect baud; after CONFIG
+                                      // the link moves to robot.switch_to_baud if the robot allows
   RobotParams robot = RobotParams::amigo();
   CommandMode command_mode = CommandMode::kVelRvel;
   double v_max = 0.3;                 // [m/s] diamond half-width in v
@@ -78,6 +79,9 @@ struct ClientStatus {
   double sip_rate = 0.0;          // [Hz] over the last second
   std::uint64_t connections = 0;  // successful handshakes
   std::uint64_t still_open_recoveries = 0;  // SIPs answered a SYNC: robot left open
+  std::uint64_t baud_recoveries = 0;        // CLOSE cycles through every baud after silent SYNCs
+  int baud = 0;                             // [baud] active line speed; 0 on TCP
+  std::uint64_t bytes_received = 0, bytes_sent = 0;  // on the link, every connection
   std::uint64_t commands_sent = 0;
   std::uint64_t non_finite_requests = 0;    // NaN/inf velocity requests refused
   std::string last_error;
@@ -117,8 +121,14 @@ class AriaClient {
   bool connect();                 // one full handshake attempt; false if stopped
   // SYNC0/1/2 with the still-open recovery; nullopt if stopped, throws after max tries.
   std::optional<RobotIdentity> synchronise();
-  // OPEN, SONAR, CONFIG (with retries), SETA/SETRA; waits for the first SIP.
+  // OPEN, SONAR, CONFIG (with retries), HOSTBAUD, SETA/SETRA; waits for the first SIP.
   std::optional<ConfigPac> openRobot();
+  // Serial, robot allows it (CONFIGpac AutoBaud 2): HOSTBAUD to robot.switch_to_baud, kept
+  // only if a SIP arrives at the new rate within 900 ms.
+  void negotiateBaud(const std::optional<ConfigPac>& config);
+  // CLOSE at every baud a crashed session may have left the robot at, back to the connect baud.
+  void closeAtEveryBaud();
+  void setLineBaud(int baud);     // switches the port and forgets bytes parsed at the old rate
   // Pumps the link for up to `duration` [s], handing each packet to `on_packet` until it
   // returns true (then returns true).
   bool receiveFor(double duration, const std::function<bool(const Packet&)>& on_packet);
