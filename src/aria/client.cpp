@@ -58,6 +58,11 @@ std::string ClientConfig::validate() const {
   if (reconnect_delay_max < reconnect_delay_min) return "reconnect_delay_max: smaller than reconnect_delay_min";
   if (max_sync_tries < 3) return "max_sync_tries: at least 3 (one per SYNC)";
   if (max_packet_count < 3 || max_packet_count > 255) return "max_packet_count: must be within 3..255";
+  if (ticks_mm && (*ticks_mm <= 0 || *ticks_mm > 65535)) return "ticks_mm: must be within 1..65535";
+  if (rev_count && (*rev_count <= 0 || *rev_count > 65535)) return "rev_count: must be within 1..65535";
+  if (drift_factor && (*drift_factor < -32768 || *drift_factor > 32767)) {
+    return "drift_factor: must be within -32768..32767";
+  }
   return {};
 }
 

@@ -130,32 +130,21 @@ void AriaClient::negotiateBaud(const std::optional<ConfigPac>& config) {
 std::optional<ConfigPac> AriaClient::openRobot() {
   send(config_.open_with_argument ? commandPacket(Command::kOpen, 1) : commandPacket(Command::kOpen));
   send(commandPacket(Command::kSonar, config_.sonar ? 1 : 0));
-  std::optional<ConfigPac> config;
   bool have_sip = false;
-  const auto handle = [&](const Packet& p) {
-    if (p.type == kConfigPacType) {
-      std::string error;
-      config = decodeConfigPac(p, &error);
-      if (!config) log(LogLevel::kWarn, error);
-    }
-    have_sip = have_sip || isSipType(p.type);
-    return false;
-  };
-  // CONFIGpac, re-requested every 200 ms as ARIA does.
-  for (double waited = 0.0; !config && waited < config_.config_timeout && !stop_requested_; waited += 0.2) {
-    send(commandPacket(Command::kConfig, 1));
-    receiveFor(0.2, [&](const Packet& p) { return handle(p) || config.has_value(); });
-  }
+  std::optional<ConfigPac> config = requestConfig(have_sip);
   if (!config && config_.config_timeout > 0.0) {
     log(LogLevel::kWarn, "no CONFIGpac; using the parameter file's limits");
   }
   negotiateBaud(config);
+  config = configureFirmware(std::move(config));
   const auto sendInt = [&](Command c, double value) { send(commandPacket(c, static_cast<int>(std::lround(value)))); };
   if (config_.trans_accel > 0) sendInt(Command::kSetA, config_.trans_accel * 1e3);
   if (config_.trans_decel > 0) sendInt(Command::kSetA, -config_.trans_decel * 1e3);
   if (config_.rot_accel > 0) sendInt(Command::kSetRA, config_.rot_accel * kRadToDeg);
   if (config_.rot_decel > 0) sendInt(Command::kSetRA, -config_.rot_decel * kRadToDeg);
-  if (!have_sip) receiveFor(config_.link_timeout, [&](const Packet& p) { return handle(p) || have_sip; });
+  if (!have_sip) {
+    receiveFor(config_.link_timeout, [&](const Packet& p) { return have_sip = have_sip || isSipType(p.type); });
+  }
   if (!have_sip && !stop_requested_) throw std::runtime_error(transport_->describe() + ": robot sent no SIP after OPEN");
   return config;
 }

@@ -90,6 +90,9 @@ std::string commandName(std::uint8_t command) {
     case Command::kHostBaud: return "HOSTBAUD";
     case Command::kEStop: return "ESTOP";
     case Command::kBatteryInfo: return "BATTERYINFO";
+    case Command::kRevCount: return "REVCOUNT";
+    case Command::kDriftFactor: return "DRIFTFACTOR";
+    case Command::kTicksMM: return "TICKSMM";
     case Command::kSimSetPose: return "SIM_SET_POSE";
     case Command::kSimReset: return "SIM_RESET";
     case Command::kSimStat: return "SIM_STAT";

@@ -50,6 +50,11 @@ struct ClientConfig {
   int max_packet_count = kMaxSpecCount;  // parser limit on the count byte (ARIA: 255)
   double trans_accel = 0.0, trans_decel = 0.0;  // [m/s^2] SETA when > 0; 0 = firmware's
   double rot_accel = 0.0, rot_decel = 0.0;      // [rad/s^2] SETRA when > 0
+  // Odometry calibration (RosAria's TicksMM, DriftFactor, RevCount), sent after CONFIG when
+  // set and read back from a second CONFIGpac.
+  std::optional<int> ticks_mm;      // [ticks/mm] > 0
+  std::optional<int> drift_factor;  // [1/8192] -32768..32767
+  std::optional<int> rev_count;     // [ticks per 180 deg turn] > 0
 
   // Empty when valid, otherwise "field: reason" for the first bad field.
   std::string validate() const;
@@ -128,7 +133,12 @@ class AriaClient {
   void negotiateBaud(const std::optional<ConfigPac>& config);
   // CLOSE at every baud a crashed session may have left the robot at, back to the connect baud.
   void closeAtEveryBaud();
-  void setLineBaud(int baud);     // switches the port and forgets bytes parsed at the old rate
+  void setLineBaud(int baud);
+  // POLLING from the parameter set; TICKSMM/DRIFTFACTOR/REVCOUNT, then CONFIG to read them
+  // back (logged). Returns the newer CONFIGpac, or `config` when none came.
+  std::optional<ConfigPac> configureFirmware(std::optional<ConfigPac> config);
+  // CONFIG, re-requested every 200 ms up to config_timeout; nullopt when none came.
+  std::optional<ConfigPac> requestConfig(bool& have_sip);     // switches the port and forgets bytes parsed at the old rate
   // Pumps the link for up to `duration` [s], handing each packet to `on_packet` until it
   // returns true (then returns true).
   bool receiveFor(double duration, const std::function<bool(const Packet&)>& on_packet);
