@@ -1,5 +1,7 @@
 #include "amigobot_tracking/ros/driver.h"
 
+#include "amigobot_tracking/ros/sonar_cloud.h"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -60,6 +62,10 @@ DriverParams loadDriverParams(const ros::NodeHandle& pnh) {
   c.sonar = param(pnh, "sonar", true);
   c.link_timeout = param(pnh, "link_timeout", c.link_timeout);
   c.reconnect_delay_max = param(pnh, "reconnect_delay_max", c.reconnect_delay_max);
+  // Calibration: sent to the firmware only when set.
+  if (pnh.hasParam("ticks_mm")) c.ticks_mm = param(pnh, "ticks_mm", 0);
+  if (pnh.hasParam("drift_factor")) c.drift_factor = param(pnh, "drift_factor", 0);
+  if (pnh.hasParam("rev_count")) c.rev_count = param(pnh, "rev_count", 0);
   p.odom_frame = param(pnh, "odom_frame", p.odom_frame);
   p.base_frame = param(pnh, "base_frame", p.base_frame);
   p.sonar_frame_prefix = param(pnh, "sonar_frame_prefix", p.sonar_frame_prefix);
@@ -78,6 +84,8 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   sonar_pub_ = nh_.advertise<sensor_msgs::Range>("sonar", 50);
   battery_pub_ = nh_.advertise<std_msgs::Float64>("battery_voltage", 1);
   motors_pub_ = nh_.advertise<std_msgs::Bool>("motors_state", 1, true);
+  sonar_cloud_pub_ = nh_.advertise<sensor_msgs::PointCloud2>("sonar_cloud", 1);
+  state_topics_ = std::make_unique<DriverStateTopics>(nh_, params_.base_frame);
   enable_srv_ = nh_.advertiseService("enable_motors", &AmigobotDriver::enableMotors, this);
   disable_srv_ = nh_.advertiseService("disable_motors", &AmigobotDriver::disableMotors, this);
   reset_srv_ = nh_.advertiseService("reset_odometry", &AmigobotDriver::resetOdometry, this);
@@ -154,7 +162,7 @@ void AmigobotDriver::onSip(const aria::RobotState& state) {
   publishMotorsStateLocked(state.motors_enabled);
   // One sensor_msgs/Range per transducer reading in this SIP, in the transducer's frame.
   // REP 117: no echo within the maximum range is +inf.
-  const double max_range = 5.0;
+  const double max_range = params_.client.robot.sonar_max_range;
   for (std::size_t i = 0; i < state.sonar_updated.size(); ++i) {
     if (!state.sonar_updated[i]) continue;
     sensor_msgs::Range range;
@@ -168,6 +176,11 @@ void AmigobotDriver::onSip(const aria::RobotState& state) {
     range.range = r >= max_range ? std::numeric_limits<float>::infinity() : static_cast<float>(r);
     sonar_pub_.publish(range);
   }
+  if (sonar_cloud_pub_.getNumSubscribers() > 0) {
+    sonar_cloud_pub_.publish(makeSonarCloud(state.sonar_ranges, params_.client.robot.sonars, max_range,
+                                            params_.base_frame, stamp));
+  }
+  state_topics_->publish(state, client_->status().config, stamp);
 }
 
 void AmigobotDriver::publishMotorsStateLocked(bool enabled) {

@@ -18,6 +18,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "amigobot_tracking/aria/client.h"
+#include "amigobot_tracking/ros/driver_state_topics.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 
 namespace amigobot_tracking {
@@ -61,6 +62,7 @@ class AmigobotDriver {
   ros::NodeHandle nh_, pnh_;
   ros::Subscriber cmd_vel_sub_;
   ros::Publisher odom_pub_, sonar_pub_, battery_pub_, motors_pub_;
+  ros::Publisher sonar_cloud_pub_;  // built only while someone subscribes
   ros::ServiceServer enable_srv_, disable_srv_, reset_srv_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
@@ -69,6 +71,7 @@ class AmigobotDriver {
   ros::Timer diagnostics_timer_, link_timer_;
   std::mutex publish_mutex_;
   int last_motors_state_ = -1;  // -1: not yet published
+  std::unique_ptr<DriverStateTopics> state_topics_;  // battery_state, stall, bumper, estop
   std::unique_ptr<aria::AriaClient> client_;
 };
 
