@@ -11,6 +11,7 @@ amigobot_add_library(amigobot_tracking_aria
   src/aria/client.cpp
   src/aria/client_handshake.cpp
   src/aria/client_firmware.cpp
+  src/aria/client_limits.cpp
   src/aria/emulator.cpp
   src/aria/emulator_sip.cpp
   src/aria/emulator_server.cpp

@@ -332,6 +332,7 @@ void AriaClient::handleSip(const Sip& sip) {
 }
 
 void AriaClient::updateCommand(Clock::time_point now) {
+  applyPendingLimits();
   core::Twist2 desired;
   bool motors = false;
   bool motors_pending = false;

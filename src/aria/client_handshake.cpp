@@ -1,6 +1,5 @@
 // AriaClient's connection sequence (ArRobot::asyncConnectHandler): SYNC0/1/2 with the
 // recoveries for a robot left open (at this baud or another), OPEN, CONFIG, the baud switch.
-#include <cmath>
 #include <stdexcept>
 
 #include "amigobot_tracking/aria/client.h"
@@ -16,7 +15,6 @@ constexpr double kBaudSettle = 0.1;   // [s] a command's bytes leave (and reach 
 constexpr double kBaudVerify = 0.9;   // [s] ARIA's wait for a packet at the new baud
 constexpr int kCloseCycleEvery = 4;   // silent SYNCs: the CLOSE cycle at the 2nd, 6th, ...
 constexpr int kDislodgeFrom = 4;      // silent SYNCs: OPEN from the 4th on
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 bool ignore(const Packet&) { return false; }
 
@@ -137,11 +135,7 @@ std::optional<ConfigPac> AriaClient::openRobot() {
   }
   negotiateBaud(config);
   config = configureFirmware(std::move(config));
-  const auto sendInt = [&](Command c, double value) { send(commandPacket(c, static_cast<int>(std::lround(value)))); };
-  if (config_.trans_accel > 0) sendInt(Command::kSetA, config_.trans_accel * 1e3);
-  if (config_.trans_decel > 0) sendInt(Command::kSetA, -config_.trans_decel * 1e3);
-  if (config_.rot_accel > 0) sendInt(Command::kSetRA, config_.rot_accel * kRadToDeg);
-  if (config_.rot_decel > 0) sendInt(Command::kSetRA, -config_.rot_decel * kRadToDeg);
+  sendAccelerations();
   if (!have_sip) {
     receiveFor(config_.link_timeout, [&](const Packet& p) { return have_sip = have_sip || isSipType(p.type); });
   }

@@ -108,9 +108,30 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   client_->start();
   link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.sip_cycle), [this](const ros::TimerEvent&) { checkLink(); });
   cmd_vel_sub_ = nh_.subscribe("cmd_vel", 1, &AmigobotDriver::onCmdVel, this);
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>>(pnh_);
+  reconfigure_->setCallback([this](amigobot_tracking::DriverConfig& config, std::uint32_t level) {
+    onReconfigure(config, level);
+  });
+}
+
+void AmigobotDriver::onReconfigure(amigobot_tracking::DriverConfig& config, std::uint32_t /*level*/) {
+  const std::string error = client_->setMotionLimits({config.v_max, config.w_max, config.cmd_vel_timeout,
+                                                      config.trans_accel, config.trans_decel, config.rot_accel,
+                                                      config.rot_decel});
+  if (error.empty()) return;
+  ROS_WARN_STREAM("dynamic_reconfigure: " << error << "; keeping the limits in force");
+  const aria::MotionLimits now = client_->motionLimits();
+  config.v_max = now.v_max;
+  config.w_max = now.w_max;
+  config.cmd_vel_timeout = now.command_timeout;
+  config.trans_accel = now.trans_accel;
+  config.trans_decel = now.trans_decel;
+  config.rot_accel = now.rot_accel;
+  config.rot_decel = now.rot_decel;
 }
 
 AmigobotDriver::~AmigobotDriver() {
+  reconfigure_.reset();
   cmd_vel_sub_.shutdown();
   diagnostics_timer_.stop();
   link_timer_.stop();

@@ -11,6 +11,7 @@
 #include <set>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <dynamic_reconfigure/Reconfigure.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <nodelet/loader.h>
@@ -32,6 +33,20 @@
 using namespace amigobot_test;
 
 namespace {
+
+// Sets one double of the driver's dynamic_reconfigure; returns the value now in force.
+double reconfigureDriver(const std::string& name, double value) {
+  dynamic_reconfigure::Reconfigure srv;
+  dynamic_reconfigure::DoubleParameter p;
+  p.name = name;
+  p.value = value;
+  srv.request.config.doubles.push_back(p);
+  EXPECT_TRUE(ros::service::call("/driver/set_parameters", srv));
+  for (const auto& d : srv.response.config.doubles) {
+    if (d.name == name) return d.value;
+  }
+  return std::nan("");
+}
 
 struct Inbox {
   std::mutex mutex;
@@ -200,6 +215,19 @@ TEST(DriverRos, NodeletDrivesTheEmulatorAndReportsEverything) {
   cmd_pub.publish(cmd);
   ros::Duration(0.5).sleep();
   EXPECT_LT(std::abs(emu.truth().v), 1e-6);
+
+  // dynamic_reconfigure: a smaller diamond holds at once; one beyond the robot is refused.
+  EXPECT_DOUBLE_EQ(reconfigureDriver("v_max", 0.1), 0.1);
+  EXPECT_DOUBLE_EQ(reconfigureDriver("v_max", 1.5), 0.1);  // above the robot's max_velocity 1.0
+  cmd.linear.x = 0.3;
+  double fastest = 0.0;
+  for (int i = 0; i < 20; ++i) {
+    cmd_pub.publish(cmd);
+    ros::Duration(0.1).sleep();
+    fastest = std::max(fastest, emu.truth().v);
+  }
+  EXPECT_GT(fastest, 0.05);
+  EXPECT_LT(fastest, 0.1 + 1e-3);
 
   ASSERT_TRUE(loader.unload("/driver"));
   EXPECT_TRUE(waitFor([&] { const Truth t = emu.truth(); return !t.open && !t.motors; }, 5.0))

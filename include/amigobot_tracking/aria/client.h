@@ -60,6 +60,13 @@ struct ClientConfig {
   std::string validate() const;
 };
 
+// What may change while the client runs (the driver's dynamic_reconfigure).
+struct MotionLimits {
+  double v_max = 0.3, w_max = 0.8;  // [m/s], [rad/s] the diamond
+  double command_timeout = 0.6;     // [s]
+  double trans_accel = 0.0, trans_decel = 0.0, rot_accel = 0.0, rot_decel = 0.0;  // 0 = firmware's
+};
+
 enum class LinkState { kStopped, kConnecting, kConnected, kWaitingToReconnect };
 std::string linkStateName(LinkState state);
 
@@ -117,6 +124,10 @@ class AriaClient {
   void setVelocity(const core::Twist2& twist);
   void requestMotors(bool enabled);
   void resetOdometry(const core::Pose2& pose = {});
+  // Checks `limits` as ClientConfig::validate does; valid ones take effect before the next
+  // command (SETA/SETRA for the positive accelerations). Returns "" or "field: reason".
+  std::string setMotionLimits(const MotionLimits& limits);
+  MotionLimits motionLimits() const;
   ClientStatus status() const;
   const ClientConfig& config() const { return config_; }
 
@@ -152,6 +163,8 @@ class AriaClient {
   void handlePacket(const Packet& packet);
   void handleSip(const Sip& sip);
   void updateCommand(Clock::time_point now);
+  void applyPendingLimits();      // I/O thread
+  void sendAccelerations();       // SETA/SETRA for config_'s positive accelerations
   void setLink(LinkState state);
   void log(LogLevel level, const std::string& text);
 
@@ -175,6 +188,7 @@ class AriaClient {
   bool have_request_ = false;
   bool motors_request_pending_ = false;
   std::optional<core::Pose2> odometry_reset_;
+  std::optional<MotionLimits> pending_limits_;
 
   // I/O thread only.
   Clock::time_point last_rx_{}, last_sip_{}, last_motion_sent_{}, last_enable_sent_{};

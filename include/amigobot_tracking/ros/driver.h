@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include <amigobot_tracking/DriverConfig.h>
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
@@ -53,6 +55,8 @@ class AmigobotDriver {
   bool resetOdometry(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   void publishSonarTransforms();
+  // dynamic_reconfigure: a set the client refuses is answered with the limits in force.
+  void onReconfigure(amigobot_tracking::DriverConfig& config, std::uint32_t level);
   // motors_state, latched, published on change only; publish_mutex_ held.
   void publishMotorsStateLocked(bool enabled);
   // Without a link the motors are not enabled, whatever the last SIP said (SIP period).
@@ -73,6 +77,7 @@ class AmigobotDriver {
   int last_motors_state_ = -1;  // -1: not yet published
   std::unique_ptr<DriverStateTopics> state_topics_;  // battery_state, stall, bumper, estop
   std::unique_ptr<aria::AriaClient> client_;
+  std::unique_ptr<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>> reconfigure_;
 };
 
 }  // namespace ros_layer
