@@ -71,6 +71,24 @@ TEST(AriaBaud, TcpHasNoBaudAndSendsNoHostBaud) {
   EXPECT_TRUE(sipsFlow(*client, 1.0));
 }
 
+// A frozen robot keeps its 38400 while the driver gives the link up and comes back at the
+// connect baud: the CLOSE cycle frees the robot and the switch is made again.
+TEST(AriaBaud, AReconnectAfterLinkLossRepeatsTheWholeSequence) {
+  const std::string link = ptyLink("loss");
+  EmulatorProcess emu({}, 0, link);
+  auto client = startClient(emulatorClientConfig(link));
+  ASSERT_TRUE(waitFor([&] { return connected(*client); }, 20.0)) << client->status().last_error;
+  ASSERT_EQ(client->status().baud, 38400);
+  emu.signal(SIGSTOP);
+  EXPECT_TRUE(waitFor([&] { return client->status().link != LinkState::kConnected; }, 10.0));
+  emu.signal(SIGCONT);
+  ASSERT_TRUE(waitFor([&] { return connected(*client) && client->status().connections == 2; }, 30.0))
+      << client->status().last_error;
+  EXPECT_GE(client->status().baud_recoveries, 1u);
+  EXPECT_EQ(client->status().baud, 38400);
+  EXPECT_TRUE(sipsFlow(*client, 1.0));
+}
+
 class AriaBaudLeftOpen : public ::testing::TestWithParam<int> {};
 
 TEST_P(AriaBaudLeftOpen, ClosesTheRobotAtItsBaudThenConnects) {

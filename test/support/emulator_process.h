@@ -134,6 +134,10 @@ class EmulatorProcess {
     }
   }
 
+  // Sends `signal` and returns at once (SIGSTOP / SIGCONT freeze and thaw the robot).
+  void signal(int signal) {
+    if (pid_ > 0) ::kill(pid_, signal);
+  }
   void kill(int signal) {
     if (pid_ <= 0) return;
     ::kill(pid_, signal);
