@@ -6,7 +6,7 @@ amigobot_add_library(amigobot_tracking_ros_driver
   src/ros/driver_state_topics.cpp
   src/ros/sonar_cloud.cpp
 )
-target_link_libraries(amigobot_tracking_ros_driver amigobot_tracking_aria ${catkin_LIBRARIES})
+target_link_libraries(amigobot_tracking_ros_driver amigobot_tracking_aria amigobot_tracking_ros_params ${catkin_LIBRARIES})
 add_dependencies(amigobot_tracking_ros_driver ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
 amigobot_add_tool(amigobot_driver_node src/ros/programs/driver_node.cpp)

@@ -41,10 +41,10 @@ std::optional<ConfigPac> AriaClient::configureFirmware(std::optional<ConfigPac> 
     for (int index : polling) order.push_back(static_cast<char>(index + 1));
     send(commandPacket(Command::kPolling, order));
   }
-  if (!config_.ticks_mm && !config_.drift_factor && !config_.rev_count) return config;
-  if (config_.ticks_mm) send(commandPacket(Command::kTicksMM, *config_.ticks_mm));
-  if (config_.drift_factor) send(commandPacket(Command::kDriftFactor, *config_.drift_factor));
-  if (config_.rev_count) send(commandPacket(Command::kRevCount, *config_.rev_count));
+  if (config_.ticks_mm == 0 && config_.drift_factor == 0 && config_.rev_count == 0) return config;
+  if (config_.ticks_mm != 0) send(commandPacket(Command::kTicksMM, config_.ticks_mm));
+  if (config_.drift_factor != 0) send(commandPacket(Command::kDriftFactor, config_.drift_factor));
+  if (config_.rev_count != 0) send(commandPacket(Command::kRevCount, config_.rev_count));
   bool have_sip = false;
   std::optional<ConfigPac> after = requestConfig(have_sip);
   if (!after) {
@@ -54,9 +54,9 @@ std::optional<ConfigPac> AriaClient::configureFirmware(std::optional<ConfigPac> 
   const std::string text = "calibration read back from CONFIGpac: TicksMM " + valueOrNone(after->ticks_mm) +
                      ", DriftFactor " + (after->drift_factor ? std::to_string(*after->drift_factor) : "not reported") +
                      ", RevCount " + std::to_string(after->rev_count);
-  const bool took = (!config_.ticks_mm || after->ticks_mm == config_.ticks_mm) &&
-                    (!config_.drift_factor || after->drift_factor == config_.drift_factor) &&
-                    (!config_.rev_count || after->rev_count == *config_.rev_count);
+  const bool took = (config_.ticks_mm == 0 || after->ticks_mm == config_.ticks_mm) &&
+                    (config_.drift_factor == 0 || after->drift_factor == config_.drift_factor) &&
+                    (config_.rev_count == 0 || after->rev_count == config_.rev_count);
   log(took ? LogLevel::kInfo : LogLevel::kWarn, text + (took ? "" : " (the firmware ignored some of it)"));
   return after;
 }

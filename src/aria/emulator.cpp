@@ -26,24 +26,6 @@ double approach(double value, double target, double rate_up, double rate_down, d
 
 }  // namespace
 
-std::string EmulatorOptions::validate() const {
-  const std::string robot_error = robot.validate();
-  if (!robot_error.empty()) return "robot." + robot_error;
-  if (!(odometry_noise >= 0.0 && std::isfinite(odometry_noise))) return "odometry_noise: must be >= 0";
-  if (!(physics_step > 0.0 && physics_step <= 0.05)) return "physics_step: must be within (0, 0.05] s";
-  if (!(sonar_max_range > 0.0)) return "sonar_max_range: must be positive";
-  if (!initial_pose.isFinite()) return "initial_pose: must be finite";
-  for (std::size_t i = 0; i < obstacles.size(); ++i) {
-    if (!(obstacles[i].radius > 0.0) || !obstacles[i].center.allFinite()) {
-      return "obstacles[" + std::to_string(i) + "]: needs a finite centre and a positive radius";
-    }
-  }
-  if (name.empty() || name.size() > 60) return "name: must be 1..60 characters";
-  if (ticks_mm <= 0 || rev_count <= 0) return "ticks_mm, rev_count: must be positive";
-  if (left_open_at_baud < 0) return "left_open_at_baud: must be 0 (closed) or a positive baud";
-  return {};
-}
-
 RobotEmulator::RobotEmulator(EmulatorOptions options)
     : options_(std::move(options)), rng_(options_.seed), pose_(options_.initial_pose) {
   const std::string error = options_.validate();

@@ -22,6 +22,7 @@
 #include "amigobot_tracking/aria/sip.h"
 #include "amigobot_tracking/aria/transport.h"
 #include "amigobot_tracking/aria/wheel_command.h"
+#include "amigobot_tracking/core/field_table.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -51,14 +52,19 @@ struct ClientConfig {
   double trans_accel = 0.0, trans_decel = 0.0;  // [m/s^2] SETA when > 0; 0 = firmware's
   double rot_accel = 0.0, rot_decel = 0.0;      // [rad/s^2] SETRA when > 0
   // Odometry calibration (RosAria's TicksMM, DriftFactor, RevCount), sent after CONFIG when
-  // set and read back from a second CONFIGpac.
-  std::optional<int> ticks_mm;      // [ticks/mm] > 0
-  std::optional<int> drift_factor;  // [1/8192] -32768..32767
-  std::optional<int> rev_count;     // [ticks per 180 deg turn] > 0
+  // non-zero and read back from a second CONFIGpac. 0 = not sent: the FLASH value holds.
+  int ticks_mm = 0;      // [ticks/mm]
+  int drift_factor = 0;  // [1/8192]
+  int rev_count = 0;     // [ticks per 180 deg turn]
 
-  // Empty when valid, otherwise "field: reason" for the first bad field.
+  // Empty when valid, otherwise "key: reason" for the first bad field (the table's bounds,
+  // then the robot's limits, its watchdog and the back-off order).
   std::string validate() const;
 };
+
+// The plain fields (robot and command_mode are chosen by name: see ros/driver.h). Keys are the
+// driver's ROS parameters (cmd_vel_timeout: the command_timeout member).
+const core::FieldTable<ClientConfig>& clientFields();
 
 // What may change while the client runs (the driver's dynamic_reconfigure).
 struct MotionLimits {

@@ -14,6 +14,7 @@
 #include "amigobot_tracking/aria/packet.h"
 #include "amigobot_tracking/aria/robot_params.h"
 #include "amigobot_tracking/aria/sip.h"
+#include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -38,8 +39,11 @@ struct EmulatorOptions {
   int rev_count = 16384;
   int left_open_at_baud = 0;      // [baud] > 0: starts open, talking at this baud, as a crashed
                                   // session leaves it; 0: closed at the FLASH default 9600
-  std::string validate() const;
+  std::string validate() const;   // "" or "key: reason"
 };
+
+// Its plain fields (the robot, world, pose and seed are set by the emulator tool).
+const core::FieldTable<EmulatorOptions>& emulatorFields();
 
 struct EmulatorCounters {
   std::uint64_t packets = 0;
