@@ -9,11 +9,15 @@ amigobot_add_library(amigobot_tracking_aria
   src/aria/wheel_command.cpp
   src/aria/transport.cpp
   src/aria/client.cpp
-  src/aria/client_handshake.cpp
   src/aria/client_config.cpp
+  src/aria/client_handshake.cpp
+  src/aria/client_firmware.cpp
+  src/aria/client_limits.cpp
   src/aria/emulator.cpp
   src/aria/emulator_options.cpp
+  src/aria/emulator_sip.cpp
   src/aria/emulator_server.cpp
+  src/aria/emulator_line.cpp
   src/aria/emulator_status.cpp
 )
 target_include_directories(amigobot_tracking_aria PUBLIC include)
@@ -28,7 +32,7 @@ target_link_libraries(aria_command_study amigobot_tracking_aria)
 
 if(CATKIN_ENABLE_TESTING)
   # Codec, parameters, quantisation, odometry, emulator.
-  foreach(unit packet sip robot_params wheel_command odometry emulator client_config)
+  foreach(unit packet sip robot_params wheel_command odometry emulator emulator_line emulator_firmware client_config)
     amigobot_add_unit_test(test_aria_${unit} test/unit/test_aria_${unit}.cpp)
     target_link_libraries(test_aria_${unit} amigobot_tracking_aria)
     target_compile_definitions(test_aria_${unit} PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -39,6 +43,11 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(test_aria_driver_emulator PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
   add_dependencies(test_aria_driver_emulator amigobot_emulator)
   # The status protocol: writer, parser, and the client's reconnect against the real emulator.
+  amigobot_add_unit_test(test_aria_baud test/integration/test_aria_baud.cpp)
+  target_link_libraries(test_aria_baud amigobot_tracking_aria)
+  target_compile_definitions(test_aria_baud PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
+  add_dependencies(test_aria_baud amigobot_emulator)
+
   amigobot_add_unit_test(test_aria_emulator_status test/unit/test_aria_emulator_status.cpp)
   target_link_libraries(test_aria_emulator_status amigobot_tracking_aria)
   target_compile_definitions(test_aria_emulator_status PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")

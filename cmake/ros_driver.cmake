@@ -3,8 +3,11 @@
 amigobot_add_library(amigobot_tracking_ros_driver
   src/ros/driver.cpp
   src/ros/driver_nodelet.cpp
+  src/ros/driver_state_topics.cpp
+  src/ros/sonar_cloud.cpp
 )
 target_link_libraries(amigobot_tracking_ros_driver amigobot_tracking_aria amigobot_tracking_ros_params ${catkin_LIBRARIES})
+add_dependencies(amigobot_tracking_ros_driver ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
 amigobot_add_tool(amigobot_driver_node src/ros/programs/driver_node.cpp)
 target_link_libraries(amigobot_driver_node amigobot_tracking_ros_driver)
@@ -15,5 +18,5 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_rostest_gtest(test_driver_ros test/rostest/driver.test test/rostest/test_driver_ros.cpp)
   target_link_libraries(test_driver_ros amigobot_tracking_aria)
   target_compile_definitions(test_driver_ros PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
-  add_dependencies(test_driver_ros amigobot_emulator amigobot_tracking_ros_driver)
+  add_dependencies(test_driver_ros amigobot_emulator amigobot_tracking_ros_driver ${PROJECT_NAME}_generate_messages_cpp)
 endif()

@@ -108,7 +108,18 @@ bool AriaClient::sleepUnlessStopped(double s) {
   return !stop_requested_;
 }
 
-void AriaClient::send(const std::vector<std::uint8_t>& bytes) { transport_->write(bytes); }
+void AriaClient::send(const std::vector<std::uint8_t>& bytes) {
+  transport_->write(bytes);
+  std::lock_guard<std::mutex> lock(mutex_);
+  status_.bytes_sent += bytes.size();
+}
+
+void AriaClient::setLineBaud(int baud) {
+  transport_->setBaud(baud);
+  std::lock_guard<std::mutex> lock(mutex_);
+  parser_.reset();
+  status_.baud = transport_->baud();
+}
 
 void AriaClient::run() {
   double backoff = config_.reconnect_delay_min;
@@ -149,6 +160,7 @@ void AriaClient::pump(int timeout_ms) {
     last_rx_ = now;
     std::lock_guard<std::mutex> lock(mutex_);  // status() copies the parser's counters
     parser_.feed(buffer, n);
+    status_.bytes_received += n;
   } else if (parser_.hasPartial() && seconds(now - last_rx_) > kInterByteTimeout) {
     std::lock_guard<std::mutex> lock(mutex_);
     parser_.expirePartial();
@@ -170,6 +182,50 @@ bool AriaClient::receiveFor(double duration, const std::function<bool(const Pack
     pump(kPollMs);
   }
   return false;
+}
+
+bool AriaClient::connect() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    parser_.reset();
+  }
+  transport_ = makeTransport(config_.port, config_.baud);
+  log(LogLevel::kInfo, "connecting to the robot over " + transport_->describe());
+  transport_->open();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_.baud = transport_->baud();
+  }
+  const std::optional<RobotIdentity> identity = synchronise();
+  if (!identity) return false;  // stop requested
+  if (identity->subclass != config_.robot.model) {
+    log(LogLevel::kWarn, "robot reports subclass '" + identity->subclass + "' but the parameters are for '" +
+                             config_.robot.model + "'");
+  }
+  const std::optional<ConfigPac> config = openRobot();
+  if (stop_requested_) {
+    shutdownRobot();  // stopped halfway: do not leave the robot open
+    return false;
+  }
+
+  odometry_.relink();
+  sent_.reset();
+  sip_times_.clear();
+  last_sip_ = last_rx_ = Clock::now();
+  last_motion_sent_ = last_enable_sent_ = Clock::time_point{};
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_.identity = identity;
+    status_.config = config;
+    ++status_.connections;
+    status_.last_error.clear();
+    if (config_.enable_motors) status_.motors_requested = true;
+    motors_request_pending_ = true;  // re-assert the requested motor state on every connection
+    status_.link = LinkState::kConnected;
+  }
+  log(LogLevel::kInfo, "connected to '" + identity->name + "' (" + identity->robot_class + " " + identity->subclass +
+                           ") over " + transport_->describe());
+  return true;
 }
 
 void AriaClient::serve() {
@@ -235,6 +291,7 @@ void AriaClient::handleSip(const Sip& sip) {
 }
 
 void AriaClient::updateCommand(Clock::time_point now) {
+  applyPendingLimits();
   core::Twist2 desired;
   bool motors = false;
   bool motors_pending = false;

@@ -36,6 +36,12 @@ const core::FieldTable<ClientConfig>& clientFields() {
       field("trans_decel", &C::trans_decel, "m/s^2", "SETA (decel) when > 0; 0 = the firmware's", nonNegative()),
       field("rot_accel", &C::rot_accel, "rad/s^2", "SETRA when > 0; 0 = the firmware's", nonNegative()),
       field("rot_decel", &C::rot_decel, "rad/s^2", "SETRA (decel) when > 0; 0 = the firmware's", nonNegative()),
+      field("ticks_mm", &C::ticks_mm, "ticks/mm", "TICKSMM after CONFIG, read back; 0 = not sent (FLASH)",
+            core::interval(0, false, 65535, false)),
+      field("drift_factor", &C::drift_factor, "1/8192", "DRIFTFACTOR after CONFIG, read back; 0 = not sent",
+            core::interval(-32768, false, 32767, false)),
+      field("rev_count", &C::rev_count, "ticks/180deg", "REVCOUNT after CONFIG, read back; 0 = not sent (FLASH)",
+            core::interval(0, false, 65535, false)),
   };
   return table;
 }

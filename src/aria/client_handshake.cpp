@@ -1,27 +1,50 @@
-// AriaClient's handshake: SYNC0/1/2 (recovering a robot left open), OPEN with the
-// motion parameters, and the state reset of a new connection. The I/O loop: client.cpp.
-#include "amigobot_tracking/aria/client.h"
-
-#include <cmath>
-#include <mutex>
+// AriaClient's connection sequence (ArRobot::asyncConnectHandler): SYNC0/1/2 with the
+// recoveries for a robot left open (at this baud or another), OPEN, CONFIG, the baud switch.
 #include <stdexcept>
-#include <string>
 
+#include "amigobot_tracking/aria/client.h"
 #include "amigobot_tracking/aria/commands.h"
 
 namespace amigobot_tracking {
 namespace aria {
 namespace {
 
-constexpr double kDrainTime = 0.2;  // [s] input drained after opening the port
-constexpr double kRadToDeg = 180.0 / M_PI;
+constexpr double kDrainTime = 0.2;    // [s] input drained after opening the port
+constexpr double kBaudSettle = 0.1;   // [s] a command's bytes leave (and reach the robot's
+                                      // UART) before the line changes speed under them
+constexpr double kBaudVerify = 0.9;   // [s] ARIA's wait for a packet at the new baud
+constexpr int kCloseCycleEvery = 4;   // silent SYNCs: the CLOSE cycle at the 2nd, 6th, ...
+constexpr int kDislodgeFrom = 4;      // silent SYNCs: OPEN from the 4th on
+
+bool ignore(const Packet&) { return false; }
+
+std::string recoveryBaudList() {
+  std::string list;
+  for (int baud : kRecoveryBauds) list += (list.empty() ? "" : ", ") + std::to_string(baud);
+  return list;
+}
 
 }  // namespace
 
+void AriaClient::closeAtEveryBaud() {
+  const int home = transport_->baud();
+  log(LogLevel::kInfo, "no reply to SYNC: sending CLOSE at " + recoveryBaudList() +
+                           " baud (a session may have left the robot open at another baud)");
+  for (int baud : kRecoveryBauds) {
+    setLineBaud(baud);
+    send(commandPacket(Command::kClose, 1));
+    receiveFor(kBaudSettle, ignore);
+  }
+  setLineBaud(home);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++status_.baud_recoveries;
+}
+
 std::optional<RobotIdentity> AriaClient::synchronise() {
-  const auto ignore = [](const Packet&) { return false; };
   receiveFor(kDrainTime, ignore);  // stale bytes from an earlier session
+  const std::uint64_t garbage_before = parser_.stats().garbage_bytes;
   int stage = 0;
+  int misses = 0;
   for (int tries = 0; tries < config_.max_sync_tries && !stop_requested_; ++tries) {
     send(syncPacket(stage));
     std::optional<Packet> reply;
@@ -32,6 +55,10 @@ std::optional<RobotIdentity> AriaClient::synchronise() {
     if (!reply) {
       log(LogLevel::kDebug, "no reply to SYNC" + std::to_string(stage) + "; restarting at SYNC0");
       stage = 0;
+      ++misses;
+      if (transport_->isSerial() && misses % kCloseCycleEvery == 2) closeAtEveryBaud();
+      // A robot that took SYNC2 but never OPEN answers nothing until it is opened.
+      if (misses >= kDislodgeFrom) send(commandPacket(Command::kOpen, 1));
     } else if (reply->type == stage && stage < 2) {
       ++stage;
     } else if (reply->type == kSync2 && stage == 2) {
@@ -59,80 +86,61 @@ std::optional<RobotIdentity> AriaClient::synchronise() {
     }
   }
   if (stop_requested_) return std::nullopt;
-  throw std::runtime_error(transport_->describe() + ": no SYNC0/1/2 handshake after " +
-                           std::to_string(config_.max_sync_tries) + " tries (robot off, wrong port or baud?)");
+  std::string why = transport_->describe() + ": no SYNC0/1/2 handshake after " +
+                    std::to_string(config_.max_sync_tries) + " tries";
+  if (transport_->isSerial() && misses >= 2) why += ", CLOSE at " + recoveryBaudList() + " baud did not free the robot";
+  const std::uint64_t garbage = parser_.stats().garbage_bytes - garbage_before;
+  if (garbage > 0) {
+    why += "; " + std::to_string(garbage) +
+           " bytes arrived that formed no packet: the robot talks at a baud none of these (or the line is broken)";
+  } else {
+    why += " (robot off, wrong port or baud?)";
+  }
+  throw std::runtime_error(why);
+}
+
+void AriaClient::negotiateBaud(const std::optional<ConfigPac>& config) {
+  // TCP carries no baud: a serial-to-TCP bridge or a simulator sets its own.
+  if (!transport_->isSerial() || stop_requested_) return;
+  const int current = transport_->baud();
+  const int target = config_.robot.switch_to_baud;
+  if (target <= current) return;
+  if (!config || config->auto_baud.value_or(0) != 2) {
+    log(LogLevel::kInfo, std::string(config ? "robot does not allow a baud switch (CONFIGpac AutoBaud " +
+                                                  std::to_string(config->auto_baud.value_or(0)) + ")"
+                                            : "no CONFIGpac") +
+                             ": staying at " + std::to_string(current) + " baud");
+    return;
+  }
+  send(commandPacket(Command::kHostBaud, hostBaudIndex(target)));
+  receiveFor(kBaudSettle, ignore);
+  setLineBaud(target);
+  send(commandPacket(Command::kPulse));
+  if (receiveFor(kBaudVerify, [](const Packet& p) { return isSipType(p.type); })) {
+    log(LogLevel::kInfo, "link switched to " + std::to_string(target) + " baud");
+    return;
+  }
+  setLineBaud(current);
+  log(LogLevel::kWarn, "no SIP within 900 ms at " + std::to_string(target) + " baud after HOSTBAUD: back to " +
+                           std::to_string(current) + " baud");
 }
 
 std::optional<ConfigPac> AriaClient::openRobot() {
   send(config_.open_with_argument ? commandPacket(Command::kOpen, 1) : commandPacket(Command::kOpen));
   send(commandPacket(Command::kSonar, config_.sonar ? 1 : 0));
-  std::optional<ConfigPac> config;
   bool have_sip = false;
-  const auto handle = [&](const Packet& p) {
-    if (p.type == kConfigPacType) {
-      std::string error;
-      config = decodeConfigPac(p, &error);
-      if (!config) log(LogLevel::kWarn, error);
-    }
-    have_sip = have_sip || isSipType(p.type);
-    return false;
-  };
-  // CONFIGpac, re-requested every 200 ms as ARIA does.
-  for (double waited = 0.0; !config && waited < config_.config_timeout && !stop_requested_; waited += 0.2) {
-    send(commandPacket(Command::kConfig, 1));
-    receiveFor(0.2, [&](const Packet& p) { return handle(p) || config.has_value(); });
-  }
+  std::optional<ConfigPac> config = requestConfig(have_sip);
   if (!config && config_.config_timeout > 0.0) {
     log(LogLevel::kWarn, "no CONFIGpac; using the parameter file's limits");
   }
-  const auto sendInt = [&](Command c, double value) { send(commandPacket(c, static_cast<int>(std::lround(value)))); };
-  if (config_.trans_accel > 0) sendInt(Command::kSetA, config_.trans_accel * 1e3);
-  if (config_.trans_decel > 0) sendInt(Command::kSetA, -config_.trans_decel * 1e3);
-  if (config_.rot_accel > 0) sendInt(Command::kSetRA, config_.rot_accel * kRadToDeg);
-  if (config_.rot_decel > 0) sendInt(Command::kSetRA, -config_.rot_decel * kRadToDeg);
-  if (!have_sip) receiveFor(config_.link_timeout, [&](const Packet& p) { return handle(p) || have_sip; });
+  negotiateBaud(config);
+  config = configureFirmware(std::move(config));
+  sendAccelerations();
+  if (!have_sip) {
+    receiveFor(config_.link_timeout, [&](const Packet& p) { return have_sip = have_sip || isSipType(p.type); });
+  }
   if (!have_sip && !stop_requested_) throw std::runtime_error(transport_->describe() + ": robot sent no SIP after OPEN");
   return config;
-}
-
-bool AriaClient::connect() {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    parser_.reset();
-  }
-  transport_ = makeTransport(config_.port, config_.baud);
-  log(LogLevel::kInfo, "connecting to the robot over " + transport_->describe());
-  transport_->open();
-  const std::optional<RobotIdentity> identity = synchronise();
-  if (!identity) return false;  // stop requested
-  if (identity->subclass != config_.robot.model) {
-    log(LogLevel::kWarn, "robot reports subclass '" + identity->subclass + "' but the parameters are for '" +
-                             config_.robot.model + "'");
-  }
-  const std::optional<ConfigPac> config = openRobot();
-  if (stop_requested_) {
-    shutdownRobot();  // stopped halfway: do not leave the robot open
-    return false;
-  }
-
-  odometry_.relink();
-  sent_.reset();
-  sip_times_.clear();
-  last_sip_ = last_rx_ = Clock::now();
-  last_motion_sent_ = last_enable_sent_ = Clock::time_point{};
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    status_.identity = identity;
-    status_.config = config;
-    ++status_.connections;
-    status_.last_error.clear();
-    if (config_.enable_motors) status_.motors_requested = true;
-    motors_request_pending_ = true;  // re-assert the requested motor state on every connection
-    status_.link = LinkState::kConnected;
-  }
-  log(LogLevel::kInfo, "connected to '" + identity->name + "' (" + identity->robot_class + " " + identity->subclass +
-                           ") over " + transport_->describe());
-  return true;
 }
 
 }  // namespace aria

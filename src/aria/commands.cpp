@@ -90,12 +90,22 @@ std::string commandName(std::uint8_t command) {
     case Command::kHostBaud: return "HOSTBAUD";
     case Command::kEStop: return "ESTOP";
     case Command::kBatteryInfo: return "BATTERYINFO";
+    case Command::kRevCount: return "REVCOUNT";
+    case Command::kDriftFactor: return "DRIFTFACTOR";
+    case Command::kTicksMM: return "TICKSMM";
     case Command::kSimSetPose: return "SIM_SET_POSE";
     case Command::kSimReset: return "SIM_RESET";
     case Command::kSimStat: return "SIM_STAT";
     case Command::kSimExit: return "SIM_EXIT";
   }
   return "command " + std::to_string(command);
+}
+
+int hostBaudIndex(int baud) {
+  for (int i = 0; i < 5; ++i) {
+    if (kHostBauds[i] == baud) return i;
+  }
+  return -1;
 }
 
 }  // namespace aria

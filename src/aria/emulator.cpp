@@ -6,8 +6,6 @@
 #include <iomanip>
 #include <stdexcept>
 
-#include <mrpt/poses/CPose2D.h>
-
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/core/unicycle.h"
 
@@ -26,11 +24,6 @@ double approach(double value, double target, double rate_up, double rate_down, d
   return value + (target > value ? step : -step);
 }
 
-long wrapUnits(double value, long modulus) {
-  const long units = std::lround(value);
-  return ((units % modulus) + modulus) % modulus;
-}
-
 }  // namespace
 
 RobotEmulator::RobotEmulator(EmulatorOptions options)
@@ -39,11 +32,20 @@ RobotEmulator::RobotEmulator(EmulatorOptions options)
   if (!error.empty()) throw std::invalid_argument("emulator: " + error);
   close();
   counters_.closes = 0;
+  if (options_.left_open_at_baud > 0) {
+    open_ = true;  // SIPs from the start; the watchdog has already stopped the wheels
+    baud_ = options_.left_open_at_baud;
+  }
 }
 
 void RobotEmulator::close() {
   // CLOSE reverts the settings to the FLASH defaults and stops everything.
   open_ = false;
+  baud_ = kFlashBaud;
+  polling_.clear();
+  ticks_mm_ = options_.ticks_mm;
+  rev_count_ = options_.rev_count;
+  drift_factor_ = 0;
   sync_stage_ = 0;
   motors_ = false;
   sonar_on_ = true;
@@ -172,6 +174,39 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
     case Command::kSonar:
       sonar_on_ = value != 0;
       break;
+    case Command::kPolling: {
+      // Transducer numbers from 1; an unknown one rejects the whole order.
+      const std::optional<std::string> order = stringArgument(packet);
+      std::vector<std::size_t> polling;
+      for (char c : order.value_or("")) polling.push_back(static_cast<std::uint8_t>(c) - std::size_t{1});
+      const bool valid = order && std::all_of(polling.begin(), polling.end(), [&](std::size_t i) {
+        return i < options_.robot.sonars.size();
+      });
+      if (valid) {
+        polling_ = polling;
+        next_sonar_ = 0;
+      } else {
+        ++counters_.unknown_commands;
+      }
+      break;
+    }
+    case Command::kTicksMM:
+      if (value > 0) ticks_mm_ = value;
+      break;
+    case Command::kRevCount:
+      if (value > 0) rev_count_ = value;
+      break;
+    case Command::kDriftFactor:
+      drift_factor_ = value;
+      break;
+    case Command::kHostBaud:
+      // The reply to this command, if any, still goes out at the old rate: none is sent.
+      if (options_.simulator_mode || value < 0 || value > 4) {
+        ++counters_.unknown_commands;
+      } else {
+        baud_ = kHostBauds[value];
+      }
+      break;
     case Command::kConfig: {
       ConfigPac c;
       c.robot_type = "Pioneer";
@@ -190,8 +225,12 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       c.trans_acc = static_cast<std::uint16_t>(std::lround(accel_ * 1e3));
       c.trans_decel = static_cast<std::uint16_t>(std::lround(decel_ * 1e3));
       c.front_sonar = 1;
-      c.auto_baud = 0;
+      c.host_baud = static_cast<std::uint8_t>(std::max(0, hostBaudIndex(baud_)));
+      c.auto_baud = options_.simulator_mode ? 0 : 2;  // 2: the firmware can switch (HOSTBAUD)
       c.firmware_version = "amigobot_emulator";
+      c.ticks_mm = static_cast<std::uint16_t>(ticks_mm_);
+      c.rev_count = static_cast<std::uint16_t>(rev_count_);
+      c.drift_factor = static_cast<std::int16_t>(drift_factor_);
       return encodeConfigPac(c);
     }
     default:
@@ -233,15 +272,21 @@ void RobotEmulator::stepPhysics(double dt) {
     w_ *= s;
   }
   pose_ = core::integrateUnicycle(pose_, {v_, w_}, dt);
-  // The firmware's odometry integrates its (noisy) wheel speeds in its own frame.
-  double left = v_ - b * w_, right = v_ + b * w_;
+  // The firmware's odometry integrates its (noisy) wheel speeds in its own frame, counting
+  // encoder ticks with its working calibration: a TicksMM above the encoders' true one
+  // shrinks every distance, a larger RevCount every turn, DriftFactor scales the right wheel.
+  const double distance_scale = static_cast<double>(options_.ticks_mm) / ticks_mm_;
+  const double turn_scale = static_cast<double>(options_.rev_count) / rev_count_;
+  double left = v_ - b * w_, right = (v_ + b * w_) * (1.0 + drift_factor_ / 8192.0);
   if (options_.odometry_noise > 0.0) {
     std::normal_distribution<double> noise(0.0, options_.odometry_noise);
     left *= 1.0 + noise(rng_);
     right *= 1.0 + noise(rng_);
   }
   const core::Pose2 odo = core::integrateUnicycle({odo_x_mm_ * 1e-3, odo_y_mm_ * 1e-3, odo_th_},
-                                                  {0.5 * (left + right), 0.5 * (right - left) / b}, dt);
+                                                  {0.5 * (left + right) * distance_scale,
+                                                   0.5 * (right - left) / b * turn_scale},
+                                                  dt);
   odo_x_mm_ = odo.x * 1e3;
   odo_y_mm_ = odo.y * 1e3;
   odo_th_ = odo.theta;
@@ -268,63 +313,6 @@ std::vector<std::uint8_t> RobotEmulator::advance(double now) {
   if (next_sip_ <= now) next_sip_ = now + options_.robot.sip_cycle;  // fell behind: do not burst
   ++counters_.sips_sent;
   return makeSip();
-}
-
-std::vector<double> RobotEmulator::sonarRanges() const {
-  std::vector<double> ranges;
-  const mrpt::poses::CPose2D robot(pose_.x, pose_.y, pose_.theta);
-  for (const SonarPose& s : options_.robot.sonars) {
-    const mrpt::poses::CPose2D sensor = robot + mrpt::poses::CPose2D(s.x, s.y, s.yaw);
-    double best = options_.sonar_max_range;
-    for (const core::Disk& d : options_.obstacles) {
-      const double dx = d.center.x() - sensor.x(), dy = d.center.y() - sensor.y();
-      const double dist = std::hypot(dx, dy);
-      if (dist <= d.radius) {
-        best = 0.0;
-        continue;
-      }
-      // The disk is seen when any part of it is inside the cone; range to its surface.
-      const double bearing = std::abs(core::wrapAngle(std::atan2(dy, dx) - sensor.phi()));
-      if (bearing <= options_.sonar_half_cone + std::asin(d.radius / dist)) best = std::min(best, dist - d.radius);
-    }
-    ranges.push_back(best);
-  }
-  return ranges;
-}
-
-std::vector<std::uint8_t> RobotEmulator::makeSip() {
-  const RobotParams& p = options_.robot;
-  const double b = p.halfTrack();
-  Sip sip;
-  const bool moving = std::abs(v_) > 1e-4 || std::abs(w_) > 1e-4;
-  sip.type = options_.simulator_mode || !moving ? kSipStopped : kSipMoving;
-  sip.x = static_cast<std::uint16_t>(wrapUnits(odo_x_mm_ / p.dist_conv_factor, 0x8000));
-  sip.y = static_cast<std::uint16_t>(wrapUnits(odo_y_mm_ / p.dist_conv_factor, 0x8000));
-  sip.theta = static_cast<std::int16_t>(wrapUnits(odo_th_ / p.angle_conv_factor, p.angle_units_per_turn));
-  sip.left_vel = static_cast<std::int16_t>(std::lround((v_ - b * w_) * 1e3 / p.vel_conv_factor));
-  sip.right_vel = static_cast<std::int16_t>(std::lround((v_ + b * w_) * 1e3 / p.vel_conv_factor));
-  sip.battery = static_cast<std::uint8_t>(std::lround(options_.battery_voltage * 10));
-  sip.control = sip.theta;
-  sip.flags = (motors_ ? kFlagMotorsEnabled : 0) | (sonar_on_ ? kFlagSonarArrays : 0);
-  if (sonar_on_ && !p.sonars.empty()) {
-    const std::vector<double> ranges = sonarRanges();
-    // The firmware reports the transducers fired since the last SIP: half the ring per cycle.
-    const std::size_t per_sip = options_.simulator_mode ? ranges.size() : std::max<std::size_t>(1, ranges.size() / 2);
-    for (std::size_t k = 0; k < per_sip; ++k) {
-      const std::size_t i = (next_sonar_ + k) % ranges.size();
-      sip.sonars.push_back({static_cast<std::uint8_t>(i),
-                            static_cast<std::uint16_t>(std::lround(ranges[i] * 1e3 / p.range_conv_factor))});
-    }
-    next_sonar_ = (next_sonar_ + per_sip) % ranges.size();
-  }
-  sip.grip_state = 0;
-  sip.battery_x10 = static_cast<std::uint16_t>(std::lround(options_.battery_voltage * 10));
-  sip.rot_vel = static_cast<std::int16_t>(std::lround(w_ / kDegToRad * 10));
-  sip.temperature = -127;
-  // Tail length: AmigOS ends at DIGOUT, AmigoSH adds BATTERYX10 + CHARGESTATE, the simulator
-  // sends everything up to the state of charge.
-  const int tail = options_.simulator_mode ? 12 : (p.model == "amigo-sh" ? 7 : 5);
-  return encodeSip(sip, tail);
 }
 
 EmulatorStatus RobotEmulator::status(double now) const {

@@ -19,6 +19,11 @@ const core::FieldTable<EmulatorOptions>& emulatorFields() {
       field("sonar_half_cone", &E::sonar_half_cone, "rad", "half opening angle of a transducer's cone",
             core::positive()),
       field("physics_step", &E::physics_step, "s", "kinematics step", core::interval(0.0, true, 0.05, false)),
+      field("ticks_mm", &E::ticks_mm, "ticks/mm", "FLASH TicksMM: the encoders' true ticks per mm", core::atLeast(1)),
+      field("rev_count", &E::rev_count, "ticks/180deg", "FLASH RevCount: the encoders' ticks per half turn",
+            core::atLeast(1)),
+      field("left_open_at_baud", &E::left_open_at_baud, "baud",
+            "> 0: start open at this baud, as a crashed session leaves it; 0: closed at 9600", core::atLeast(0)),
   };
   return table;
 }

@@ -136,8 +136,16 @@ void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
   if (bytes.empty()) return;
   const int fd = tcp_active_ ? tcp_client_.fd : pty_.fd;
   if (fd < 0) return;
+  // The pty's bytes go through the robot's UART model; TCP has no baud.
+  const auto deliver = [&](const std::vector<std::uint8_t>& out) {
+    if (tcp_active_) {
+      writeAll(fd, out);
+    } else {
+      pty_line_.transmit(out, robot_.baud(), wallSeconds());
+    }
+  };
   if (options_.corrupt_probability <= 0.0) {
-    writeAll(fd, bytes);
+    deliver(bytes);
     return;
   }
   // A noisy line: each packet may get a flipped byte, a dropped tail or leading garbage.
@@ -152,7 +160,13 @@ void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
     }
     ++corrupted_;
   }
-  writeAll(fd, out);
+  deliver(out);
+}
+
+void EmulatorServer::flushPtyLine() {
+  if (pty_.fd < 0) return;
+  const std::vector<std::uint8_t> out = pty_line_.due(wallSeconds(), ttyBaud(pty_slave_));
+  if (!out.empty()) writeAll(pty_.fd, out);
 }
 
 void EmulatorServer::readLink(Link& link, bool is_tcp) {
@@ -162,7 +176,13 @@ void EmulatorServer::readLink(Link& link, bool is_tcp) {
     if (is_tcp && (n == 0 || (errno != EAGAIN && errno != EINTR))) dropTcpClient();
     return;
   }
-  link.parser.feed(buffer, static_cast<std::size_t>(n));
+  if (is_tcp) {
+    link.parser.feed(buffer, static_cast<std::size_t>(n));
+  } else {
+    const std::vector<std::uint8_t> heard =
+        SerialLineModel::receive(buffer, static_cast<std::size_t>(n), ttyBaud(pty_slave_), robot_.baud());
+    link.parser.feed(heard.data(), heard.size());
+  }
   Packet packet;
   while (link.parser.next(packet)) {
     tcp_active_ = is_tcp;
@@ -236,6 +256,7 @@ void EmulatorServer::run(const std::atomic<bool>& stop) {
       }
     }
     sendToActive(robot_.advance(now()));
+    flushPtyLine();
   }
 }
 

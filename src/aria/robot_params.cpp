@@ -5,6 +5,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "amigobot_tracking/aria/commands.h"
+
 namespace amigobot_tracking {
 namespace aria {
 namespace {
@@ -29,17 +31,26 @@ std::string RobotParams::validate() const {
       {"max_rot_velocity", max_rot_velocity}, {"trans_accel", trans_accel},
       {"trans_decel", trans_decel},       {"rot_accel", rot_accel},
       {"rot_decel", rot_decel},           {"sip_cycle", sip_cycle},
-      {"watchdog", watchdog}};
+      {"watchdog", watchdog},             {"sonar_max_range", sonar_max_range}};
   for (const auto& [name, value] : positive) {
     if (!positiveFinite(value)) return std::string(name) + ": must be positive and finite, got " + std::to_string(value);
   }
   if (model.empty()) return "model: must not be empty";
   if (angle_units_per_turn < 8) return "angle_units_per_turn: must be at least 8, got " + std::to_string(angle_units_per_turn);
-  if (switch_to_baud <= 0) return "switch_to_baud: must be positive";
+  if (hostBaudIndex(switch_to_baud) < 0) {
+    return "switch_to_baud: must be a HOSTBAUD rate (9600, 19200, 38400, 57600, 115200), got " +
+           std::to_string(switch_to_baud);
+  }
   for (std::size_t i = 0; i < sonars.size(); ++i) {
     const auto& s = sonars[i];
     if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.yaw)) {
       return "sonars[" + std::to_string(i) + "]: non-finite pose";
+    }
+  }
+  for (std::size_t i = 0; i < sonar_polling.size(); ++i) {
+    if (sonar_polling[i] < 0 || static_cast<std::size_t>(sonar_polling[i]) >= sonars.size()) {
+      return "sonar_polling[" + std::to_string(i) + "]: transducer " + std::to_string(sonar_polling[i]) +
+             " does not exist (0.." + std::to_string(static_cast<int>(sonars.size()) - 1) + ")";
     }
   }
   return {};
@@ -109,6 +120,8 @@ RobotParams loadRobotParams(const std::string& path) {
   get("sip_cycle", p.sip_cycle);
   get("watchdog", p.watchdog);
   get("switch_to_baud", p.switch_to_baud);
+  get("sonar_max_range", p.sonar_max_range);
+  get("sonar_polling", p.sonar_polling);
   if (const YAML::Node sonars = root["sonars"]) {
     if (!sonars.IsSequence()) throw std::runtime_error(path + ": sonars: expected a list of {x, y, heading_deg}");
     p.sonars.clear();
@@ -127,7 +140,8 @@ RobotParams loadRobotParams(const std::string& path) {
                                   "angle_units_per_turn", "dist_conv_factor", "vel_conv_factor",
                                   "range_conv_factor", "diff_conv_factor", "vel2_divisor", "max_velocity",
                                   "max_rot_velocity", "trans_accel", "trans_decel", "rot_accel", "rot_decel",
-                                  "sip_cycle", "watchdog", "switch_to_baud", "sonars"};
+                                  "sip_cycle", "watchdog", "switch_to_baud", "sonars", "sonar_max_range",
+                                  "sonar_polling"};
     const std::string key = it->first.as<std::string>();
     bool found = false;
     for (const char* k : known) found = found || key == k;

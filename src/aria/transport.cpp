@@ -44,6 +44,8 @@ class TcpTransport : public Transport {
     }
   }
   bool isSerial() const override { return false; }
+  void setBaud(int /*baud*/) override {}
+  int baud() const override { return 0; }
   std::string describe() const override { return "tcp " + host_ + ":" + std::to_string(port_); }
 
  private:
@@ -86,6 +88,17 @@ class SerialTransport : public Transport {
     }
   }
   bool isSerial() const override { return true; }
+  void setBaud(int baud) override {
+    try {
+      port_.setConfig(baud);
+      port_.purgeBuffers();  // bytes read at the old speed are garbage at the new one
+    } catch (const std::exception& e) {
+      throw std::runtime_error(describe() + ": cannot switch to " + std::to_string(baud) +
+                               " baud: " + std::string(e.what()).substr(0, 300));
+    }
+    baud_ = baud;
+  }
+  int baud() const override { return baud_; }
   std::string describe() const override { return "serial " + device_ + " at " + std::to_string(baud_) + " baud"; }
 
  private:

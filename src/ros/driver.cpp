@@ -1,5 +1,7 @@
 #include "amigobot_tracking/ros/driver.h"
 
+#include "amigobot_tracking/ros/sonar_cloud.h"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -84,6 +86,8 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   sonar_pub_ = nh_.advertise<sensor_msgs::Range>("sonar", 50);
   battery_pub_ = nh_.advertise<std_msgs::Float64>("battery_voltage", 1);
   motors_pub_ = nh_.advertise<std_msgs::Bool>("motors_state", 1, true);
+  sonar_cloud_pub_ = nh_.advertise<sensor_msgs::PointCloud2>("sonar_cloud", 1);
+  state_topics_ = std::make_unique<DriverStateTopics>(nh_, params_.base_frame);
   enable_srv_ = nh_.advertiseService("enable_motors", &AmigobotDriver::enableMotors, this);
   disable_srv_ = nh_.advertiseService("disable_motors", &AmigobotDriver::disableMotors, this);
   reset_srv_ = nh_.advertiseService("reset_odometry", &AmigobotDriver::resetOdometry, this);
@@ -106,9 +110,30 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   client_->start();
   link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.sip_cycle), [this](const ros::TimerEvent&) { checkLink(); });
   cmd_vel_sub_ = nh_.subscribe("cmd_vel", 1, &AmigobotDriver::onCmdVel, this);
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>>(pnh_);
+  reconfigure_->setCallback([this](amigobot_tracking::DriverConfig& config, std::uint32_t level) {
+    onReconfigure(config, level);
+  });
+}
+
+void AmigobotDriver::onReconfigure(amigobot_tracking::DriverConfig& config, std::uint32_t /*level*/) {
+  const std::string error = client_->setMotionLimits({config.v_max, config.w_max, config.cmd_vel_timeout,
+                                                      config.trans_accel, config.trans_decel, config.rot_accel,
+                                                      config.rot_decel});
+  if (error.empty()) return;
+  ROS_WARN_STREAM("dynamic_reconfigure: " << error << "; keeping the limits in force");
+  const aria::MotionLimits now = client_->motionLimits();
+  config.v_max = now.v_max;
+  config.w_max = now.w_max;
+  config.cmd_vel_timeout = now.command_timeout;
+  config.trans_accel = now.trans_accel;
+  config.trans_decel = now.trans_decel;
+  config.rot_accel = now.rot_accel;
+  config.rot_decel = now.rot_decel;
 }
 
 AmigobotDriver::~AmigobotDriver() {
+  reconfigure_.reset();
   cmd_vel_sub_.shutdown();
   diagnostics_timer_.stop();
   link_timer_.stop();
@@ -160,7 +185,7 @@ void AmigobotDriver::onSip(const aria::RobotState& state) {
   publishMotorsStateLocked(state.motors_enabled);
   // One sensor_msgs/Range per transducer reading in this SIP, in the transducer's frame.
   // REP 117: no echo within the maximum range is +inf.
-  const double max_range = 5.0;
+  const double max_range = params_.client.robot.sonar_max_range;
   for (std::size_t i = 0; i < state.sonar_updated.size(); ++i) {
     if (!state.sonar_updated[i]) continue;
     sensor_msgs::Range range;
@@ -174,6 +199,11 @@ void AmigobotDriver::onSip(const aria::RobotState& state) {
     range.range = r >= max_range ? std::numeric_limits<float>::infinity() : static_cast<float>(r);
     sonar_pub_.publish(range);
   }
+  if (sonar_cloud_pub_.getNumSubscribers() > 0) {
+    sonar_cloud_pub_.publish(makeSonarCloud(state.sonar_ranges, params_.client.robot.sonars, max_range,
+                                            params_.base_frame, stamp));
+  }
+  state_topics_->publish(state, client_->status().config, stamp);
 }
 
 void AmigobotDriver::publishMotorsStateLocked(bool enabled) {
@@ -235,11 +265,15 @@ void AmigobotDriver::diagnose(diagnostic_updater::DiagnosticStatusWrapper& d) {
   }
   d.add("link", aria::linkStateName(s.link));
   d.add("port", params_.client.port);
+  d.add("baud", s.baud > 0 ? std::to_string(s.baud) : std::string("- (TCP)"));
   if (s.identity) d.add("robot", s.identity->name + " (" + s.identity->robot_class + " " + s.identity->subclass + ")");
   sip_rate_->report(d, connected);  // "SIP rate [Hz]" and its window; no SIPs is no news without a link
   d.add("SIPs", s.sips);
   d.add("connections", s.connections);
   d.add("still-open recoveries", s.still_open_recoveries);
+  d.add("baud recoveries (CLOSE at every baud)", s.baud_recoveries);
+  d.add("bytes received", s.bytes_received);
+  d.add("bytes sent", s.bytes_sent);
   d.add("parser packets", s.parser.packets);
   d.add("parser garbage bytes", s.parser.garbage_bytes);
   d.add("parser bad checksums", s.parser.bad_checksum);

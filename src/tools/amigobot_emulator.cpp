@@ -61,6 +61,9 @@ int main(int argc, char** argv) {
   app.add_option("--time-scale", server.time_scale, "emulated seconds per wall second")->capture_default_str();
   app.add_option("--corrupt", server.corrupt_probability,
                  "noisy line: each robot packet is damaged with this probability")->capture_default_str();
+  app.add_option("--left-open-at", robot.left_open_at_baud,
+                 "start open and talking at this baud, as a crashed session that had switched it leaves the "
+                 "robot (pty only; CLOSE returns it to 9600)");
   app.add_option("--command-log", command_log, "journal of every motion command received: 't command v w' per line");
   app.add_flag("--simulator-mode", robot.simulator_mode,
                "behave like an ARIA simulator (MobileSim): motors start enabled, SIPs always 0x32, watchdog "

@@ -22,14 +22,9 @@ std::string ptyLink(const std::string& tag) {
 }
 
 ClientConfig clientConfig(const std::string& port) {
-  ClientConfig c;
-  c.port = port;
+  ClientConfig c = emulatorClientConfig(port);
   c.v_max = 0.5;
   c.w_max = 2.0;
-  c.reconnect_delay_min = 0.2;
-  c.reconnect_delay_max = 1.0;
-  c.link_timeout = 1.5;
-  c.command_timeout = 0.0;  // the tests drive with sparse setVelocity calls
   return c;
 }
 
@@ -314,4 +309,22 @@ TEST(AriaDriverEmulator, GivesUpOnASilentPortWithAReadableError) {
   EXPECT_NE(client.status().link, LinkState::kConnected);
   client.stop();
   EXPECT_EQ(client.status().link, LinkState::kStopped);
+}
+
+// TicksMM from the client's parameters reaches the firmware, comes back in CONFIGpac and
+// changes the odometry's scale: twice the encoders' ticks per mm halves every distance.
+TEST(AriaDriverEmulator, TicksMmFromTheParametersChangesTheOdometryScale) {
+  EmulatorProcess emu;
+  ClientConfig config = clientConfig(emu.address());
+  config.enable_motors = true;
+  config.ticks_mm = 256;  // the emulator's encoders: 128 ticks/mm
+  auto client = connectClient(config);
+  ASSERT_TRUE(client->status().config);
+  EXPECT_EQ(client->status().config->ticks_mm, 256);
+  ASSERT_TRUE(waitFor([&] { return emu.truth().motors; }, 10.0));
+  client->setVelocity({0.2, 0.0});
+  EXPECT_TRUE(waitFor([&] { return emu.truth().pose.x > 0.3; }, 10.0));
+  client->setVelocity({0.0, 0.0});
+  waitStopped(emu);
+  EXPECT_NEAR(odom(*client).x, 0.5 * emu.truth().pose.x, 0.01);
 }

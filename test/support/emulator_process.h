@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "amigobot_tracking/aria/client.h"
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/aria/packet.h"
@@ -37,6 +38,18 @@ inline double now() {
 }
 
 // Polls `predicate` every 20 ms until it holds or `timeout` [s] passes.
+// A client for the emulator: quick reconnects, a short link timeout, no command timeout
+// (tests drive with sparse setVelocity calls).
+inline amigobot_tracking::aria::ClientConfig emulatorClientConfig(const std::string& port) {
+  amigobot_tracking::aria::ClientConfig c;
+  c.port = port;
+  c.reconnect_delay_min = 0.2;
+  c.reconnect_delay_max = 1.0;
+  c.link_timeout = 1.5;
+  c.command_timeout = 0.0;
+  return c;
+}
+
 inline bool waitFor(const std::function<bool()>& predicate, double timeout) {
   const double end = now() + timeout;
   while (now() < end) {
@@ -121,6 +134,10 @@ class EmulatorProcess {
     }
   }
 
+  // Sends `signal` and returns at once (SIGSTOP / SIGCONT freeze and thaw the robot).
+  void signal(int signal) {
+    if (pid_ > 0) ::kill(pid_, signal);
+  }
   void kill(int signal) {
     if (pid_ <= 0) return;
     ::kill(pid_, signal);

@@ -53,3 +53,32 @@ TEST(AriaClientConfig, BadFieldsAreNamed) {
   bad.v_max = -1;
   EXPECT_THROW(AriaClient client(bad), std::invalid_argument);
 }
+
+TEST(AriaClientConfig, RunTimeLimitsAreCheckedLikeTheConfigAndNameTheField) {
+  AriaClient client(ClientConfig{}, [](LogLevel, const std::string&) {});
+  MotionLimits limits = client.motionLimits();
+  EXPECT_DOUBLE_EQ(limits.v_max, 0.3);
+  limits.v_max = 1.5;  // amigo max_velocity 1.0
+  EXPECT_NE(client.setMotionLimits(limits).find("v_max: exceeds"), std::string::npos);
+  limits.v_max = 0.2;
+  limits.rot_accel = -1.0;
+  EXPECT_NE(client.setMotionLimits(limits).find("rot_accel"), std::string::npos);
+  limits.rot_accel = 2.0;
+  EXPECT_EQ(client.setMotionLimits(limits), "");
+  EXPECT_DOUBLE_EQ(client.motionLimits().v_max, 0.2);
+  EXPECT_DOUBLE_EQ(client.motionLimits().rot_accel, 2.0);
+}
+
+TEST(AriaClientConfig, CalibrationOutsideTheFirmwareRangeIsRefused) {
+  ClientConfig c;
+  c.ticks_mm = -1;
+  EXPECT_NE(c.validate().find("ticks_mm"), std::string::npos);
+  c.ticks_mm = 128;
+  c.drift_factor = 40000;
+  EXPECT_NE(c.validate().find("drift_factor"), std::string::npos);
+  c.drift_factor = -40;
+  c.rev_count = -1;
+  EXPECT_NE(c.validate().find("rev_count"), std::string::npos);
+  c.rev_count = 16384;
+  EXPECT_EQ(c.validate(), "");
+}

@@ -9,29 +9,13 @@
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/aria/emulator.h"
 #include "amigobot_tracking/aria/odometry.h"
+#include "aria_packets.h"
 
 using namespace amigobot_tracking::aria;
+using amigobot_test::openRobot;
+using amigobot_test::packetOf;
 
 namespace {
-Packet packetOf(const std::vector<std::uint8_t>& bytes) {
-  PacketParser parser;
-  parser.feed(bytes);
-  Packet p;
-  EXPECT_TRUE(parser.next(p));
-  return p;
-}
-
-// Runs the handshake and OPEN at time t; returns the SYNC reply types.
-std::vector<int> openRobot(RobotEmulator& robot, double t) {
-  std::vector<int> types;
-  for (int n = 0; n < 3; ++n) {
-    const auto reply = robot.handle(packetOf(syncPacket(n)), t);
-    types.push_back(reply.empty() ? -1 : packetOf(reply).type);
-  }
-  robot.handle(packetOf(commandPacket(Command::kOpen, 1)), t);
-  return types;
-}
-
 std::optional<Sip> sipAt(RobotEmulator& robot, double t) {
   const auto bytes = robot.advance(t);
   if (bytes.empty()) return std::nullopt;

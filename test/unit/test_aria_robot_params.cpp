@@ -27,6 +27,9 @@ void expectSame(const RobotParams& a, const RobotParams& b) {
   EXPECT_DOUBLE_EQ(a.robot_radius, b.robot_radius);
   EXPECT_DOUBLE_EQ(a.max_velocity, b.max_velocity);
   EXPECT_DOUBLE_EQ(a.watchdog, b.watchdog);
+  EXPECT_DOUBLE_EQ(a.sonar_max_range, b.sonar_max_range);
+  EXPECT_EQ(a.sonar_polling, b.sonar_polling);
+  EXPECT_EQ(a.switch_to_baud, b.switch_to_baud);
   ASSERT_EQ(a.sonars.size(), b.sonars.size());
   for (std::size_t i = 0; i < a.sonars.size(); ++i) {
     EXPECT_NEAR(a.sonars[i].x, b.sonars[i].x, 1e-12) << i;
@@ -98,4 +101,14 @@ TEST(AriaRobotParams, ValidateNamesTheField) {
   p = RobotParams::amigo();
   p.angle_units_per_turn = 0;
   EXPECT_NE(p.validate().find("angle_units_per_turn"), std::string::npos);
+}
+
+TEST(AriaRobotParams, SonarAndBaudKeysAreCheckedByName) {
+  const std::string polling = loadError("sonar_polling: [0, 3, 8]\n");
+  EXPECT_NE(polling.find("sonar_polling[2]: transducer 8 does not exist"), std::string::npos) << polling;
+  const std::string range = loadError("sonar_max_range: 0\n");
+  EXPECT_NE(range.find("sonar_max_range"), std::string::npos) << range;
+  const std::string baud = loadError("switch_to_baud: 14400\n");
+  EXPECT_NE(baud.find("switch_to_baud: must be a HOSTBAUD rate"), std::string::npos) << baud;
+  EXPECT_DOUBLE_EQ(RobotParams::amigo().sonar_max_range, 4.335);
 }

@@ -29,7 +29,8 @@ namespace aria {
 
 struct ClientConfig {
   std::string port = "/dev/ttyUSB0";  // serial device, or host:port for TCP
-  int baud = 9600;                    // [baud] serial only
+  int baud = 9600;                    // [baud] serial only: the connect baud; after CONFIG
+                                      // the link moves to robot.switch_to_baud if the robot allows
   RobotParams robot = RobotParams::amigo();
   CommandMode command_mode = CommandMode::kVelRvel;
   double v_max = 0.3;                 // [m/s] diamond half-width in v
@@ -50,6 +51,11 @@ struct ClientConfig {
   int max_packet_count = kMaxSpecCount;  // parser limit on the count byte (ARIA: 255)
   double trans_accel = 0.0, trans_decel = 0.0;  // [m/s^2] SETA when > 0; 0 = firmware's
   double rot_accel = 0.0, rot_decel = 0.0;      // [rad/s^2] SETRA when > 0
+  // Odometry calibration (RosAria's TicksMM, DriftFactor, RevCount), sent after CONFIG when
+  // non-zero and read back from a second CONFIGpac. 0 = not sent: the FLASH value holds.
+  int ticks_mm = 0;      // [ticks/mm]
+  int drift_factor = 0;  // [1/8192]
+  int rev_count = 0;     // [ticks per 180 deg turn]
 
   // Empty when valid, otherwise "key: reason" for the first bad field (the table's bounds,
   // then the robot's limits, its watchdog and the back-off order).
@@ -59,6 +65,13 @@ struct ClientConfig {
 // The plain fields (robot and command_mode are chosen by name: see ros/driver.h). Keys are the
 // driver's ROS parameters (cmd_vel_timeout: the command_timeout member).
 const core::FieldTable<ClientConfig>& clientFields();
+
+// What may change while the client runs (the driver's dynamic_reconfigure).
+struct MotionLimits {
+  double v_max = 0.3, w_max = 0.8;  // [m/s], [rad/s] the diamond
+  double command_timeout = 0.6;     // [s]
+  double trans_accel = 0.0, trans_decel = 0.0, rot_accel = 0.0, rot_decel = 0.0;  // 0 = firmware's
+};
 
 enum class LinkState { kStopped, kConnecting, kConnected, kWaitingToReconnect };
 std::string linkStateName(LinkState state);
@@ -84,6 +97,9 @@ struct ClientStatus {
   double sip_rate = 0.0;          // [Hz] over the last second
   std::uint64_t connections = 0;  // successful handshakes
   std::uint64_t still_open_recoveries = 0;  // SIPs answered a SYNC: robot left open
+  std::uint64_t baud_recoveries = 0;        // CLOSE cycles through every baud after silent SYNCs
+  int baud = 0;                             // [baud] active line speed; 0 on TCP
+  std::uint64_t bytes_received = 0, bytes_sent = 0;  // on the link, every connection
   std::uint64_t commands_sent = 0;
   std::uint64_t non_finite_requests = 0;    // NaN/inf velocity requests refused
   std::string last_error;
@@ -114,6 +130,10 @@ class AriaClient {
   void setVelocity(const core::Twist2& twist);
   void requestMotors(bool enabled);
   void resetOdometry(const core::Pose2& pose = {});
+  // Checks `limits` as ClientConfig::validate does; valid ones take effect before the next
+  // command (SETA/SETRA for the positive accelerations). Returns "" or "field: reason".
+  std::string setMotionLimits(const MotionLimits& limits);
+  MotionLimits motionLimits() const;
   ClientStatus status() const;
   const ClientConfig& config() const { return config_; }
 
@@ -123,8 +143,19 @@ class AriaClient {
   bool connect();                 // one full handshake attempt; false if stopped
   // SYNC0/1/2 with the still-open recovery; nullopt if stopped, throws after max tries.
   std::optional<RobotIdentity> synchronise();
-  // OPEN, SONAR, CONFIG (with retries), SETA/SETRA; waits for the first SIP.
+  // OPEN, SONAR, CONFIG (with retries), HOSTBAUD, SETA/SETRA; waits for the first SIP.
   std::optional<ConfigPac> openRobot();
+  // Serial, robot allows it (CONFIGpac AutoBaud 2): HOSTBAUD to robot.switch_to_baud, kept
+  // only if a SIP arrives at the new rate within 900 ms.
+  void negotiateBaud(const std::optional<ConfigPac>& config);
+  // CLOSE at every baud a crashed session may have left the robot at, back to the connect baud.
+  void closeAtEveryBaud();
+  void setLineBaud(int baud);
+  // POLLING from the parameter set; TICKSMM/DRIFTFACTOR/REVCOUNT, then CONFIG to read them
+  // back (logged). Returns the newer CONFIGpac, or `config` when none came.
+  std::optional<ConfigPac> configureFirmware(std::optional<ConfigPac> config);
+  // CONFIG, re-requested every 200 ms up to config_timeout; nullopt when none came.
+  std::optional<ConfigPac> requestConfig(bool& have_sip);     // switches the port and forgets bytes parsed at the old rate
   // Pumps the link for up to `duration` [s], handing each packet to `on_packet` until it
   // returns true (then returns true).
   bool receiveFor(double duration, const std::function<bool(const Packet&)>& on_packet);
@@ -138,6 +169,8 @@ class AriaClient {
   void handlePacket(const Packet& packet);
   void handleSip(const Sip& sip);
   void updateCommand(Clock::time_point now);
+  void applyPendingLimits();      // I/O thread
+  void sendAccelerations();       // SETA/SETRA for config_'s positive accelerations
   void setLink(LinkState state);
   void log(LogLevel level, const std::string& text);
 
@@ -161,6 +194,7 @@ class AriaClient {
   bool have_request_ = false;
   bool motors_request_pending_ = false;
   std::optional<core::Pose2> odometry_reset_;
+  std::optional<MotionLimits> pending_limits_;
 
   // I/O thread only.
   Clock::time_point last_rx_{}, last_sip_{}, last_motion_sent_{}, last_enable_sent_{};

@@ -45,11 +45,21 @@ enum class Command : std::uint8_t {
   kHostBaud = 50,
   kEStop = 55,
   kBatteryInfo = 62,
+  kRevCount = 88,
+  kDriftFactor = 89,
+  kTicksMM = 93,
   kSimSetPose = 224,
   kSimReset = 225,
   kSimStat = 237,
   kSimExit = 239,
 };
+
+// The line speeds HOSTBAUD selects, by its argument 0..4.
+constexpr int kHostBauds[] = {9600, 19200, 38400, 57600, 115200};
+// HOSTBAUD argument for a baud, or -1 when the firmware has no such rate.
+int hostBaudIndex(int baud);
+// The order ARIA sends CLOSE in to free a robot left open at an unknown baud.
+constexpr int kRecoveryBauds[] = {9600, 38400, 115200, 19200, 57600};
 
 // Robot-to-client packet types.
 constexpr std::uint8_t kSync0 = 0;

@@ -33,6 +33,12 @@ struct EmulatorOptions {
   double sonar_max_range = 5.0;   // [m] reported when nothing is in the cone
   double sonar_half_cone = 0.2;   // [rad] half opening angle of a transducer's cone
   double physics_step = 0.01;     // [s]
+  // FLASH calibration: the encoders' true ticks per mm and per half turn. Arbitrary values:
+  // only the ratio to what a client sets (TICKSMM, REVCOUNT) scales the odometry.
+  int ticks_mm = 128;
+  int rev_count = 16384;
+  int left_open_at_baud = 0;      // [baud] > 0: starts open, talking at this baud, as a crashed
+                                  // session leaves it; 0: closed at the FLASH default 9600
   std::string validate() const;   // "" or "key: reason"
 };
 
@@ -51,6 +57,8 @@ struct EmulatorCounters {
 
 class RobotEmulator {
  public:
+  static constexpr int kFlashBaud = 9600;  // the HostBaud the firmware returns to on CLOSE
+
   explicit RobotEmulator(EmulatorOptions options);
 
   // A complete client packet at time `now` [s]; returns the bytes to send back (its reply;
@@ -63,6 +71,9 @@ class RobotEmulator {
   void clientDisconnected();
 
   bool isOpen() const { return open_; }
+  // [baud] the robot's UART: 9600 after CLOSE, HOSTBAUD changes it while open (serial only:
+  // the server applies it to the pseudo-terminal, TCP ignores it).
+  int baud() const { return baud_; }
   bool motorsEnabled() const { return motors_; }
   const core::Pose2& truePose() const { return pose_; }
   core::Twist2 trueTwist() const { return {v_, w_}; }
@@ -91,6 +102,7 @@ class RobotEmulator {
   EmulatorOptions options_;
   std::mt19937 rng_;
   bool open_ = false;
+  int baud_ = kFlashBaud;
   int sync_stage_ = 0;  // 0 waiting for SYNC0 ... 3 synchronised, waiting for OPEN
   bool motors_ = false;
   bool sonar_on_ = true;
@@ -105,7 +117,9 @@ class RobotEmulator {
   double odo_x_mm_ = 0.0, odo_y_mm_ = 0.0, odo_th_ = 0.0;  // firmware odometry
   double last_time_ = -1.0, last_command_ = 0.0, next_sip_ = 0.0;
   bool watchdog_tripped_ = false;
-  std::size_t next_sonar_ = 0;
+  std::size_t next_sonar_ = 0;       // position in the firing order
+  std::vector<std::size_t> polling_;  // firing order (POLLING); empty: 0, 1, 2, ...
+  int ticks_mm_, rev_count_, drift_factor_ = 0;  // working calibration (TICKSMM, ...)
   EmulatorCounters counters_;
 };
 

@@ -1,6 +1,6 @@
 // I/O around RobotEmulator: the robot port over TCP (one client at a time, like the one
 // serial port of a robot: a new connection replaces the old one) and over a pseudo-terminal
-// with a stable symlink, plus a line-based status socket that answers every line with the
+// with a stable symlink (a modelled UART: aria/emulator_line.h), plus a line-based status socket that answers every line with the
 // ground-truth status line. Plain POSIX sockets and poll(): the emulator is the server side,
 // which MRPT's client classes do not cover.
 #pragma once
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "amigobot_tracking/aria/emulator.h"
+#include "amigobot_tracking/aria/emulator_line.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -50,6 +51,7 @@ class EmulatorServer {
   void acceptRobotClient();
   void readLink(Link& link, bool is_tcp);
   void sendToActive(const std::vector<std::uint8_t>& bytes);
+  void flushPtyLine();  // the robot's paced bytes that have left its UART by now
   void dropTcpClient();
   void serveStatus(std::size_t index, bool& quit);
 
@@ -65,6 +67,7 @@ class EmulatorServer {
   double start_wall_ = 0.0;
   std::mt19937 noise_;
   std::uint64_t corrupted_ = 0;
+  SerialLineModel pty_line_;  // baud and pacing of the pty (TCP has neither)
 };
 
 }  // namespace aria

@@ -41,6 +41,9 @@ struct RobotParams {
   double watchdog = 2.0;                // [s]
   int switch_to_baud = 38400;           // [baud]
   std::vector<SonarPose> sonars;
+  double sonar_max_range = 4.335;       // [m] farthest echo a transducer reports (amigo.p: 4335 mm)
+  std::vector<int> sonar_polling;       // POLLING firing order (transducer numbers); empty: the
+                                        // firmware's own order (ARIA sends no POLLING)
 
   // Half the wheel separation b [m], from DiffConvFactor (w = (R - L) / (2 b)).
   double halfTrack() const { return 1e-3 / diff_conv_factor; }

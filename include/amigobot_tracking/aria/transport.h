@@ -24,6 +24,11 @@ class Transport {
   // Writes everything or throws.
   virtual void write(const std::vector<std::uint8_t>& bytes) = 0;
   virtual bool isSerial() const = 0;
+  // Serial: changes the line speed of the open port (throws naming the port and baud if the
+  // device refuses it). TCP has no baud: a no-op.
+  virtual void setBaud(int baud) = 0;
+  // The line speed now [baud]; 0 on TCP.
+  virtual int baud() const = 0;
   virtual std::string describe() const = 0;
 };
 

@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include <amigobot_tracking/DriverConfig.h>
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
@@ -18,6 +20,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "amigobot_tracking/aria/client.h"
+#include "amigobot_tracking/ros/driver_state_topics.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 
 namespace amigobot_tracking {
@@ -62,6 +65,8 @@ class AmigobotDriver {
   bool resetOdometry(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   void publishSonarTransforms();
+  // dynamic_reconfigure: a set the client refuses is answered with the limits in force.
+  void onReconfigure(amigobot_tracking::DriverConfig& config, std::uint32_t level);
   // motors_state, latched, published on change only; publish_mutex_ held.
   void publishMotorsStateLocked(bool enabled);
   // Without a link the motors are not enabled, whatever the last SIP said (SIP period).
@@ -71,6 +76,7 @@ class AmigobotDriver {
   ros::NodeHandle nh_, pnh_;
   ros::Subscriber cmd_vel_sub_;
   ros::Publisher odom_pub_, sonar_pub_, battery_pub_, motors_pub_;
+  ros::Publisher sonar_cloud_pub_;  // built only while someone subscribes
   ros::ServiceServer enable_srv_, disable_srv_, reset_srv_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
@@ -79,7 +85,9 @@ class AmigobotDriver {
   ros::Timer diagnostics_timer_, link_timer_;
   std::mutex publish_mutex_;
   int last_motors_state_ = -1;  // -1: not yet published
+  std::unique_ptr<DriverStateTopics> state_topics_;  // battery_state, stall, bumper, estop
   std::unique_ptr<aria::AriaClient> client_;
+  std::unique_ptr<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>> reconfigure_;
 };
 
 }  // namespace ros_layer
