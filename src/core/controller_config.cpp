@@ -3,6 +3,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "amigobot_tracking/core/band_implicit.h"
+#include "amigobot_tracking/core/diamond.h"
+
 namespace amigobot_tracking {
 namespace core {
 namespace {
@@ -30,6 +33,12 @@ std::string ControllerConfig::validate() const {
     err << "rho_0 must be > rho_inf = " << rho_inf << ", got " << rho_0;
   } else if (!(max_error_ratio > 0.0 && max_error_ratio < 1.0)) {
     err << "max_error_ratio must be in (0, 1), got " << max_error_ratio;
+  } else if (!(max_error_ratio > sustainedConflictRatio(k_r, k_o))) {
+    err << "max_error_ratio must be above " << sustainedConflictRatio(k_r, k_o)
+        << ", the |e|/rho of a sustained conflict for k_r = " << k_r << " and k_o = " << k_o
+        << " (xi atanh xi = k_o / k_r; raise max_error_ratio or k_r), got " << max_error_ratio;
+  } else if (!(std::isfinite(max_relaxation_interval) && max_relaxation_interval > 0.0)) {
+    err << "max_relaxation_interval must be a finite number > 0, got " << max_relaxation_interval;
   } else if (min_margin >= delta) {
     err << "min_margin must be < delta = " << delta << ", got " << min_margin;
   } else if (!(std::isfinite(k_t) && k_t >= 0.0)) {
@@ -43,6 +52,27 @@ std::string ControllerConfig::validate() const {
   } else {
     return estimator.validate();
   }
+  return err.str();
+}
+
+double sustainedConflictRatio(double k_r, double k_o) {
+  const double target = k_o / k_r;
+  double lo = 0.0, hi = 1.0;  // xi atanh xi increases from 0 to +inf on [0, 1)
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid * std::atanh(mid) < target) lo = mid; else hi = mid;
+  }
+  return hi;
+}
+
+std::string bandReachError(const ControllerConfig& config, double control_period) {
+  const double reach = maxOffsetSpeed(DiamondSet(config.v_max, config.w_max), config.offset) * control_period;
+  if (reach < config.delta) return "";
+  std::ostringstream err;
+  err << "delta = " << config.delta << " m is crossed in one control period: the offset point moves up to "
+      << reach << " m in " << control_period << " s (v_max = " << config.v_max << " m/s, w_max = " << config.w_max
+      << " rad/s, offset = " << config.offset << " m); raise delta above " << reach
+      << " m, lower v_max/w_max or raise control_rate";
   return err.str();
 }
 

@@ -269,7 +269,8 @@ void TrackingNode::onReconfigure(TrackingConfig& config, uint32_t) {
   candidate.delta = config.delta;
   candidate.v_max = config.v_max;
   candidate.w_max = config.w_max;
-  const std::string invalid = candidate.validate();
+  std::string invalid = candidate.validate();
+  if (invalid.empty()) invalid = core::bandReachError(candidate, 1.0 / node_config_.control_rate);
   if (!invalid.empty()) {
     const core::ControllerConfig& kept = config_pending_ ? pending_config_ : controller_config_;
     ROS_ERROR_STREAM_NAMED("tracking", "reconfigure rejected, gains unchanged: " << invalid);

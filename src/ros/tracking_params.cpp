@@ -183,6 +183,7 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
                   readParam(pnh, "body_safe", &c->body_safe, &error) &&
                   readParam(pnh, "min_margin", &c->min_margin, &error) &&
                   readParam(pnh, "max_error_ratio", &c->max_error_ratio, &error) &&
+                  readParam(pnh, "max_relaxation_interval", &c->max_relaxation_interval, &error) &&
                   readParam(pnh, "estimator/a1", &e.a1, &error) && readParam(pnh, "estimator/a2", &e.a2, &error) &&
                   readParam(pnh, "estimator/lambda_o", &e.lambda_o, &error) &&
                   readParam(pnh, "estimator/rho_o", &e.rho_o, &error) &&
@@ -205,6 +206,9 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
     err << "parameter ~v_max must be <= ~robot_v_max = " << node.robot_v_max << ", got " << c->v_max;
   } else if (c->w_max > node.robot_w_max) {
     err << "parameter ~w_max must be <= ~robot_w_max = " << node.robot_w_max << ", got " << c->w_max;
+  } else {
+    const std::string band = core::bandReachError(*c, 1.0 / node.control_rate);
+    if (!band.empty()) err << "parameter ~" << band << " (~control_rate = " << node.control_rate << " Hz)";
   }
   return err.str();
 }
