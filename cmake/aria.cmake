@@ -9,7 +9,9 @@ amigobot_add_library(amigobot_tracking_aria
   src/aria/wheel_command.cpp
   src/aria/transport.cpp
   src/aria/client.cpp
+  src/aria/client_config.cpp
   src/aria/emulator.cpp
+  src/aria/emulator_options.cpp
   src/aria/emulator_server.cpp
   src/aria/emulator_status.cpp
 )
@@ -42,5 +44,5 @@ if(CATKIN_ENABLE_TESTING)
   add_dependencies(test_aria_emulator_status amigobot_emulator)
 endif()
 
-# The libFuzzer target of the packet parser is built by scripts/run_fuzz.sh with clang.
+# The libFuzzer target of the packet parser is built by scripts/test/run_fuzz.sh with clang.
 amigobot_add_benchmark(bench_aria test/bench/bench_aria.cpp amigobot_tracking_aria)

@@ -8,6 +8,8 @@ amigobot_add_library(amigobot_tracking_sim
   src/sim/baseline_controller.cpp
   src/sim/baseline_estimators.cpp
   src/sim/scenario.cpp
+  src/sim/scenario_fields.cpp
+  src/sim/scenario_names.cpp
   src/sim/simulator.cpp
   src/sim/monte_carlo.cpp
   src/sim/json.cpp
@@ -17,7 +19,7 @@ target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML
 
 amigobot_add_tool(amigobot_sim src/tools/amigobot_sim.cpp)
 target_link_libraries(amigobot_sim amigobot_tracking_sim)
-target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/plot_run.py")
+target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/reports/plot_run.py")
 
 if(CATKIN_ENABLE_TESTING)
   foreach(unit closed_loop metrics baselines controller_extensions)

@@ -1,4 +1,4 @@
-// Scenario files: the issue's minimum is accepted as is; every bad input is refused with a
+// Scenario files: the minimal scenario is accepted as is; every bad input is refused with a
 // message naming the file and the key, before anything runs.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@ using namespace amigobot_tracking;
 
 namespace {
 
-// The minimum of issue 3, verbatim.
+// The minimal scenario (README), verbatim.
 const std::string kMinimum = R"(
 robot:      {radius: 0.2, offset: 0.3, v_max: 5.0, w_max: 5.0, initial_pose: [2.0, -0.5, 1.5708]}
 controller: {k_d: 3, k_o: 1, k_r: 0.5, lambda: 5, rho_inf: 0.1, rho_0: 1.84, delta: 0.016,
@@ -183,7 +183,7 @@ TEST(SimScenario, ShippedScenariosLoad) {
   }
 }
 
-// Issue 8: the switches beyond the paper, the robot pose's timing, moving obstacles.
+// The switches beyond the paper, the robot pose's timing, moving obstacles.
 TEST(SimScenario, BeyondThePaperSwitchesDefaultToThePaper) {
   const sim::Scenario s = sim::parseScenario(kMinimum, "min.yaml");
   const core::ControllerConfig paper;
@@ -238,4 +238,26 @@ TEST(SimScenario, RefusesBadBeyondThePaperKeys) {
   expectRefused(kMinimum + "localization: 0.1\n", "localization");
   expectRefused(replaced(kMinimum, "radius: 0.15}", "radius: 0.15, velocity: [0.3]}"), "obstacles[0].velocity");
   expectRefused(replaced(kMinimum, "radius: 0.15}", "radius: 0.15, velocity: fast}"), "obstacles[0].velocity");
+}
+
+// amigobot_sim --set section.key=value: applied to the file's tree and checked like the file.
+TEST(SimScenario, OverridesAreCheckedLikeTheFile) {
+  const sim::Scenario s = sim::parseScenario(kMinimum, "min.yaml", {"controller.k_d=2", "target.delay=0.1",
+                                                                   "controller.tangential_avoidance=true"});
+  EXPECT_EQ(s.setup.controller.k_d, 2.0);
+  EXPECT_EQ(s.setup.sensor.delay, 0.1);
+  EXPECT_TRUE(s.setup.controller.tangential_avoidance);
+  const auto refused = [](const std::string& assignment, const std::string& key) {
+    try {
+      sim::parseScenario(kMinimum, "bad.yaml", {assignment});
+      ADD_FAILURE() << "accepted --set " << assignment;
+    } catch (const sim::ScenarioError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  refused("controller.k_d=-1", "controller.k_d: must be a finite number > 0");
+  refused("controller.k_dd=1", "controller.k_dd: unknown key");
+  refused("controller.body_safe=maybe", "controller.body_safe");
+  refused("simulation.duration", "expected section.key=value");
+  refused("reference.amplitude=0", "reference.amplitude");
 }
