@@ -22,7 +22,7 @@ target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance band_implicit controller_config
+  foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance band_implicit controller_config controller_guards
           obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_core)

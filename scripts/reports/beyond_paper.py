@@ -14,7 +14,14 @@ from beyond_paper_runs import (COMPENSATION, DELAYS, MC_RUNS, ROOT, clearance, c
 
 
 def g(x, digits=3):
+    if x is None:
+        return "—"
     return markdown.number(x, digits)
+
+
+def widenings(j):
+    """Envelope widenings of a Monte Carlo summary: steps (runs with any)."""
+    return f"{j['envelope_widenings']} ({j['runs_with_envelope_widening']})"
 
 
 def write(path, saddle_res, clearance_rows, mc_rows, batches, delay_res):
@@ -49,13 +56,13 @@ def write(path, saddle_res, clearance_rows, mc_rows, batches, delay_res):
     w("any detour leaves the robot behind for good (full speed needs ω = 0), so catching up could not be measured.")
     w("No noise, a sample every 10 ms step: the case is exactly symmetric.")
     w("")
-    w("| run | longest stall [s] | peak ‖e*‖ [m] | true ASE [m²] | final ‖e*‖ [m] | min clearance offset [m] | min clearance body [m] | contacts | escape steps | side flips |")
-    w("|---|---|---|---|---|---|---|---|---|---|")
+    w("| run | longest stall [s] | peak ‖e*‖ [m] | true ASE [m²] | final ‖e*‖ [m] | min clearance offset [m] | min clearance body [m] | contacts | escape steps | side flips | envelope widenings |")
+    w("|---|---|---|---|---|---|---|---|---|---|---|")
     for on, label in [("false", "paper law (off)"), ("true", "tangential escape (on)")]:
         m = exact[on]
         w(f"| {label} | {g(m['longest_stall_s'])} | {g(m['max_true_error'])} | {g(m['true_ase'])} | "
           f"{g(m['final_error'])} | {g(m['min_clearance_offset'])} | {g(m['min_clearance_body'])} | "
-          f"{int(m['offset_collisions'] + m['body_collisions'])} | {int(m['escape_steps'])} | {int(m['side_flips'])} |")
+          f"{int(m['offset_collisions'] + m['body_collisions'])} | {int(m['escape_steps'])} | {int(m['side_flips'])} | {int(m['envelope_widenings'])} |")
     w("")
     off, on = exact["false"], exact["true"]
     ok_stall = on["longest_stall_s"] <= 0.5
@@ -112,8 +119,8 @@ def write(path, saddle_res, clearance_rows, mc_rows, batches, delay_res):
     w("Each shipped scenario as shipped (`body_safe` of the file), and with `--body-safe true`. *Identical* = every")
     w("figure equal (the escape never acted). Target: min clearance with the escape ≥ without, or no contact.")
     w("")
-    w("| scenario | body_safe | offset clearance off → on [m] | body clearance off → on [m] | contacts offset / body off → on | escape steps | conflict steps (off) | longest stall off → on [s] | true ASE off → on [m²] | verdict |")
-    w("|---|---|---|---|---|---|---|---|---|---|")
+    w("| scenario | body_safe | offset clearance off → on [m] | body clearance off → on [m] | contacts offset / body off → on | escape steps | conflict steps (off) | longest stall off → on [s] | true ASE off → on [m²] | envelope widenings off → on | verdict |")
+    w("|---|---|---|---|---|---|---|---|---|---|---|")
     for name, body_safe, a, b in clearance_rows:
         same = all(a[k] == b[k] for k in ("ase", "tec", "min_clearance_offset", "min_clearance_body", "final_error"))
 
@@ -125,7 +132,8 @@ def write(path, saddle_res, clearance_rows, mc_rows, batches, delay_res):
           f"{g(a['min_clearance_body'])} → {g(b['min_clearance_body'])} | {int(a['offset_collisions'])} / "
           f"{int(a['body_collisions'])} → {int(b['offset_collisions'])} / {int(b['body_collisions'])} | "
           f"{int(b['escape_steps'])} | {int(a['conflict_steps'])} | {g(a['longest_stall_s'])} → {g(b['longest_stall_s'])} | "
-          f"{g(a['true_ase'])} → {g(b['true_ase'])} | {verdict} |")
+          f"{g(a['true_ase'])} → {g(b['true_ase'])} | {int(a['envelope_widenings'])} → {int(b['envelope_widenings'])} | "
+          f"{verdict} |")
     w("")
     w("Where nothing conflicts the escape term is exactly zero and the run is bit-identical (tested:")
     w("`ShippedScenarios.EscapeChangesNothingWithoutConflict` moves every obstacle away and compares all figures).")
@@ -136,14 +144,14 @@ def write(path, saddle_res, clearance_rows, mc_rows, batches, delay_res):
     w("The same over randomised variants (`--monte-carlo 50 --seed 1`: obstacles shifted within 0.3 m, start within")
     w("0.3 m and ±0.5 rad), escape off → on:")
     w("")
-    w("| scenario | body_safe | runs with offset contact | runs with body contact | worst offset clearance [m] | worst body clearance [m] | runs with a stall > 0.5 s | longest stall [s] | mean true ASE [m²] |")
-    w("|---|---|---|---|---|---|---|---|---|")
+    w("| scenario | body_safe | runs with offset contact | runs with body contact | worst offset clearance [m] | worst body clearance [m] | runs with a stall > 0.5 s | longest stall [s] | mean true ASE [m²] | envelope widenings (runs) |")
+    w("|---|---|---|---|---|---|---|---|---|---|")
     for name, body_safe, a, b in mc_rows:
         w(f"| {name} | {body_safe} | {a['runs_with_offset_collision']} → {b['runs_with_offset_collision']} | "
           f"{a['runs_with_body_collision']} → {b['runs_with_body_collision']} | {g(a['worst_min_clearance_offset'])} → "
           f"{g(b['worst_min_clearance_offset'])} | {g(a['worst_min_clearance_body'])} → {g(b['worst_min_clearance_body'])} | "
           f"{a['runs_with_stall_over_0_5s']} → {b['runs_with_stall_over_0_5s']} | {g(a['worst_stall_s'])} → "
-          f"{g(b['worst_stall_s'])} | {g(a['mean_true_ase'])} → {g(b['mean_true_ase'])} |")
+          f"{g(b['worst_stall_s'])} | {g(a['mean_true_ase'])} → {g(b['mean_true_ase'])} | {widenings(a)} → {widenings(b)} |")
     w("")
     worse = sorted({f"{n} (body_safe {b})" for n, b, a, c in mc_rows if c["mean_true_ase"] > a["mean_true_ase"]})
     flips = {n: int(b["side_flips"]) for n, _, a, b in clearance_rows}
@@ -181,13 +189,13 @@ def write(path, saddle_res, clearance_rows, mc_rows, batches, delay_res):
     w("its direction kept and re-timed to reach its encounter point (shifted uniformly within 0.3 m) when the target")
     w("does; the initial pose is shifted within 0.3 m and ±0.5 rad.")
     w("")
-    w("| body_safe | avoidance | runs with body contact per 100 | body contact episodes | runs with offset contact per 100 | worst body clearance [m] | worst offset clearance [m] | mean true ASE [m²] |")
-    w("|---|---|---|---|---|---|---|---|")
+    w("| body_safe | avoidance | runs with body contact per 100 | body contact episodes | runs with offset contact per 100 | worst body clearance [m] | worst offset clearance [m] | mean true ASE [m²] | envelope widenings (runs) |")
+    w("|---|---|---|---|---|---|---|---|---|")
     for body_safe, label, j in batches:
         per100 = 100.0 / j["runs"]
         w(f"| {body_safe} | {label} | {g(j['runs_with_body_collision'] * per100)} | {j['body_collision_episodes']} | "
           f"{g(j['runs_with_offset_collision'] * per100)} | {g(j['worst_min_clearance_body'])} | "
-          f"{g(j['worst_min_clearance_offset'])} | {g(j['mean_true_ase'])} |")
+          f"{g(j['worst_min_clearance_offset'])} | {g(j['mean_true_ase'])} | {widenings(j)} |")
     w("")
     w("A contact is counted whoever causes it: a person walking into a robot that cannot get away at v̄ counts too.")
     w("")

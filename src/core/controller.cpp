@@ -105,6 +105,9 @@ void PerformanceController::setConfig(const ControllerConfig& config) {
   config_ = config;
   diamond_ = DiamondSet(config.v_max, config.w_max);
   gains_ = gainsOf(config);
+  // (13) keeps rho >= rho_inf; a raised rho_inf below the current rho would make
+  // lambda (rho - rho_inf) in (9) push the robot away from the target.
+  if (started_) rho_ = std::max(rho_, config.rho_inf);
 }
 
 ControllerOutput PerformanceController::invalid(double t, std::string why) {
@@ -173,7 +176,9 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
     if (start_ratio_ > 0.0) rho_ = std::max(rho_, error_norm / start_ratio_);
     start_ratio_ = 0.0;
   } else if (t > last_t_) {
-    rho_ = rhoStep(gains_, rho_, conflict_, t - last_t_);
+    // The conflict is the last step's: over a stall it is stale, and near contact (1/margin)
+    // it is large, so the relaxation is held for at most max_relaxation_interval.
+    rho_ = rhoStep(gains_, rho_, conflict_, t - last_t_, config_.max_relaxation_interval);
     out.active.rho_relaxed = conflict_ < 0.0;
   }
   last_t_ = t;

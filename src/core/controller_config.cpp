@@ -1,6 +1,10 @@
 #include "amigobot_tracking/core/controller_config.h"
 
+#include <cmath>
 #include <sstream>
+
+#include "amigobot_tracking/core/band_implicit.h"
+#include "amigobot_tracking/core/diamond.h"
 
 namespace amigobot_tracking {
 namespace core {
@@ -22,8 +26,11 @@ FieldTable<ControllerConfig> makeTable() {
       live(field("delta", &C::delta, "m", "obstacle detection distance beyond contact, eq. (10)", positive())),
       field("body_safe", &C::body_safe, "-", "effective radius R + r in (10), so the body stays clear"),
       field("min_margin", &C::min_margin, "m", "floor of the distance to contact in (10), < delta", positive()),
-      field("max_error_ratio", &C::max_error_ratio, "-", "|e|/rho is kept at or below this by widening rho",
+      field("max_error_ratio", &C::max_error_ratio, "-",
+            "|e|/rho is kept at or below this by widening rho; > xi* with xi* atanh xi* = k_o/k_r",
             interval(0.0, true, 1.0, true)),
+      field("max_relaxation_interval", &C::max_relaxation_interval, "s",
+            "longest gap between steps the relaxation term of (13) spans (stalls)", positive()),
       // Beyond the paper: each default is the paper's law.
       field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
       field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),
@@ -55,12 +62,37 @@ std::string ControllerConfig::validate() const {
   std::ostringstream err;
   if (rho_0 <= rho_inf) {
     err << "rho_0: must be > rho_inf = " << rho_inf << ", got " << rho_0;
+  } else if (!(max_error_ratio > sustainedConflictRatio(k_r, k_o))) {
+    err << "max_error_ratio: must be above " << sustainedConflictRatio(k_r, k_o)
+        << ", the |e|/rho of a sustained conflict for k_r = " << k_r << " and k_o = " << k_o
+        << " (xi atanh xi = k_o / k_r; raise max_error_ratio or k_r), got " << max_error_ratio;
   } else if (min_margin >= delta) {
     err << "min_margin: must be < delta = " << delta << ", got " << min_margin;
   } else {
     const std::string estimator_error = estimator.validate();
     if (!estimator_error.empty()) err << "estimator/" << estimator_error;
   }
+  return err.str();
+}
+
+double sustainedConflictRatio(double k_r, double k_o) {
+  const double target = k_o / k_r;
+  double lo = 0.0, hi = 1.0;  // xi atanh xi increases from 0 to +inf on [0, 1)
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid * std::atanh(mid) < target) lo = mid; else hi = mid;
+  }
+  return hi;
+}
+
+std::string bandReachError(const ControllerConfig& config, double control_period) {
+  const double reach = maxOffsetSpeed(DiamondSet(config.v_max, config.w_max), config.offset) * control_period;
+  if (reach < config.delta) return "";
+  std::ostringstream err;
+  err << "delta = " << config.delta << " m is crossed in one control period: the offset point moves up to "
+      << reach << " m in " << control_period << " s (v_max = " << config.v_max << " m/s, w_max = " << config.w_max
+      << " rad/s, offset = " << config.offset << " m); raise delta above " << reach
+      << " m, lower v_max/w_max or raise control_rate";
   return err.str();
 }
 

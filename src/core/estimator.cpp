@@ -116,6 +116,7 @@ void AxisEstimator::reset(double t, double chi, double velocity_guess) {
   z1_ = last_chi_ = chi;
   z2_ = velocity_guess;
   z1_rate_ = velocity_guess;
+  last_sample_rate_ = velocity_guess;
   eta1_ = eta2_ = 0.0;
   eta1_change_ = eta2_change_ = eta1_change_before_ = eta2_change_before_ = last_h_ = h_before_ = 0.0;
   z1_prev_ = z2_prev_ = 0.0;
@@ -140,7 +141,14 @@ bool AxisEstimator::update(double t, double chi, double bound_at_t) {
   }
   const double rho = bound_at_t;
   const double predicted = last_chi_ + z2_ * h;
-  if (config_.jump_threshold > 0.0 && std::abs(chi - predicted) > config_.jump_threshold) {
+  // A relocalisation is a displacement unlike both the estimate and the previous sample's own
+  // motion: a target moving steadily faster than jump_threshold per sample (v_hat still 0 at
+  // the start) is motion from its second sample on, not a jump on every sample.
+  const double sample_rate = (chi - last_chi_) / h;
+  const bool jumped = config_.jump_threshold > 0.0 && std::abs(chi - predicted) > config_.jump_threshold &&
+                      std::abs(chi - (last_chi_ + last_sample_rate_ * h)) > config_.jump_threshold;
+  last_sample_rate_ = sample_rate;
+  if (jumped) {
     z1_ += chi - predicted;  // relocalisation: move with the jump (error kept), do not differentiate it
     z1_prev_ += chi - predicted;
     ++jumps_;

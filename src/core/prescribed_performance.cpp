@@ -14,9 +14,9 @@ double rhoRate(const PerformanceGains& gains, double rho, double conflict) {
   return -gains.decay_rate * (rho - gains.rho_final) - gains.relax_gain * std::min(0.0, conflict);
 }
 
-double rhoStep(const PerformanceGains& gains, double rho, double conflict, double h) {
+double rhoStep(const PerformanceGains& gains, double rho, double conflict, double h, double max_relaxation) {
   const double decayed = gains.rho_final + (rho - gains.rho_final) * std::exp(-gains.decay_rate * h);
-  return decayed - h * gains.relax_gain * std::min(0.0, conflict);
+  return decayed - std::min(h, max_relaxation) * gains.relax_gain * std::min(0.0, conflict);
 }
 
 }  // namespace core

@@ -259,6 +259,7 @@ void TrackingNode::onReconfigure(TrackingConfig& config, uint32_t) {
   config.w_max = std::min(config.w_max, node_config_.robot_w_max);
   std::string invalid = applyReconfigure(config, &candidate);
   if (invalid.empty()) invalid = candidate.validate();
+  if (invalid.empty()) invalid = core::bandReachError(candidate, 1.0 / node_config_.control_rate);
   if (!invalid.empty()) {
     const core::ControllerConfig& kept = config_pending_ ? pending_config_ : controller_config_;
     ROS_ERROR_STREAM_NAMED("tracking", "reconfigure rejected, gains unchanged: " << invalid);

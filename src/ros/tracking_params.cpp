@@ -143,6 +143,9 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
     err << "parameter ~v_max must be <= ~robot_v_max = " << node.robot_v_max << ", got " << c->v_max;
   } else if (c->w_max > node.robot_w_max) {
     err << "parameter ~w_max must be <= ~robot_w_max = " << node.robot_w_max << ", got " << c->w_max;
+  } else {
+    const std::string band = core::bandReachError(*c, 1.0 / node.control_rate);
+    if (!band.empty()) err << "parameter ~" << band << " (~control_rate = " << node.control_rate << " Hz)";
   }
   return err.str();
 }

@@ -108,6 +108,8 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
     sum.runs_with_diamond_violation += m.diamond_violations > 0;
     sum.runs_with_nan += m.nan_count > 0;
     sum.runs_with_e_over_rho_ge_1 += m.max_e_over_rho >= 1.0;
+    sum.envelope_widenings += m.envelope_widenings;
+    sum.runs_with_envelope_widening += m.envelope_widenings > 0;
     sum.worst_min_clearance_body = std::min(sum.worst_min_clearance_body, m.min_clearance_body);
     sum.worst_min_clearance_offset = std::min(sum.worst_min_clearance_offset, m.min_clearance_offset);
     sum.worst_max_e_over_rho = std::max(sum.worst_max_e_over_rho, m.max_e_over_rho);
@@ -145,6 +147,8 @@ void to_json(Json& j, const MonteCarloSummary& s) {
            {"runs_with_diamond_violation", s.runs_with_diamond_violation},
            {"runs_with_nan", s.runs_with_nan},
            {"runs_with_e_over_rho_ge_1", s.runs_with_e_over_rho_ge_1},
+           {"envelope_widenings", s.envelope_widenings},
+           {"runs_with_envelope_widening", s.runs_with_envelope_widening},
            {"worst_min_clearance_body", jsonNumber(s.worst_min_clearance_body)},
            {"worst_min_clearance_offset", jsonNumber(s.worst_min_clearance_offset)},
            {"worst_max_e_over_rho", jsonNumber(s.worst_max_e_over_rho)},

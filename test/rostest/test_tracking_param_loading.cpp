@@ -35,6 +35,18 @@ TEST(TrackingParams, LoadersNameTheBadParameter) {
   controller = core::ControllerConfig();
   EXPECT_NE(ros_layer::loadControllerConfig(pnh, node, &controller).find("rho_o"), std::string::npos);
   pnh.deleteParam("estimator");
+  // Table 1's band (16 mm) at 20 Hz and 5 m/s: p_r moves up to 25 cm per period.
+  node.robot_v_max = node.robot_w_max = 5.0;
+  pnh.setParam("v_max", 5.0);
+  pnh.setParam("w_max", 5.0);
+  pnh.setParam("delta", 0.016);
+  controller = core::ControllerConfig();
+  const std::string band = ros_layer::loadControllerConfig(pnh, node, &controller);
+  EXPECT_NE(band.find("delta = 0.016"), std::string::npos) << band;
+  EXPECT_NE(band.find("control_rate = 20"), std::string::npos) << band;
+  for (const char* key : {"v_max", "w_max", "delta"}) pnh.deleteParam(key);
+  node = ros_layer::TrackingNodeConfig();
+  node.robot_v_max = 0.5;
 
   core::ScanObstacleConfig scan;
   pnh.setParam("scan/max_disk_radius", 0.0);
@@ -104,6 +116,6 @@ TEST(TrackingParams, ShippedSimControllerLoads) {
   EXPECT_EQ(ros_layer::loadControllerConfig(shipped, node, &controller), "");
   EXPECT_DOUBLE_EQ(controller.k_d, 3.0);
   EXPECT_DOUBLE_EQ(controller.v_max, 5.0);
-  EXPECT_DOUBLE_EQ(controller.delta, 0.016);
+  EXPECT_DOUBLE_EQ(controller.delta, 0.3);  // Table 1's 0.016 m is crossed in one 20 Hz period
   EXPECT_DOUBLE_EQ(controller.rho_0, 1.84);
 }

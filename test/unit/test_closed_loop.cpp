@@ -7,28 +7,14 @@
 
 #include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/core/unicycle.h"
+#include "table1.h"
 
 using namespace amigobot_tracking::core;
 using namespace amigobot_tracking::sim;
 
 namespace {
 
-// Table 1 of the paper.
-ControllerConfig table1() {
-  ControllerConfig c;
-  c.robot_radius = 0.2;
-  c.offset = 0.3;
-  c.v_max = c.w_max = 5.0;
-  c.delta = 0.016;
-  c.k_d = 3.0;
-  c.k_o = 1.0;
-  c.k_r = 0.5;
-  c.lambda = 5.0;
-  c.rho_inf = 0.1;
-  c.rho_0 = 1.84;
-  c.body_safe = false;
-  return c;
-}
+ControllerConfig table1() { return table1Config(); }
 
 ClosedLoopSetup unconstrained() {
   ClosedLoopSetup s;
@@ -68,6 +54,7 @@ TEST(ClosedLoop, SampledTargetAt20HzStillConverges) {
   const CircleReference circle({0.0, 0.0}, 2.0, 20.0);
   const ClosedLoopSummary s = runClosedLoop(setup, circle);
   EXPECT_LT(s.max_error_ratio, 1.0);
+  EXPECT_EQ(s.envelope_widenings, 0u);
   EXPECT_LT(s.final_error, setup.controller.rho_inf);
 }
 
@@ -86,6 +73,7 @@ TEST(ClosedLoop, RhoWidensWhileSaturatedAndThenDecaysAsPrescribed) {
   ASSERT_GT(s.saturated_steps, 10u);
   EXPECT_EQ(s.diamond_violations, 0u);
   EXPECT_LT(s.max_error_ratio, 1.0);
+  EXPECT_EQ(s.envelope_widenings, 0u);  // (13), not the rule, widened rho
   const double h = setup.control_period;
   size_t last_saturated = 0;
   int widened = 0;
@@ -120,6 +108,7 @@ TEST(ClosedLoop, PaperRoseWithTable1LimitsNeverLeavesTheDiamond) {
   EXPECT_EQ(s.diamond_violations, 0u);
   EXPECT_EQ(s.invalid_steps, 0u);
   EXPECT_LT(s.max_error_ratio, 1.0);
+  EXPECT_EQ(s.envelope_widenings, 0u);
 }
 
 TEST(ClosedLoop, DisksOnThePathAreNeverTouchedByTheOffsetPoint) {
@@ -134,6 +123,7 @@ TEST(ClosedLoop, DisksOnThePathAreNeverTouchedByTheOffsetPoint) {
   EXPECT_GT(s.min_clearance_offset, 0.0);
   EXPECT_EQ(s.diamond_violations, 0u);
   EXPECT_LT(s.max_error_ratio, 1.0);
+  EXPECT_EQ(s.envelope_widenings, 0u);
 }
 
 TEST(ClosedLoop, BodySafeRadiusKeepsTheBodyClear) {
@@ -147,6 +137,7 @@ TEST(ClosedLoop, BodySafeRadiusKeepsTheBodyClear) {
   EXPECT_GT(s.min_clearance_offset, 0.0);  // effective disk of radius R + r around p_r
   EXPECT_GT(s.min_clearance_body, 0.0);    // so the body disk around p is clear too
   EXPECT_EQ(s.diamond_violations, 0u);
+  EXPECT_EQ(s.envelope_widenings, 0u);
 }
 
 TEST(ClosedLoop, TargetFartherThanRho0StillGoes) {
@@ -154,6 +145,7 @@ TEST(ClosedLoop, TargetFartherThanRho0StillGoes) {
   setup.initial_pose = {-5.0, -5.0, 0.0};  // |e(0)| ~ 8.6 m > rho_0 = 1.84 m
   const ClosedLoopSummary s = runClosedLoop(setup, CircleReference({0.0, 0.0}, 2.0, 20.0));
   EXPECT_GE(s.envelope_widenings, 1u);
+  EXPECT_EQ(s.envelope_widenings, 1u);  // the start only
   EXPECT_LT(s.max_error_ratio, 1.0);
   EXPECT_LT(s.final_error, setup.controller.rho_inf);
 }

@@ -139,6 +139,31 @@ TEST(Estimator, JumpIsFollowedWithoutVelocitySpike) {
   EXPECT_LT(worst_velocity, 0.02);
 }
 
+// A target faster than jump_threshold per sample, from rest (z2 = 0): the jump rule must not
+// take every sample for a relocalisation (that kept v_hat at 0 for ever).
+TEST(Estimator, FastTargetIsNotLockedByTheJumpRule) {
+  struct Case {
+    double speed, rate;
+  };
+  for (const Case& c : {Case{6.0, 10.0}, Case{12.0, 20.0}}) {
+    AxisEstimator est;  // jump_threshold 0.5 m: 0.6 m per sample
+    for (int k = 0; k <= 3 * c.rate; ++k) est.update(k / c.rate, c.speed * k / c.rate);
+    EXPECT_NEAR(est.velocity(), c.speed, 0.05 * c.speed) << c.speed << " m/s at " << c.rate << " Hz";
+    EXPECT_LE(est.jumps(), 1u);
+  }
+  // The paper's rose sampled every 60 ms from where it runs at 9 m/s (a reset mid-curve).
+  const RoseReference rose(3.0, 3.0, 1.0);
+  VelocityEstimator est;
+  double worst = 0.0;
+  for (int k = 0; k <= 105; ++k) {
+    const double t = M_PI / 6 + 0.06 * k;
+    const ReferenceState s = rose.at(t);
+    est.update(t, s.position);
+    if (t > M_PI / 6 + 1.0) worst = std::max(worst, (est.velocity() - s.velocity).norm() / 9.0);
+  }
+  EXPECT_LT(worst, 0.5);  // follows it (a 60 ms finite difference lags)
+}
+
 TEST(Estimator, LateAndNonFiniteSamplesAreIgnored) {
   AxisEstimator est;
   EXPECT_TRUE(est.update(1.0, 0.0));

@@ -47,8 +47,20 @@ TEST(SimClosedLoop, ShippedScenariosStayFiniteInsideTheDiamondAndInsideRho) {
     const sim::RunResult r = sim::runScenario(s, false);
     expectSane(r.summary.metrics, name);
     EXPECT_EQ(r.summary.metrics.offset_collisions, 0u) << name;
+    EXPECT_LE(r.summary.metrics.envelope_widenings, 1u) << name;  // at most the start rule
     EXPECT_LT(r.summary.metrics.min_clearance_offset, 1.0) << name << ": never came near an obstacle";
   }
+}
+
+// The saddle holds a long conflict: (13) keeps |e|/rho near xi* = 0.968 (k_r = 0.5) on its
+// own, so the envelope rule must not fire there (with 0.95 it fired on most steps).
+TEST(SimClosedLoop, SustainedConflictOnTheSaddleNeedsNoEnvelopeRule) {
+  const sim::Scenario s = shipped("saddle_line", 30.0);
+  ASSERT_FALSE(s.setup.controller.tangential_avoidance);
+  const sim::RunResult r = sim::runScenario(s, false);
+  expectSane(r.summary.metrics, "saddle_line");
+  EXPECT_GT(r.summary.metrics.max_e_over_rho, 0.95);  // the conflict did press the envelope
+  EXPECT_LE(r.summary.metrics.envelope_widenings, 1u);  // at most the start rule
 }
 
 TEST(SimClosedLoop, BaselinesRunOnTheRose) {

@@ -146,7 +146,8 @@ TEST(TrackingSupervisor, RestartRhoRule) {
   // reset() drops the rule: the plain start rule widens rho to |e| / max_error_ratio.
   far.restart(TrackingSupervisor::kRestartErrorRatio);
   far.reset();
-  EXPECT_NEAR(far.step(0.0, Pose2{0.0, 0.0, 0.0}, TargetSample{0.0, {3.3, 0.0}}, {}).rho, 3.0 / 0.95, 1e-12);
+  EXPECT_NEAR(far.step(0.0, Pose2{0.0, 0.0, 0.0}, TargetSample{0.0, {3.3, 0.0}}, {}).rho,
+              3.0 / config.max_error_ratio, 1e-12);
 }
 
 TEST(TrackingSupervisor, RampsAfterItsOwnStopAndCapsTheTimeStep) {

@@ -1,8 +1,10 @@
 // Piecewise-linear waypoint reference (core/waypoint_reference.h).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
+#include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/core/waypoint_reference.h"
 
 using namespace amigobot_tracking::core;
@@ -45,4 +47,14 @@ TEST(WaypointReference, RejectsUnusableInput) {
   EXPECT_THROW(WaypointReference(kSquareCorner, 0.0, false), std::invalid_argument);
   EXPECT_THROW(WaypointReference({{1, 1}, {1, 1}}, 0.5, false), std::invalid_argument);
   EXPECT_THROW(WaypointReference({{0, 0}, {NAN, 1}}, 0.5, false), std::invalid_argument);
+}
+
+// The rose of Section 5.2 (k = 3) closes after pi, not 2 pi: the shipped 2 pi s are two laps.
+TEST(RoseReference, PeriodIsPiForOddK) {
+  const RoseReference rose(3.0, 3.0, 1.0);
+  for (double t : {0.1, 0.7, 2.0}) {
+    EXPECT_LT((rose.at(t + M_PI).position - rose.at(t).position).norm(), 1e-12) << t;
+    EXPECT_LT((rose.at(t + M_PI).velocity - rose.at(t).velocity).norm(), 1e-12) << t;
+    EXPECT_GT((rose.at(t + 0.5 * M_PI).position - rose.at(t).position).norm(), 0.1) << t;
+  }
 }

@@ -32,8 +32,17 @@ struct ControllerConfig {
   bool body_safe = true;       // effective radius R + r, so the body (not only p_r) stays clear.
   double min_margin = 1e-3;    // [m] floor of the distance to contact in (10): keeps u_c finite.
   // Envelope: |e|/rho is kept at or below this ratio by widening rho (start far away,
-  // discretisation); T is undefined at 1.
-  double max_error_ratio = 0.95;
+  // discretisation); T is undefined at 1. It must lie above the ratio a sustained conflict
+  // settles at under (13), xi* with xi* atanh(xi*) = k_o / k_r (sustainedConflictRatio;
+  // 0.968 for the paper's k_r = 0.5, k_o = 1): below it the rule, not (13), holds rho.
+  // Saturation presses |e|/rho closer to 1 still (0.99956 on the rose with Table 1's limits,
+  // held by (13) alone): hence 0.9999, a guard for the start and overshooting steps only
+  // (docs/controller.md).
+  double max_error_ratio = 0.9999;
+  // [s] the relaxation term of (13) uses the last step's conflict over at most this long,
+  // so a stall of the control loop does not multiply a stale (near contact, huge) conflict
+  // by the gap: a few control periods. The prescribed decay still spans the whole gap.
+  double max_relaxation_interval = 0.2;
   EstimatorConfig estimator;
 
   // Beyond the paper: each switch off reproduces the paper exactly.
@@ -60,6 +69,18 @@ struct ControllerConfig {
 // Every field read from parameters and scenarios, the estimator's under "estimator/"
 // (adaptive_rho follows the scenario's controller variant). Live rows: dynamic_reconfigure.
 const FieldTable<ControllerConfig>& controllerFields();
+
+// xi* in (0, 1) with xi* atanh(xi*) = k_o / k_r: where |e|/rho settles when the barrier holds
+// the offset point against the attraction for long with large rho (then
+// rho' ~ lambda rho (k_r xi T(xi) / k_o - 1) in (13)). 1 when that is 1 in double precision.
+double sustainedConflictRatio(double k_r, double k_o);
+
+// Empty when a command held for control_period [s] cannot carry the offset point across the
+// detection band (max offset-point speed of the diamond * control_period < delta); otherwise
+// an error naming delta, v_max, w_max, offset and the control period with their values.
+// The explicit (10) then never sees the band it jumps over (the offline simulator avoids
+// this with its band-implicit step; a fixed-rate node cannot).
+std::string bandReachError(const ControllerConfig& config, double control_period);
 
 }  // namespace core
 }  // namespace amigobot_tracking

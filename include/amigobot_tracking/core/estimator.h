@@ -24,7 +24,9 @@
 //
 // Jumps: a sample farther than jump_threshold from the prediction chi_prev + z2 h (a SLAM
 // relocalisation) translates z1 by the jump instead of differentiating it, so the
-// velocity estimate does not spike; the jump is counted.
+// velocity estimate does not spike; the jump is counted. A sample within jump_threshold of
+// chi_prev + (chi_prev - chi_prev2) (the last displacement repeated) is motion, not a jump:
+// otherwise a target faster than jump_threshold per sample kept z2 at 0 for ever.
 // Late samples (stamp not after the last one) are ignored and counted.
 #pragma once
 
@@ -102,6 +104,7 @@ class AxisEstimator {
   double t0_ = 0.0;
   double last_t_ = 0.0;
   double last_chi_ = 0.0;
+  double last_sample_rate_ = 0.0;  // (chi - previous chi) / h of the last sample
   double z1_ = 0.0;
   double z2_ = 0.0;
   double z1_rate_ = 0.0;

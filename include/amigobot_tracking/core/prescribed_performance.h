@@ -1,6 +1,8 @@
 // The transformation T of the performance function and the adaptive law (13) for rho.
 #pragma once
 
+#include <limits>
+
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -23,8 +25,10 @@ struct PerformanceGains {
 double rhoRate(const PerformanceGains& gains, double rho, double conflict);
 
 // One step of length h: the prescribed decay integrated exactly
-// (rho_inf + (rho - rho_inf) e^(-lambda h)) plus the relaxation term held over the step.
-double rhoStep(const PerformanceGains& gains, double rho, double conflict, double h);
+// (rho_inf + (rho - rho_inf) e^(-lambda h)) plus the relaxation term held over
+// min(h, max_relaxation) (the conflict was measured at the step's start only).
+double rhoStep(const PerformanceGains& gains, double rho, double conflict, double h,
+               double max_relaxation = std::numeric_limits<double>::infinity());
 
 }  // namespace core
 }  // namespace amigobot_tracking

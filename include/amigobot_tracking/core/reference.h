@@ -29,7 +29,8 @@ class Reference {
 };
 
 // Rose curve of the paper's Section 5.2: x = A cos(k w t) cos(w t), y = A cos(k w t) sin(w t)
-// with w = 1 / time_scale [rad/s].
+// with w = 1 / time_scale [rad/s]. For odd k its period is pi / w (the radius changes sign
+// when the angle gains pi: the same point), so 2 pi / w is two laps.
 class RoseReference : public Reference {
  public:
   RoseReference(double amplitude, double k, double time_scale);
@@ -56,6 +57,12 @@ class CircleReference : public Reference {
 
 // Natural cubic spline through waypoints (2 or more), parametrised by time with knots
 // spaced by chord length over `duration`; holds the last point after the end.
+// Not MATLAB's cscvn, which the paper used: cscvn spaces its knots centripetally (by the
+// square root of the chord) and closes a curve whose ends coincide periodically. Here the
+// knot parameter is time, and chord-length knots keep the target's speed about constant
+// along the path (centripetal ones make it slower on long segments, faster on short ones);
+// the shipped layouts (obstacles on the path at given times) were placed on this curve.
+// Two waypoints, and evenly spaced ones, give the same curve either way.
 class SplineReference : public Reference {
  public:
   SplineReference(const std::vector<Eigen::Vector2d>& waypoints, double duration);

@@ -51,6 +51,10 @@ struct MonteCarloSummary {
   int runs_with_long_stall = 0;  // a stall longer than 0.5 s (core/metrics.h)
   int runs_with_body_collision = 0, runs_with_offset_collision = 0, runs_with_diamond_violation = 0;
   int runs_with_nan = 0, runs_with_e_over_rho_ge_1 = 0;
+  // Steps where rho was widened to keep |e|/rho <= max_error_ratio (start rule included),
+  // and the runs with any: the envelope held by the rule rather than by (13).
+  std::uint64_t envelope_widenings = 0;
+  int runs_with_envelope_widening = 0;
   double worst_stall = 0.0;  // [s]
   double worst_min_clearance_body = std::numeric_limits<double>::infinity();    // [m]
   double worst_min_clearance_offset = std::numeric_limits<double>::infinity();  // [m]
