@@ -23,10 +23,10 @@ PHONY := deps deps-robot build test demo bench fuzz clean sim reproduce help
 .DEFAULT_GOAL := deps
 
 deps: ## install the missing Debian packages of the robot and the workstation (tests, rviz, plots)
-	@$(ROOT)/scripts/install_deps.sh
+	@$(ROOT)/scripts/setup/install_deps.sh
 
 deps-robot: ## install only what the robot's computer needs (no rviz, Xvfb, clang, matplotlib)
-	@$(ROOT)/scripts/install_deps.sh --robot
+	@$(ROOT)/scripts/setup/install_deps.sh --robot
 
 # catkin caches the test environment at the first configure and keeps only folders that
 # exist then: without these, a fresh clone's tests run with empty PYTHONPATH/LD_LIBRARY_PATH.
@@ -43,28 +43,28 @@ test: build ## build and run every test, ending with `N passed, N failed` (~10 m
 	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.
 	$(CATKIN) run_tests -k; echo $$? > $(WS)/build/run_tests.rc
 	@# The parser fuzzer (30 s, ASan + UBSan) records its own JUnit case, pass or fail.
-	-$(ROOT)/scripts/run_fuzz.sh 30 $(RESULTS)
-	@$(ROOT)/scripts/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
+	-$(ROOT)/scripts/test/run_fuzz.sh 30 $(RESULTS)
+	@$(ROOT)/scripts/test/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
 
-# The whole stack on the emulated robot, headless (scripts/run_demo.py): private master,
+# The whole stack on the emulated robot, headless (scripts/reports/run_demo.py): private master,
 # sim.launch with rviz under Xvfb, a virtual obstacle through the topic, a rosbag, and a
 # scored report in report/demo (non-zero exit on a collision, a command outside the
 # diamond, or a run that did not happen). DEMO_ARGS="--paper-law": the paper's law alone.
 demo: build ## the whole stack on the emulated robot, headless, scored report in report/demo
-	$(ROOT)/scripts/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
+	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
 bench: build ## benchmarks: core, simulator speed, scan obstacles, tracking cycle, ARIA
 	$(CATKIN) bench_core
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 50
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 20 --max-step 0
-	@# The issue's 10^4 x figure: second-order steps of 4-10 ms, within 2 % of a 62.5 us reference
+	@# The 10^4 x real-time figure: second-order steps of 4-10 ms, within 2 % of a 62.5 us reference
 	@# (test_sim_closed_loop: SimFidelity.SecondOrderRoseSettingsAgreeWithTheFineReference).
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 50 --integrator second_order --control-period 0.004 --max-step 0.01
 	$(CATKIN) bench_scan_obstacles
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_scan_obstacles --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(CATKIN) bench_tracking_cycle
-	$(SETUP) && $(ROOT)/scripts/with_private_roscore.sh $(WS)/devel/lib/amigobot_tracking/bench_tracking_cycle --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(SETUP) && $(ROOT)/scripts/test/with_private_roscore.sh $(WS)/devel/lib/amigobot_tracking/bench_tracking_cycle --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(CATKIN) bench_aria
 	$(WS)/devel/lib/amigobot_tracking/bench_aria
 
@@ -76,12 +76,12 @@ sim: build ## offline simulator: SCENARIO=config/scenarios/X.yaml OUT=out/X ARGS
 
 # The paper's Section 5 and the baselines: writes docs/results.md and docs/figures/.
 reproduce: build ## the paper's Section 5 and the baselines: docs/results.md, docs/figures/
-	$(ROOT)/scripts/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
+	$(ROOT)/scripts/reports/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
 
 # Longer libFuzzer run of the ARIA packet parser (ASan + UBSan): make fuzz FUZZ_SECONDS=600
 FUZZ_SECONDS ?= 600
 fuzz: deps ## libFuzzer run of the ARIA packet parser: FUZZ_SECONDS=600
-	$(ROOT)/scripts/run_fuzz.sh $(FUZZ_SECONDS)
+	$(ROOT)/scripts/test/run_fuzz.sh $(FUZZ_SECONDS)
 
 clean: ## remove the build workspaces .ws/ and .ws-install/
 	rm -rf $(WS) $(ROOT)/.ws-install

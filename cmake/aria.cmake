@@ -42,5 +42,5 @@ if(CATKIN_ENABLE_TESTING)
   add_dependencies(test_aria_emulator_status amigobot_emulator)
 endif()
 
-# The libFuzzer target of the packet parser is built by scripts/run_fuzz.sh with clang.
+# The libFuzzer target of the packet parser is built by scripts/test/run_fuzz.sh with clang.
 amigobot_add_benchmark(bench_aria test/bench/bench_aria.cpp amigobot_tracking_aria)

@@ -11,7 +11,6 @@ amigobot_add_library(amigobot_tracking_core
   src/core/unicycle.cpp
   src/core/reference.cpp
   src/core/obstacle_tracker.cpp
-  src/core/raycast.cpp
   src/core/scan_obstacles.cpp
   src/core/virtual_obstacles.cpp
   src/core/resume_ramp.cpp
@@ -23,7 +22,7 @@ target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
 
 if(CATKIN_ENABLE_TESTING)
   foreach(unit diamond resume_ramp tracking_supervisor estimator offset_point avoidance band_implicit controller_config
-          obstacle_tracker raycast scan_obstacles virtual_obstacles waypoint_reference)
+          obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_core)
   endforeach()

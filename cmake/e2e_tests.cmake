@@ -1,7 +1,7 @@
 # End-to-end rostests: the whole stack (driver and tracking nodelets, sim_laser,
 # ground_truth_localization, robot_state_publisher) on amigobot_emulator, judged from the
 # emulator's ground truth and command log by one gtest executable; each .test file under
-# test/e2e runs one of its cases. Ports: scripts/with_free_ports.py appends NAME:=PORT for
+# test/e2e runs one of its cases. Ports: scripts/test/with_free_ports.py appends NAME:=PORT for
 # each port arg the .test file declares, just before rostest starts.
 if(NOT CATKIN_ENABLE_TESTING)
   return()
@@ -24,7 +24,7 @@ set(AMIGOBOT_E2E_NODES test_e2e amigobot_emulator amigobot_tracking_ros amigobot
 # amigobot_add_e2e_test(FILE PORT_ARG...): rostest FILE with a free port for each PORT_ARG.
 function(amigobot_add_e2e_test file)
   get_filename_component(name ${file} NAME_WE)
-  set(cmd "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/with_free_ports.py ${ARGN} --"
+  set(cmd "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/with_free_ports.py ${ARGN} --"
           "${PYTHON_EXECUTABLE} ${AMIGOBOT_ROSTEST} --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME}"
           "--results-filename e2e_${name}.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\""
           "${PROJECT_SOURCE_DIR}/${file}")

@@ -42,7 +42,7 @@ endfunction()
 function(amigobot_add_check name)
   string(REPLACE ";" " " command "${ARGN}")
   catkin_run_tests_target("check" ${name} "check-${name}.xml"
-    COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/junit_check.py --name ${name} --xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/check-${name}.xml -- ${command}")
+    COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/junit_check.py --name ${name} --xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/check-${name}.xml -- ${command}")
 endfunction()
 
 # A Google Benchmark binary (`make bench`): figures are printed, never asserted.

@@ -7,7 +7,7 @@ install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION
 
 # ROS scripts: rosrun and roslaunch's $(find amigobot_tracking)/scripts/... find them in the
 # package's bin folder.
-catkin_install_python(PROGRAMS scripts/scripted_teleop.py scripts/urdf_with_laser.py
+catkin_install_python(PROGRAMS scripts/nodes/scripted_teleop.py scripts/nodes/urdf_with_laser.py
                       DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 # Offline tools' helpers (plotting and reports), usable from the install space.
-install(PROGRAMS scripts/plot_run.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
+install(PROGRAMS scripts/reports/plot_run.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)

@@ -9,17 +9,17 @@ if(CATKIN_ENABLE_TESTING)
   endif()
   amigobot_add_check(urdf_parses ${AMIGOBOT_CHECK_URDF} ${PROJECT_SOURCE_DIR}/urdf/amigobot.urdf)
 
-  # Each layer includes only what it may (scripts/check_layers.py); the checker and the result
+  # Each layer includes only what it may (scripts/test/check_layers.py); the checker and the result
   # counter have their own tests on fixture trees.
-  amigobot_add_check(layers ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_layers.py ${PROJECT_SOURCE_DIR})
+  amigobot_add_check(layers ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_layers.py ${PROJECT_SOURCE_DIR})
   amigobot_add_check(check_layers_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_layers.py
-                     ${PROJECT_SOURCE_DIR}/scripts/check_layers.py)
+                     ${PROJECT_SOURCE_DIR}/scripts/test/check_layers.py)
   amigobot_add_check(count_test_results_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_count_test_results.py
-                     ${PROJECT_SOURCE_DIR}/scripts/count_test_results.py)
+                     ${PROJECT_SOURCE_DIR}/scripts/test/count_test_results.py)
   # Every Makefile target has its one-line `make help` entry (help fails naming one without).
   amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 
-  set(check_launch ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_launch.py ${PROJECT_SOURCE_DIR}/launch)
+  set(check_launch ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_launch.py ${PROJECT_SOURCE_DIR}/launch)
   amigobot_add_check(launch_amigobot ${check_launch}/amigobot.launch)
   amigobot_add_check(launch_amigobot_args ${check_launch}/amigobot.launch port:=/dev/ttyACM0 controller:=sim laser_x:=0.2 virtual_obstacles:=${PROJECT_SOURCE_DIR}/config/virtual_obstacles.yaml)
   amigobot_add_check(launch_amigobot_driver ${check_launch}/amigobot_driver.launch)

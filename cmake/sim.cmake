@@ -17,7 +17,7 @@ target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML
 
 amigobot_add_tool(amigobot_sim src/tools/amigobot_sim.cpp)
 target_link_libraries(amigobot_sim amigobot_tracking_sim)
-target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/plot_run.py")
+target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/reports/plot_run.py")
 
 if(CATKIN_ENABLE_TESTING)
   foreach(unit closed_loop metrics baselines controller_extensions)

@@ -6,7 +6,7 @@
 
 #include "amigobot_tracking/ros/logged_param.h"
 
-#include "amigobot_tracking/core/raycast.h"
+#include "amigobot_tracking/world/raycast.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 
 namespace amigobot_tracking {
@@ -59,7 +59,7 @@ sensor_msgs::LaserScan simulateScan(const core::Pose2& laser, const std::vector<
   scan.range_max = static_cast<float>(config.range_max);
   scan.scan_time = static_cast<float>(1.0 / config.rate);
   scan.time_increment = 0.0f;  // all beams at the stamp: the ray cast is instantaneous
-  scan.ranges = core::raycastScan(laser, disks, geometry, config.beams);
+  scan.ranges = world::raycastScan(laser, disks, geometry, config.beams);
   if (config.noise_std > 0.0 && rng != nullptr) {
     std::normal_distribution<double> noise(0.0, config.noise_std);
     for (float& r : scan.ranges) {

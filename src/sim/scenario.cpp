@@ -152,7 +152,7 @@ void parseController(Section s, sim::ClosedLoopSetup& setup) {
   c.min_margin = s.number("min_margin", 1e-3);
   c.max_error_ratio = s.number("max_error_ratio", c.max_error_ratio);
   c.estimator.jump_threshold = s.number("jump_threshold", c.estimator.jump_threshold);
-  // Beyond the paper (issue 8), all optional; the defaults are the paper's law.
+  // Beyond the paper, all optional; the defaults are the paper's law.
   c.tangential_avoidance = s.boolean("tangential_avoidance", c.tangential_avoidance);
   c.k_t = nonNegative(s, "k_t", s.number("k_t", c.k_t));
   c.tangential_hysteresis = nonNegative(s, "tangential_hysteresis", s.number("tangential_hysteresis", c.tangential_hysteresis));

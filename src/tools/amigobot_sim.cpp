@@ -1,6 +1,6 @@
 // Offline simulator: runs a scenario file (config/scenarios/*.yaml) through the core's
 // closed loop and writes DIR/trajectory.csv, DIR/metrics.json and the paper's figures
-// (scripts/plot_run.py). No ROS at run time.
+// (scripts/reports/plot_run.py). No ROS at run time.
 //
 //   amigobot_sim --scenario FILE.yaml --out DIR [options]
 //   amigobot_sim --scenario FILE.yaml --benchmark N        (real-time factor, nothing written)
@@ -245,7 +245,7 @@ int main(int argc, char** argv) {
     const int rc = runPlot(out + "/trajectory.csv");
     if (rc != 0) {
       std::fprintf(stderr, "amigobot_sim: plotting failed (exit %d); the CSV and JSON are written. Re-plot with\n"
-                   "  /usr/bin/python3 scripts/plot_run.py %s/trajectory.csv\n", rc, out.c_str());
+                   "  /usr/bin/python3 scripts/reports/plot_run.py %s/trajectory.csv\n", rc, out.c_str());
       return 1;
     }
   }

@@ -1,4 +1,4 @@
-// Issue 7.2 end to end: avoidance of a laser-visible disk and of virtual obstacles injected
+// End to end: avoidance of a laser-visible disk and of virtual obstacles injected
 // during the run (topic and clicked_point), judged from the emulator's ground truth (judge.h).
 #include <gtest/gtest.h>
 
@@ -55,7 +55,7 @@ bool waitForTargetAngle(StepRecorder& recorder, double degrees, double timeout) 
 
 }  // namespace
 
-// Issue 7.2: a disk in the world (seen by sim_laser), a virtual obstacle published on
+// a disk in the world (seen by sim_laser), a virtual obstacle published on
 // ~virtual_obstacle and one dropped through clicked_point, each on the target's path (the
 // 2 m circle of avoidance_reference.yaml, at 60, 180 and 300 deg): the robot's body never
 // touches any of them (ground truth), and it tracks again after each one.

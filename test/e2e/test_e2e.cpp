@@ -1,8 +1,8 @@
-// End-to-end tests of the whole stack on amigobot_emulator (issue 7). Each .test file in
+// End-to-end tests of the whole stack on amigobot_emulator. Each .test file in
 // test/e2e starts the stack and runs one case of this executable (--gtest_filter); every
 // verdict comes from the emulator: its ground-truth status socket and the journal of the
 // motion commands it decoded from the wire (judge.h). Timeouts are generous (shared 2-core
-// machine); the only time limits asserted are the ones the issue defines.
+// machine); the only time limits asserted are the nodes' documented timeouts.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -44,7 +44,7 @@ using e2e::waitForSteps;
 
 }  // namespace
 
-// Issue 7.1: circle reference; after the transient |e| < rho at every control step (true e),
+// circle reference; after the transient |e| < rho at every control step (true e),
 // and the final error below rho_inf plus the pose-lag tolerance.
 TEST(E2E, TracksACircle) {
   ros::NodeHandle nh;
@@ -76,7 +76,7 @@ TEST(E2E, TracksACircle) {
   std::printf("judged %d steps, final max |e| %.3f m, worst rho - |e| %.3f m\n", judged, final_max, worst_margin);
 }
 
-// Issue 7.3: every velocity setpoint pair the emulator decoded (VEL, RVEL, VEL2, STOP) is
+// every velocity setpoint pair the emulator decoded (VEL, RVEL, VEL2, STOP) is
 // inside the diamond |v|/v_max + |w|/w_max <= 1, after the protocol's quantisation (1 mm/s,
 // 1 deg/s), which must round toward the inside: no slack is granted beyond 1e-9.
 TEST(E2E, EveryWireCommandIsInsideTheDiamond) {
@@ -100,7 +100,7 @@ TEST(E2E, EveryWireCommandIsInsideTheDiamond) {
   std::printf("%zu wire commands, %d within 5 %% of the boundary\n", commands.size(), on_boundary);
 }
 
-// Issue 7.4: SIGKILL the tracking nodelet's manager while the robot drives: the driver's
+// SIGKILL the tracking nodelet's manager while the robot drives: the driver's
 // watchdog must put a zero setpoint on the wire within cmd_vel_timeout + one SIP period, and
 // the robot (ground truth) stands still once it has braked from its speed at that moment.
 TEST(E2E, CommandWatchdogStopsTheRobot) {
@@ -189,7 +189,7 @@ bool everEnabled(e2e::GroundTruth& truth, double duration, bool open_counts) {
 
 }  // namespace
 
-// Issue 7.7: a driver or tracking nodelet with an invalid parameter refuses to start with a
+// a driver or tracking nodelet with an invalid parameter refuses to start with a
 // FATAL naming the parameter, and the robot's motors are never enabled (emulator status).
 // The test loads each nodelet itself into the .test file's bare manager, one bad value at
 // a time; enable_motors is true for the bad drivers, so only the refusal keeps them off.
@@ -281,7 +281,7 @@ class CircleTarget {
 
 }  // namespace
 
-// Issue 7.5: the target's tf stops; a zero setpoint must reach the wire within pose_timeout
+// the target's tf stops; a zero setpoint must reach the wire within pose_timeout
 // plus one control period, and the robot stand still after braking; the tf comes back and
 // the robot tracks again, and the setpoint leaves zero on the tracking nodelet's resume ramp:
 // no two consecutive setpoint pairs on the wire differ by more than the robot's acceleration
@@ -374,7 +374,7 @@ TEST(E2E, TargetLossStopsAndResumesSmoothly) {
 }
 
 
-// Issue 7.6: the emulator quits (roslaunch restarts it on the same ports after 1 s, like a
+// the emulator quits (roslaunch restarts it on the same ports after 1 s, like a
 // robot power-cycled); the driver must reconnect in the same process, the robot track the
 // circle again, and while the link was down the driver must not claim the motors enabled
 // (motors_state), nor may the new robot hold any motion before the driver re-enabled it.

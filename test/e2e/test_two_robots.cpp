@@ -1,5 +1,5 @@
-// Issue 7.9, the paper's experiment (Section 5.3) on two emulators: launch/two_robots.launch
-// with the target driven by scripts/scripted_teleop.py straight through the virtual box of
+// End to end, the paper's experiment (Section 5.3) on two emulators: launch/two_robots.launch
+// with the target driven by scripts/nodes/scripted_teleop.py straight through the virtual box of
 // config/virtual_obstacles.yaml and back above it, the tracker following. Judged from both
 // emulators: their true poses (status sockets) and the tracker's command journal.
 #include <gtest/gtest.h>

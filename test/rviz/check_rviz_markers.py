@@ -19,7 +19,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
+sys.path.insert(0, os.path.join(ROOT, "scripts", "test"))
 import stack_processes as sp  # noqa: E402
 
 VIRTUAL = "{id: rviz_test, center: {x: 2.0, y: 1.0, z: 0.0}, radius: 0.3}"

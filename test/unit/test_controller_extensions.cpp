@@ -1,4 +1,4 @@
-// Extensions beyond the paper (issue 8): tangential escape, moving obstacles, prediction.
+// Extensions beyond the paper: tangential escape, moving obstacles, prediction.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,7 +17,7 @@ namespace {
 Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
 
 // Target on the x axis at 0.3 m/s through the centre of a 0.3 m disk at x = 2; the robot
-// starts behind it on the same line, facing it (the symmetric saddle of issue 8).
+// starts behind it on the same line, facing it (the symmetric saddle (docs/beyond_paper.md)).
 class StraightLine : public Reference {
  public:
   ReferenceState at(double t) const override { return {{0.6 + 0.3 * t, 0.0}, {0.3, 0.0}}; }

@@ -1,4 +1,4 @@
-// Association of laser obstacles across scans and their velocities (issue 8).
+// Association of laser obstacles across scans and their velocities.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -3,9 +3,10 @@
 
 #include <cmath>
 
-#include "amigobot_tracking/core/raycast.h"
+#include "amigobot_tracking/world/raycast.h"
 
 using namespace amigobot_tracking::core;
+using namespace amigobot_tracking::world;
 
 TEST(Raycast, RayHitsTheNearSideOfADisk) {
   const Disk disk{{3.0, 0.0}, 0.5};

@@ -1,5 +1,5 @@
-// Issue 8 in the offline simulator: the robot pose sensor, pose-age replay, the escape cap,
-// the stall metric, and closed-loop runs of the shipped scenarios asserting the issue's
+// Extensions beyond the paper in the offline simulator: the robot pose sensor, pose-age replay, the escape cap,
+// the stall metric, and closed-loop runs of the shipped scenarios asserting the
 // targets (saddle, clearance, moving obstacles, delayed measurements).
 #include <gtest/gtest.h>
 
@@ -127,7 +127,7 @@ TEST(StallMetric, NetHeadwayNotCommandedSpeed) {
   EXPECT_EQ(longest(standing, 0.1), 0.0);             // standing at the target is not a stall
 }
 
-// Issue 8 targets on the symmetric saddle: the paper's law stalls, the escape does not.
+// Targets on the symmetric saddle: the paper's law stalls, the escape does not.
 TEST(SaddleScenario, EscapeMeetsTheIssueTargets) {
   const sim::Scenario s = shipped("saddle_line");
   ASSERT_FALSE(s.setup.controller.tangential_avoidance) << "the file ships the paper's law";

@@ -1,4 +1,4 @@
-// Scenario files: the issue's minimum is accepted as is; every bad input is refused with a
+// Scenario files: the minimal scenario is accepted as is; every bad input is refused with a
 // message naming the file and the key, before anything runs.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@ using namespace amigobot_tracking;
 
 namespace {
 
-// The minimum of issue 3, verbatim.
+// The minimal scenario (README), verbatim.
 const std::string kMinimum = R"(
 robot:      {radius: 0.2, offset: 0.3, v_max: 5.0, w_max: 5.0, initial_pose: [2.0, -0.5, 1.5708]}
 controller: {k_d: 3, k_o: 1, k_r: 0.5, lambda: 5, rho_inf: 0.1, rho_0: 1.84, delta: 0.016,
@@ -183,7 +183,7 @@ TEST(SimScenario, ShippedScenariosLoad) {
   }
 }
 
-// Issue 8: the switches beyond the paper, the robot pose's timing, moving obstacles.
+// The switches beyond the paper, the robot pose's timing, moving obstacles.
 TEST(SimScenario, BeyondThePaperSwitchesDefaultToThePaper) {
   const sim::Scenario s = sim::parseScenario(kMinimum, "min.yaml");
   const core::ControllerConfig paper;

@@ -46,7 +46,7 @@ struct MetricSample {
   bool valid = true;              // the controller produced a command
   bool saturated = false;
   bool envelope_widened = false;
-  // Beyond the paper (issue 8).
+  // Beyond the paper.
   Eigen::Vector2d e_true = Eigen::Vector2d::Zero();  // true error e* [m]
   double t = 0.0;                 // [s] time of the step
   Eigen::Vector2d p_r = Eigen::Vector2d::Zero();  // true offset point [m]

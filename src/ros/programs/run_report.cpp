@@ -1,5 +1,5 @@
 // run_report: scores a run recorded from sim.launch (rosbag) with the offline simulator's
-// metrics and writes trajectory.csv + metrics.json in its format (scripts/plot_run.py
+// metrics and writes trajectory.csv + metrics.json in its format (scripts/reports/plot_run.py
 // draws the paper's figures from them). Exit 0: safe run; 3: collision or a command
 // outside the diamond; 4: the run did not happen (too few steps, no ground truth, no
 // motion); 2: bad arguments or unreadable input.
@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
                                             truth_topic = "/ground_truth";
   ros_layer::RecordedRunConfig config;
   CLI::App app("Scores a run recorded from sim.launch (rosbag) with the offline simulator's metrics; writes "
-               "trajectory.csv and metrics.json (scripts/plot_run.py draws them).",
+               "trajectory.csv and metrics.json (scripts/reports/plot_run.py draws them).",
                "run_report");
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.add_option("--bag", bag_path, "the recorded run")->required();

@@ -49,7 +49,7 @@ def main():
     if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)
     root = sys.argv[1]
-    package_xml = sys.argv[2] if len(sys.argv) == 3 else os.path.join(os.path.dirname(__file__), "..", "package.xml")
+    package_xml = sys.argv[2] if len(sys.argv) == 3 else os.path.join(os.path.dirname(__file__), "..", "..", "package.xml")
     rules = {}
     for name in ("base.yaml", "python.yaml"):
         with open(os.path.join(root, "rosdep", name)) as f:

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Plots one simulator run as the paper's Figures 3-8.
 
-Usage: /usr/bin/python3 scripts/plot_run.py DIR/trajectory.csv [--out DIR] [--dpi N]
+Usage: /usr/bin/python3 scripts/reports/plot_run.py DIR/trajectory.csv [--out DIR] [--dpi N]
 
 Reads the CSV written by amigobot_sim and, when present, metrics.json beside it (obstacles,
 diamond limits, radii). Writes fig3_xy.png, fig4_xy_time.png, fig5_error_rho.png,

@@ -1,11 +1,15 @@
-#include "amigobot_tracking/core/raycast.h"
+#include "amigobot_tracking/world/raycast.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace amigobot_tracking {
-namespace core {
+namespace world {
+
+using core::Disk;
+using core::Pose2;
+using core::ScanGeometry;
 
 double rayDiskDistance(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, const Disk& disk) {
   // |origin + s d - c|^2 = r^2 with |d| = 1: s^2 + 2 b s + q = 0.
@@ -42,5 +46,5 @@ std::vector<float> raycastScan(const Pose2& sensor, const std::vector<Disk>& dis
   return ranges;
 }
 
-}  // namespace core
+}  // namespace world
 }  // namespace amigobot_tracking

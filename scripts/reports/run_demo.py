@@ -6,7 +6,7 @@ simulated laser, ground-truth localisation, target on the Section 5.3-like cours
 tracking, rviz with the shipped display), enables tracking through its service, drops one
 virtual obstacle (the paper's square, as a disk) through the topic, records a rosbag,
 screenshots rviz, stops everything it started, and writes REPORT/: run.bag, trajectory.csv,
-metrics.json, the paper's Figs 3-8 (scripts/plot_run.py), rviz_*.png, summary.md, logs/.
+metrics.json, the paper's Figs 3-8 (scripts/reports/plot_run.py), rviz_*.png, summary.md, logs/.
 Exit 0: safe run; 3: collision or a command outside the diamond; 4: the run did not happen.
 Tracking runs with config/demo_tracking.yaml (tangential escape) unless --paper-law.
 Usage: run_demo.py [--ws .ws] [--out report/demo] [--paper-law]
@@ -19,10 +19,10 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "test"))
 import stack_processes as sp  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 WORLD = os.path.join(ROOT, "config", "worlds", "demo_5_3.yaml")
 COURSE_S = 80.0       # the reference's duration (config/references/experiment_5_3.yaml)
 START_DELAY_S = 10.0  # the target waits this long after the launch (startup on a loaded machine)
@@ -122,7 +122,7 @@ def main():
     sys.stdout.write(report.stdout)
     sys.stderr.write(report.stderr)
     if report.returncode in (0, 3):
-        plots = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "plot_run.py"),
+        plots = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "reports", "plot_run.py"),
                                 os.path.join(out, "trajectory.csv")], env=env, capture_output=True, text=True)
         if plots.returncode != 0:
             log("plots failed: " + plots.stderr.strip())

@@ -6,7 +6,7 @@ set -uo pipefail
 export PATH=/usr/bin:$PATH
 SECONDS_TO_RUN=${1:-30}
 RESULTS=${2:-}
-ROOT=$(cd "$(dirname "$0")/.." && pwd)
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 OUT=$ROOT/.ws/fuzz
 mkdir -p "$OUT/corpus" "$OUT/artifacts"
 BIN=$OUT/fuzz_packet_parser

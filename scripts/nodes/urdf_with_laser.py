@@ -3,14 +3,14 @@
 
 Plain URDF has no arguments (xacro is not packaged on Debian 12), so launch files call this:
   <param name="robot_description"
-         command="$(find amigobot_tracking)/scripts/urdf_with_laser.py --laser-x 0.11 --prefix robot1/"/>
+         command="$(find amigobot_tracking)/scripts/nodes/urdf_with_laser.py --laser-x 0.11 --prefix robot1/"/>
 """
 import argparse
 import os
 import sys
 import xml.etree.ElementTree as ET
 
-DEFAULT_URDF = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "urdf", "amigobot.urdf")
+DEFAULT_URDF = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "urdf", "amigobot.urdf")
 
 
 def build(urdf_path, laser_xyz, laser_yaw, prefix, fixed_wheels=False):
