@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/raycast.h"
+#include "amigobot_tracking/world/raycast.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -37,7 +37,7 @@ EmulatedScan ScanSource::cast(const core::Pose2& base, double t) {
     geometry.angle_increment = -geometry.angle_increment;
   }
   EmulatedScan scan;
-  scan.ranges = core::raycastScan(sensorPose(base), obstacles_, geometry, model_.beams());
+  scan.ranges = world::raycastScan(sensorPose(base), obstacles_, geometry, model_.beams());
   scan.t = t;
   scan.index = index_++;
   std::normal_distribution<double> noise(0.0, options_.range_noise);
