@@ -166,13 +166,25 @@ std::string LaserEmulatorServer::damage(std::string telegram) {
 
 void LaserEmulatorServer::tick() {
   const double now = steadySeconds();
+  // A scan leaves the device once its last beam is measured: cast at the first beam, sent
+  // one sweep of the measured beams later.
+  if (has_pending_ && now >= pending_due_) {
+    has_pending_ = false;
+    latest_ = pending_;
+    send(now);
+  }
   if (now < next_scan_) return;
   next_scan_ += model_.scanTime();
   if (next_scan_ < now) next_scan_ = now + model_.scanTime();  // fell behind: skip, as a device would
   core::Pose2 base;
   double t = 0.0;
   if (!pose_(&base, &t)) return;
-  latest_ = source_.cast(base, t);
+  pending_ = source_.cast(base, t);
+  pending_due_ = now + model_.timeIncrement() * (model_.beams() - 1);
+  has_pending_ = true;
+}
+
+void LaserEmulatorServer::send(double now) {
   for (Link* link : {&tcp_, &pty_}) {
     if (!link->session || now < stall_until_) continue;
     std::string telegram = link->session->stream(latest_);

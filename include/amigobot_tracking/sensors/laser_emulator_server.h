@@ -58,6 +58,7 @@ class LaserEmulatorServer {
   void drop(Link& link);
   void serve(Link& link);
   void tick();
+  void send(double now);  // streams latest_ to the clients that asked for scans
   std::string damage(std::string telegram);
 
   LaserModel model_;
@@ -67,8 +68,9 @@ class LaserEmulatorServer {
   int listen_fd_ = -1, pty_slave_ = -1, tcp_port_ = -1;
   std::string pty_name_;
   Link tcp_, pty_;
-  EmulatedScan latest_;
-  double next_scan_ = 0.0, stall_until_ = 0.0;
+  EmulatedScan latest_, pending_;  // last sent; cast but not yet sent
+  bool has_pending_ = false;
+  double next_scan_ = 0.0, stall_until_ = 0.0, pending_due_ = 0.0;
   std::uint64_t streamed_ = 0;
 };
 
