@@ -19,3 +19,6 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(test_laser_ros PRIVATE AMIGOBOT_LASER_EMULATOR="$<TARGET_FILE:laser_emulator>")
   add_dependencies(test_laser_ros laser_emulator amigobot_tracking_ros_laser)
 endif()
+
+# `make bench`: driver CPU per scan and emulator -> LaserScan latency, in one process.
+amigobot_add_benchmark(bench_laser test/bench/bench_laser.cpp amigobot_tracking_ros_laser)
