@@ -9,7 +9,9 @@ amigobot_add_library(amigobot_tracking_aria
   src/aria/wheel_command.cpp
   src/aria/transport.cpp
   src/aria/client.cpp
+  src/aria/client_config.cpp
   src/aria/emulator.cpp
+  src/aria/emulator_options.cpp
   src/aria/emulator_server.cpp
   src/aria/emulator_status.cpp
 )

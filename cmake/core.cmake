@@ -8,6 +8,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/prescribed_performance.cpp
   src/core/controller.cpp
   src/core/controller_config.cpp
+  src/core/field_table.cpp
   src/core/unicycle.cpp
   src/core/reference.cpp
   src/core/obstacle_tracker.cpp
@@ -21,7 +22,7 @@ target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit diamond resume_ramp tracking_supervisor estimator offset_point avoidance band_implicit controller_config
+  foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance band_implicit controller_config
           obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_core)

@@ -4,7 +4,7 @@ amigobot_add_library(amigobot_tracking_ros_driver
   src/ros/driver.cpp
   src/ros/driver_nodelet.cpp
 )
-target_link_libraries(amigobot_tracking_ros_driver amigobot_tracking_aria ${catkin_LIBRARIES})
+target_link_libraries(amigobot_tracking_ros_driver amigobot_tracking_aria amigobot_tracking_ros_params ${catkin_LIBRARIES})
 
 amigobot_add_tool(amigobot_driver_node src/ros/programs/driver_node.cpp)
 target_link_libraries(amigobot_driver_node amigobot_tracking_ros_driver)

@@ -5,7 +5,7 @@ amigobot_add_library(amigobot_tracking_ros_laser
   src/ros/laser_node.cpp
   src/ros/laser_nodelet.cpp
 )
-target_link_libraries(amigobot_tracking_ros_laser amigobot_tracking_sensors ${catkin_LIBRARIES})
+target_link_libraries(amigobot_tracking_ros_laser amigobot_tracking_sensors amigobot_tracking_ros_params ${catkin_LIBRARIES})
 
 amigobot_add_tool(laser_node src/ros/programs/laser_node.cpp)
 target_link_libraries(laser_node amigobot_tracking_ros_laser)

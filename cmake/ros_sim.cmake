@@ -6,7 +6,7 @@ amigobot_add_library(amigobot_tracking_ros_sim
   src/ros/ground_truth.cpp
   src/ros/trail.cpp
 )
-target_link_libraries(amigobot_tracking_ros_sim amigobot_tracking_ros amigobot_tracking_aria amigobot_tracking_world ${catkin_LIBRARIES})
+target_link_libraries(amigobot_tracking_ros_sim amigobot_tracking_ros amigobot_tracking_ros_params amigobot_tracking_aria amigobot_tracking_world ${catkin_LIBRARIES})
 
 amigobot_add_tool(sim_laser src/ros/programs/sim_laser_node.cpp)
 target_link_libraries(sim_laser amigobot_tracking_ros_sim amigobot_tracking_world)

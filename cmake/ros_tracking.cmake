@@ -1,5 +1,9 @@
-# Layer 3, ros: the tracking nodelet amigobot_tracking/Tracking and tracking_node over the
-# core, and the reference publisher (a target for simulation and the demo).
+# Layer 3, ros: the one ROS parameter reader (every ROS library and node reads its field
+# tables through it), the tracking nodelet amigobot_tracking/Tracking and tracking_node over
+# the core, and the reference publisher (a target for simulation and the demo).
+amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp)
+target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core ${catkin_LIBRARIES})
+
 amigobot_add_library(amigobot_tracking_ros
   src/ros/conversions.cpp
   src/ros/markers.cpp
@@ -9,10 +13,11 @@ amigobot_add_library(amigobot_tracking_ros
   src/ros/virtual_obstacle_interface.cpp
   src/ros/laser_obstacles.cpp
   src/ros/tracking_statistics.cpp
+  src/ros/reconfigure_mapping.cpp
   src/ros/tracking_nodelet.cpp
 )
 target_include_directories(amigobot_tracking_ros SYSTEM PRIVATE ${urdfdom_INCLUDE_DIRS})
-target_link_libraries(amigobot_tracking_ros amigobot_tracking_core ${catkin_LIBRARIES} ${urdfdom_LIBRARIES})
+target_link_libraries(amigobot_tracking_ros amigobot_tracking_core amigobot_tracking_ros_params ${catkin_LIBRARIES} ${urdfdom_LIBRARIES})
 add_dependencies(amigobot_tracking_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
 amigobot_add_tool(tracking_node src/ros/programs/tracking_node_main.cpp)
@@ -31,6 +36,13 @@ if(CATKIN_ENABLE_TESTING)
   add_dependencies(test_tracking_nodelet amigobot_tracking_ros)
   amigobot_add_rostest_gtest(test_tracking_bad_param test/rostest/tracking_bad_param.test test/rostest/test_tracking_bad_param.cpp)
   add_dependencies(test_tracking_bad_param ${PROJECT_NAME}_generate_messages_cpp)
+  # The reader: types checked, ints for reals, errors naming the parameter.
+  amigobot_add_rostest_gtest(test_param_reader test/rostest/param_reader.test test/rostest/test_param_reader.cpp)
+  target_link_libraries(test_param_reader amigobot_tracking_ros)
+  # Every table field in config/*.yaml (with its comment), the README's tables and cfg/*.cfg.
+  amigobot_add_unit_test(test_param_coverage test/unit/test_param_coverage.cpp)
+  target_link_libraries(test_param_coverage amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser)
+  target_compile_definitions(test_param_coverage PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
 # Whole control cycles with a filled tf buffer (`make bench`).

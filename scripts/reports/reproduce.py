@@ -14,6 +14,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tempfile
 
 import beyond_paper
 import scenario_yaml
@@ -62,12 +63,14 @@ def monte_carlo(sim, name, n, seed, args, out_root, label):
 
 
 def benchmark(sim, name, args, n=30):
-    cmd = [sim, "--scenario", scenario_path(name) if not os.path.isabs(name) else name, "--benchmark", str(n)] + args
-    text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    steps = int(re.search(r"(\d+) steps", text).group(1))
-    median = float(re.search(r"realtime_factor (\d+) x \(median\)", text).group(1))
-    best = float(re.search(r"(\d+) x \(best\)", text).group(1))
-    return steps, median, best
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "benchmark.json")
+        cmd = [sim, "--scenario", scenario_path(name) if not os.path.isabs(name) else name, "--benchmark", str(n),
+               "--benchmark-json", path] + args
+        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+        with open(path) as f:
+            b = json.load(f)
+    return b["steps"], float(round(b["realtime_factor_median"])), float(round(b["realtime_factor_best"]))
 
 
 def f(x, digits=4):

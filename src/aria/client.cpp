@@ -27,42 +27,6 @@ void defaultLog(LogLevel level, const std::string& text) {
 
 }  // namespace
 
-std::string ClientConfig::validate() const {
-  if (port.empty()) return "port: empty (expected /dev/ttyUSB0 or host:port)";
-  if (baud <= 0) return "baud: must be positive, got " + std::to_string(baud);
-  const std::string robot_error = robot.validate();
-  if (!robot_error.empty()) return "robot." + robot_error;
-  const std::pair<const char*, double> positive[] = {
-      {"v_max", v_max},           {"w_max", w_max},           {"command_refresh", command_refresh},
-      {"sync_timeout", sync_timeout}, {"link_timeout", link_timeout},
-      {"reconnect_delay_min", reconnect_delay_min}, {"reconnect_delay_max", reconnect_delay_max}};
-  for (const auto& [name, value] : positive) {
-    if (!std::isfinite(value) || value <= 0.0) {
-      return std::string(name) + ": must be positive and finite, got " + std::to_string(value);
-    }
-  }
-  const std::pair<const char*, double> non_negative[] = {
-      {"command_timeout", command_timeout}, {"min_command_interval", min_command_interval},
-      {"config_timeout", config_timeout},   {"trans_accel", trans_accel}, {"trans_decel", trans_decel},
-      {"rot_accel", rot_accel},             {"rot_decel", rot_decel}};
-  for (const auto& [name, value] : non_negative) {
-    if (!std::isfinite(value) || value < 0.0) {
-      return std::string(name) + ": must be zero or positive and finite, got " + std::to_string(value);
-    }
-  }
-  if (v_max > robot.max_velocity) return "v_max: exceeds the robot's max_velocity " + std::to_string(robot.max_velocity);
-  if (w_max > robot.max_rot_velocity) {
-    return "w_max: exceeds the robot's max_rot_velocity " + std::to_string(robot.max_rot_velocity);
-  }
-  if (command_refresh >= robot.watchdog) {
-    return "command_refresh: must be well below the robot's " + std::to_string(robot.watchdog) + " s watchdog";
-  }
-  if (reconnect_delay_max < reconnect_delay_min) return "reconnect_delay_max: smaller than reconnect_delay_min";
-  if (max_sync_tries < 3) return "max_sync_tries: at least 3 (one per SYNC)";
-  if (max_packet_count < 3 || max_packet_count > 255) return "max_packet_count: must be within 3..255";
-  return {};
-}
-
 std::string linkStateName(LinkState state) {
   switch (state) {
     case LinkState::kStopped: return "stopped";

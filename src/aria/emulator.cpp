@@ -33,22 +33,6 @@ long wrapUnits(double value, long modulus) {
 
 }  // namespace
 
-std::string EmulatorOptions::validate() const {
-  const std::string robot_error = robot.validate();
-  if (!robot_error.empty()) return "robot." + robot_error;
-  if (!(odometry_noise >= 0.0 && std::isfinite(odometry_noise))) return "odometry_noise: must be >= 0";
-  if (!(physics_step > 0.0 && physics_step <= 0.05)) return "physics_step: must be within (0, 0.05] s";
-  if (!(sonar_max_range > 0.0)) return "sonar_max_range: must be positive";
-  if (!initial_pose.isFinite()) return "initial_pose: must be finite";
-  for (std::size_t i = 0; i < obstacles.size(); ++i) {
-    if (!(obstacles[i].radius > 0.0) || !obstacles[i].center.allFinite()) {
-      return "obstacles[" + std::to_string(i) + "]: needs a finite centre and a positive radius";
-    }
-  }
-  if (name.empty() || name.size() > 60) return "name: must be 1..60 characters";
-  return {};
-}
-
 RobotEmulator::RobotEmulator(EmulatorOptions options)
     : options_(std::move(options)), rng_(options_.seed), pose_(options_.initial_pose) {
   const std::string error = options_.validate();

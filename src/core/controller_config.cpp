@@ -1,47 +1,65 @@
 #include "amigobot_tracking/core/controller_config.h"
 
-#include <cmath>
 #include <sstream>
 
 namespace amigobot_tracking {
 namespace core {
 namespace {
 
-// Appends "name must be > 0, got value" when value is not positive and finite.
-bool requirePositive(std::ostringstream& err, const char* name, double value) {
-  if (std::isfinite(value) && value > 0.0) return true;
-  err << name << " must be a finite number > 0, got " << value;
-  return false;
+FieldTable<ControllerConfig> makeTable() {
+  using C = ControllerConfig;
+  FieldTable<C> t = {
+      field("robot_radius", &C::robot_radius, "m", "body radius R", positive()),
+      field("offset", &C::offset, "m", "distance r of the controlled point ahead of the centre", positive()),
+      live(field("v_max", &C::v_max, "m/s", "diamond half-width in v", positive())),
+      live(field("w_max", &C::w_max, "rad/s", "diamond half-width in omega", positive())),
+      live(field("k_d", &C::k_d, "m/s", "tracking gain on T(|e|/rho), eq. (9)", positive())),
+      live(field("k_o", &C::k_o, "-", "gain of the repulsive term u_c", positive())),
+      live(field("lambda", &C::lambda, "1/s", "prescribed decay rate of rho", positive())),
+      live(field("rho_inf", &C::rho_inf, "m", "steady-state tracking bound", positive())),
+      field("rho_0", &C::rho_0, "m", "rho(0), > rho_inf and > |e(0)|", positive()),
+      live(field("k_r", &C::k_r, "-", "relaxation gain of the adaptive law (13)", positive())),
+      live(field("delta", &C::delta, "m", "obstacle detection distance beyond contact, eq. (10)", positive())),
+      field("body_safe", &C::body_safe, "-", "effective radius R + r in (10), so the body stays clear"),
+      field("min_margin", &C::min_margin, "m", "floor of the distance to contact in (10), < delta", positive()),
+      field("max_error_ratio", &C::max_error_ratio, "-", "|e|/rho is kept at or below this by widening rho",
+            interval(0.0, true, 1.0, true)),
+      // Beyond the paper: each default is the paper's law.
+      field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
+      field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),
+      field("tangential_hysteresis", &C::tangential_hysteresis, "-",
+            "sine margin before the passing side may switch", interval(0.0, false, 1.0, true)),
+      field("moving_obstacles", &C::moving_obstacles, "-", "obstacle velocities in (10): feed-forward, wider band"),
+      field("obstacle_horizon", &C::obstacle_horizon, "s", "detection band grows by approach speed times this",
+            nonNegative()),
+      field("predict_target", &C::predict_target, "-", "p_d = latest sample + v_hat x sample age"),
+      field("compensate_pose_age", &C::compensate_pose_age, "-",
+            "move the pose forward along the commands applied over its age"),
+      field("max_prediction", &C::max_prediction, "s", "ages beyond this are not extrapolated further",
+            nonNegative()),
+  };
+  include(&t, "estimator/", &C::estimator, estimatorFields());
+  return t;
 }
 
 }  // namespace
 
+const FieldTable<ControllerConfig>& controllerFields() {
+  static const FieldTable<ControllerConfig> table = makeTable();
+  return table;
+}
+
 std::string ControllerConfig::validate() const {
+  const std::string bad = checkFields(controllerFields(), *this);
+  if (!bad.empty()) return bad;
   std::ostringstream err;
-  const bool positives = requirePositive(err, "radius (robot_radius R)", robot_radius) &&
-                         requirePositive(err, "offset (r)", offset) &&
-                         requirePositive(err, "v_max", v_max) && requirePositive(err, "w_max", w_max) &&
-                         requirePositive(err, "k_d", k_d) && requirePositive(err, "k_o", k_o) &&
-                         requirePositive(err, "k_r", k_r) && requirePositive(err, "lambda", lambda) &&
-                         requirePositive(err, "rho_inf", rho_inf) && requirePositive(err, "delta", delta) &&
-                         requirePositive(err, "min_margin", min_margin);
-  if (!positives) return err.str();
-  if (!std::isfinite(rho_0) || rho_0 <= rho_inf) {
-    err << "rho_0 must be > rho_inf = " << rho_inf << ", got " << rho_0;
-  } else if (!(max_error_ratio > 0.0 && max_error_ratio < 1.0)) {
-    err << "max_error_ratio must be in (0, 1), got " << max_error_ratio;
+  if (rho_0 <= rho_inf) {
+    err << "rho_0: must be > rho_inf = " << rho_inf << ", got " << rho_0;
   } else if (min_margin >= delta) {
-    err << "min_margin must be < delta = " << delta << ", got " << min_margin;
-  } else if (!(std::isfinite(k_t) && k_t >= 0.0)) {
-    err << "k_t must be a finite number >= 0, got " << k_t;
-  } else if (!(tangential_hysteresis >= 0.0 && tangential_hysteresis < 1.0)) {
-    err << "tangential_hysteresis must be in [0, 1), got " << tangential_hysteresis;
-  } else if (!(std::isfinite(obstacle_horizon) && obstacle_horizon >= 0.0)) {
-    err << "obstacle_horizon must be a finite number >= 0, got " << obstacle_horizon;
-  } else if (!(std::isfinite(max_prediction) && max_prediction >= 0.0)) {
-    err << "max_prediction must be a finite number >= 0, got " << max_prediction;
+    err << "min_margin: must be < delta = " << delta << ", got " << min_margin;
   } else {
-    return estimator.validate();
+    const std::string estimator_error = estimator.validate();
+    if (!estimator_error.empty()) err << "estimator/" << estimator_error;
   }
   return err.str();
 }

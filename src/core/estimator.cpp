@@ -6,22 +6,25 @@
 
 namespace amigobot_tracking {
 namespace core {
-namespace {
-
-bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
-
-}  // namespace
+const FieldTable<EstimatorConfig>& estimatorFields() {
+  using E = EstimatorConfig;
+  static const FieldTable<E> table = {
+      field("a1", &E::a1, "1/s", "stage-1 gain, eq. (3)", positive()),
+      field("a2", &E::a2, "1/s", "stage-2 gain, eq. (4)", positive()),
+      field("lambda_o", &E::lambda_o, "1/s", "decay rate of the estimator bounds", positive()),
+      field("rho_o", &E::rho_o, "m, m/s", "steady-state bound of both stages", positive()),
+      field("rho_o0", &E::rho_o0, "m, m/s", "initial bound of both stages (>= rho_o)", positive()),
+      field("jump_threshold", &E::jump_threshold, "m", "a sample this far from the prediction is a jump; 0 = off",
+            nonNegative()),
+  };
+  return table;
+}
 
 std::string EstimatorConfig::validate() const {
+  const std::string bad = checkFields(estimatorFields(), *this);
+  if (!bad.empty()) return bad;
   std::ostringstream err;
-  if (!positiveFinite(a1)) err << "a1 must be > 0, got " << a1;
-  else if (!positiveFinite(a2)) err << "a2 must be > 0, got " << a2;
-  else if (!positiveFinite(lambda_o)) err << "lambda_o must be > 0, got " << lambda_o;
-  else if (!positiveFinite(rho_o)) err << "rho_o must be > 0, got " << rho_o;
-  else if (!std::isfinite(rho_o0) || rho_o0 < rho_o)
-    err << "rho_o0 must be >= rho_o = " << rho_o << ", got " << rho_o0;
-  else if (!std::isfinite(jump_threshold) || jump_threshold < 0.0)
-    err << "estimator jump_threshold must be >= 0 (0 = off), got " << jump_threshold;
+  if (rho_o0 < rho_o) err << "rho_o0: must be >= rho_o = " << rho_o << ", got " << rho_o0;
   return err.str();
 }
 

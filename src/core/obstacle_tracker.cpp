@@ -7,17 +7,21 @@
 namespace amigobot_tracking {
 namespace core {
 
-std::string ObstacleTrackerConfig::validate() const {
-  std::ostringstream err;
-  if (!(std::isfinite(gate) && gate > 0.0)) err << "gate must be > 0, got " << gate;
-  else if (!(position_gain > 0.0 && position_gain <= 1.0)) err << "position_gain must be in (0, 1], got " << position_gain;
-  else if (!(velocity_gain > 0.0 && velocity_gain < 2.0)) err << "velocity_gain must be in (0, 2), got " << velocity_gain;
-  else if (!(std::isfinite(max_speed) && max_speed > 0.0)) err << "max_speed must be > 0, got " << max_speed;
-  else if (!(std::isfinite(still_speed) && still_speed >= 0.0)) err << "still_speed must be >= 0, got " << still_speed;
-  else if (!(std::isfinite(forget_after) && forget_after > 0.0)) err << "forget_after must be > 0, got " << forget_after;
-  else if (min_hits < 1) err << "min_hits must be >= 1, got " << min_hits;
-  return err.str();
+const FieldTable<ObstacleTrackerConfig>& obstacleTrackerFields() {
+  using T = ObstacleTrackerConfig;
+  static const FieldTable<T> table = {
+      field("gate", &T::gate, "m", "largest distance between a track's prediction and a detection", positive()),
+      field("position_gain", &T::position_gain, "-", "alpha of the alpha-beta filter", interval(0, true, 1, false)),
+      field("velocity_gain", &T::velocity_gain, "-", "beta of the alpha-beta filter", interval(0, true, 2, true)),
+      field("max_speed", &T::max_speed, "m/s", "velocities are clamped to this", positive()),
+      field("still_speed", &T::still_speed, "m/s", "slower tracks count as static", nonNegative()),
+      field("forget_after", &T::forget_after, "s", "a track unseen this long is dropped", positive()),
+      field("min_hits", &T::min_hits, "-", "matches before a track's velocity is used", atLeast(1)),
+  };
+  return table;
 }
+
+std::string ObstacleTrackerConfig::validate() const { return checkFields(obstacleTrackerFields(), *this); }
 
 ObstacleTracker::ObstacleTracker(const ObstacleTrackerConfig& config) : config_(config) {}
 

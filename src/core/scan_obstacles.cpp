@@ -27,24 +27,29 @@ struct Box {
   double halfDiagonal() const { return 0.5 * std::hypot(max_x - min_x, max_y - min_y); }
 };
 
-bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
-
 }  // namespace
 
+const FieldTable<ScanObstacleConfig>& scanObstacleFields() {
+  using S = ScanObstacleConfig;
+  static const FieldTable<S> table = {
+      field("cluster_tolerance", &S::cluster_tolerance, "m", "max gap between consecutive points of one cluster",
+            positive()),
+      field("max_disk_radius", &S::max_disk_radius, "m", "bound on each obstacle disk's radius", positive()),
+      field("min_disk_radius", &S::min_disk_radius, "m", "radius of a one-point disk, floor of all disks",
+            positive()),
+      field("min_cluster_points", &S::min_cluster_points, "-", "smaller clusters are noise", atLeast(1)),
+      // +inf allowed: no limit besides the scan's range_max.
+      field("max_range", &S::max_range, "m", "beams farther than this are ignored", allowInfinite(positive())),
+  };
+  return table;
+}
+
 std::string ScanObstacleConfig::validate() const {
+  const std::string bad = checkFields(scanObstacleFields(), *this);
+  if (!bad.empty()) return bad;
   std::ostringstream err;
-  if (!positiveFinite(cluster_tolerance)) {
-    err << "cluster_tolerance must be a finite number > 0, got " << cluster_tolerance;
-  } else if (!positiveFinite(max_disk_radius)) {
-    err << "max_disk_radius must be a finite number > 0, got " << max_disk_radius;
-  } else if (!positiveFinite(min_disk_radius) || min_disk_radius > max_disk_radius) {
-    err << "min_disk_radius must be > 0 and <= max_disk_radius = " << max_disk_radius << ", got "
-        << min_disk_radius;
-  } else if (min_cluster_points < 1) {
-    err << "min_cluster_points must be >= 1, got " << min_cluster_points;
-  } else if (!(max_range > 0.0)) {  // +inf is allowed: no extra limit
-    err << "max_range must be > 0, got " << max_range;
-  }
+  if (min_disk_radius > max_disk_radius)
+    err << "min_disk_radius: must be <= max_disk_radius = " << max_disk_radius << ", got " << min_disk_radius;
   return err.str();
 }
 

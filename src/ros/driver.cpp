@@ -12,6 +12,8 @@
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
+#include "amigobot_tracking/ros/param_reader.h"
+
 namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
@@ -22,53 +24,57 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
   return tf2::toMsg(q);
 }
 
-template <typename T>
-T param(const ros::NodeHandle& pnh, const std::string& name, const T& fallback) {
-  T value = fallback;
-  if (pnh.hasParam(name) && !pnh.getParam(name, value)) {
-    throw std::runtime_error("parameter ~" + name + ": wrong type");
-  }
-  return value;
-}
-
 }  // namespace
 
+const core::FieldTable<DriverParams>& driverFields() {
+  static const core::FieldTable<DriverParams> table = [] {
+    using D = DriverParams;
+    using core::field;
+    core::FieldTable<D> t = {
+        field("robot_model", &D::robot_model, "-", "built-in robot parameters", core::oneOf({"amigo", "amigo-sh"})),
+        field("robot_params", &D::robot_params, "-", "robot YAML (config/robots/); overrides robot_model"),
+        field("command_mode", &D::command_mode, "-", "VEL+RVEL, or VEL2 (20 mm/s steps: too coarse)",
+              core::oneOf({"vel_rvel", "vel2"})),
+        field("odom_frame", &D::odom_frame, "-", "odometry frame"),
+        field("base_frame", &D::base_frame, "-", "robot frame"),
+        field("sonar_frame_prefix", &D::sonar_frame_prefix, "-", "transducer i publishes in <prefix><i>"),
+        field("publish_tf", &D::publish_tf, "-", "odom -> base_frame"),
+        field("publish_sonar_tf", &D::publish_sonar_tf, "-", "static base_frame -> sonar_i from the robot parameters"),
+        field("position_variance", &D::position_variance, "m^2", "odom pose covariance, x and y",
+              core::nonNegative()),
+        field("heading_variance", &D::heading_variance, "rad^2", "odom heading covariance", core::nonNegative()),
+        field("battery_low_voltage", &D::battery_low_voltage, "V", "diagnostics warn below this",
+              core::nonNegative()),
+        field("sonar_min_range", &D::sonar_min_range, "m", "sensor_msgs/Range min_range", core::nonNegative()),
+    };
+    core::include(&t, "", &D::client, aria::clientFields());
+    return t;
+  }();
+  return table;
+}
+
+std::string DriverParams::validate() const {
+  const std::string bad = core::checkFields(driverFields(), *this);
+  if (!bad.empty()) return bad;
+  if (odom_frame.empty()) return "odom_frame: must not be empty";
+  if (base_frame.empty()) return "base_frame: must not be empty";
+  return client.validate();
+}
+
 DriverParams loadDriverParams(const ros::NodeHandle& pnh) {
+  ROS_INFO_STREAM_NAMED("driver", "driver parameters:");
   DriverParams p;
-  aria::ClientConfig& c = p.client;
-  c.port = param<std::string>(pnh, "port", "/dev/ttyUSB0");
-  c.baud = param(pnh, "baud", 9600);
-  const std::string model = param<std::string>(pnh, "robot_model", "amigo");
-  const std::string params_file = param<std::string>(pnh, "robot_params", "");
+  const std::string error = readFields(pnh, driverFields(), &p);
+  if (!error.empty()) throw std::runtime_error(error);
   try {
-    c.robot = params_file.empty() ? aria::builtinRobotParams(model) : aria::loadRobotParams(params_file);
+    p.client.robot = p.robot_params.empty() ? aria::builtinRobotParams(p.robot_model)
+                                            : aria::loadRobotParams(p.robot_params);
   } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("parameter ~robot_model/~robot_params: ") + e.what());
+    throw std::runtime_error(std::string("~robot_model/~robot_params: ") + e.what());
   }
-  const std::string mode = param<std::string>(pnh, "command_mode", "vel_rvel");
-  const auto parsed = aria::parseCommandMode(mode);
-  if (!parsed) throw std::runtime_error("parameter ~command_mode: '" + mode + "' (expected vel_rvel or vel2)");
-  c.command_mode = *parsed;
-  c.command_timeout = param(pnh, "cmd_vel_timeout", 0.6);
-  c.v_max = param(pnh, "v_max", c.v_max);
-  c.w_max = param(pnh, "w_max", c.w_max);
-  c.trans_accel = param(pnh, "trans_accel", 0.0);
-  c.trans_decel = param(pnh, "trans_decel", 0.0);
-  c.rot_accel = param(pnh, "rot_accel", 0.0);
-  c.rot_decel = param(pnh, "rot_decel", 0.0);
-  c.enable_motors = param(pnh, "enable_motors", false);
-  c.sonar = param(pnh, "sonar", true);
-  c.link_timeout = param(pnh, "link_timeout", c.link_timeout);
-  c.reconnect_delay_max = param(pnh, "reconnect_delay_max", c.reconnect_delay_max);
-  p.odom_frame = param(pnh, "odom_frame", p.odom_frame);
-  p.base_frame = param(pnh, "base_frame", p.base_frame);
-  p.sonar_frame_prefix = param(pnh, "sonar_frame_prefix", p.sonar_frame_prefix);
-  p.publish_tf = param(pnh, "publish_tf", p.publish_tf);
-  p.publish_sonar_tf = param(pnh, "publish_sonar_tf", p.publish_sonar_tf);
-  p.battery_low_voltage = param(pnh, "battery_low_voltage", p.battery_low_voltage);
-  const std::string error = c.validate();
-  if (!error.empty()) throw std::runtime_error("parameter ~" + error);
-  if (p.odom_frame.empty() || p.base_frame.empty()) throw std::runtime_error("parameter ~odom_frame/~base_frame: empty");
+  p.client.command_mode = *aria::parseCommandMode(p.command_mode);  // a choice of the table
+  const std::string invalid = p.validate();
+  if (!invalid.empty()) throw std::runtime_error("~" + invalid);
   return p;
 }
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "amigobot_tracking/ros/logged_param.h"
+#include "amigobot_tracking/ros/param_reader.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -17,29 +17,36 @@ core::Pose2 mapToOdom(const core::Pose2& truth, const core::Pose2& odom_base) {
   return out;
 }
 
+const core::FieldTable<GroundTruthConfig>& groundTruthFields() {
+  using G = GroundTruthConfig;
+  using core::field;
+  static const core::FieldTable<G> table = {
+      field("host", &G::host, "-", "the emulator's status socket address"),
+      field("port", &G::port, "-", "its --status-port", core::interval(1, false, 65535, false)),
+      field("global_frame", &G::global_frame, "-", "map frame"),
+      field("odom_frame", &G::odom_frame, "-", "odometry frame"),
+      field("base_frame", &G::base_frame, "-", "robot frame"),
+      field("rate", &G::rate, "Hz", "map -> odom updates", core::positive()),
+      field("transform_tolerance", &G::transform_tolerance, "s", "map -> odom is stamped this far ahead",
+            core::nonNegative()),
+      field("socket_timeout", &G::socket_timeout, "s", "a slower status reply counts as a lost link",
+            core::positive()),
+      field("reconnect_period", &G::reconnect_period, "s", "between reconnection attempts", core::positive()),
+  };
+  return table;
+}
+
 std::string GroundTruthConfig::validate() const {
-  if (host.empty()) return "host must not be empty";
-  if (port <= 0 || port > 65535) return "port must be in 1..65535, got " + std::to_string(port);
-  if (global_frame.empty() || odom_frame.empty() || base_frame.empty()) return "frames must not be empty";
-  if (!(std::isfinite(rate) && rate > 0.0)) return "rate must be > 0";
-  if (!(std::isfinite(transform_tolerance) && transform_tolerance >= 0.0)) return "transform_tolerance must be >= 0";
-  if (!(std::isfinite(socket_timeout) && socket_timeout > 0.0)) return "socket_timeout must be > 0";
-  if (!(std::isfinite(reconnect_period) && reconnect_period > 0.0)) return "reconnect_period must be > 0";
+  const std::string bad = core::checkFields(groundTruthFields(), *this);
+  if (!bad.empty()) return bad;
+  if (host.empty()) return "host: must not be empty";
+  if (global_frame.empty() || odom_frame.empty() || base_frame.empty())
+    return "global_frame/odom_frame/base_frame: must not be empty";
   return "";
 }
 
 std::string loadGroundTruthConfig(const ros::NodeHandle& pnh, GroundTruthConfig* config) {
-  loggedParam(pnh, "host", &config->host);
-  loggedParam(pnh, "port", &config->port);
-  loggedParam(pnh, "global_frame", &config->global_frame);
-  loggedParam(pnh, "odom_frame", &config->odom_frame);
-  loggedParam(pnh, "base_frame", &config->base_frame);
-  loggedParam(pnh, "rate", &config->rate);
-  loggedParam(pnh, "transform_tolerance", &config->transform_tolerance);
-  loggedParam(pnh, "socket_timeout", &config->socket_timeout);
-  loggedParam(pnh, "reconnect_period", &config->reconnect_period);
-  const std::string error = config->validate();
-  return error.empty() ? "" : "parameter " + pnh.getNamespace() + "/" + error;
+  return readParams(pnh, groundTruthFields(), config);
 }
 
 }  // namespace ros_layer

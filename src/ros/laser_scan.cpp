@@ -5,44 +5,57 @@
 #include <limits>
 #include <stdexcept>
 
-#include "amigobot_tracking/ros/logged_param.h"
+#include "amigobot_tracking/ros/param_reader.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
+const core::FieldTable<LaserParams>& laserFields() {
+  using P = LaserParams;
+  using D = sensors::LaserDriverConfig;
+  using core::field;
+  static const core::FieldTable<P> table = [] {
+    core::FieldTable<P> t;
+    core::include(&t, "", &P::driver,
+                  core::FieldTable<D>{
+                      field("model", &D::model, "-", "the laser's protocol", core::oneOf({"hokuyo_urg", "sick_tim5xx"})),
+                      field("port", &D::port, "-", "serial device, or host:port for TCP"),
+                      field("reconnect_period", &D::reconnect_period, "s", "first wait before reopening (doubles up to 8x)",
+                            core::interval(0.0, true, 60.0, false)),
+                      field("stall_timeout", &D::stall_timeout, "s", "no scan for this long: the link is reopened",
+                            core::interval(0.0, true, 60.0, false)),
+                  });
+    t.push_back(field("frame_id", &P::frame_id, "-", "frame of the scans"));
+    t.push_back(field("angle_min", &P::angle_min, "rad", "crop: first published beam at or after", core::anyValue()));
+    t.push_back(field("angle_max", &P::angle_max, "rad", "crop: last published beam at or before (> angle_min)", core::anyValue()));
+    t.push_back(field("range_min", &P::range_min, "m", "override; closer returns are -inf (0: the device's)", core::nonNegative()));
+    t.push_back(field("range_max", &P::range_max, "m", "override; farther returns are +inf (0: the device's)", core::nonNegative()));
+    t.push_back(field("upside_down", &P::upside_down, "-", "mounted upside down: beams mirrored"));
+    t.push_back(field("time_offset", &P::time_offset, "s", "added to every stamp", core::interval(-1.0, true, 1.0, true)));
+    t.push_back(field("expected_rate", &P::expected_rate, "Hz", "diagnostics' scan rate (0: the model's)", core::nonNegative()));
+    return t;
+  }();
+  return table;
+}
+
 std::string LaserParams::validate() const {
+  const std::string bad = core::checkFields(laserFields(), *this);
+  if (!bad.empty()) return bad;
   try {
     driver.validate();
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
   if (frame_id.empty()) return "frame_id: empty";
-  if (!(std::isfinite(angle_min) && std::isfinite(angle_max) && angle_max > angle_min)) {
-    return "angle_max: must be > angle_min (both finite)";
-  }
-  if (!(std::isfinite(range_min) && range_min >= 0.0)) return "range_min: must be >= 0 (0: the device's)";
-  if (!(std::isfinite(range_max) && range_max >= 0.0)) return "range_max: must be >= 0 (0: the device's)";
+  if (!(angle_max > angle_min)) return "angle_max: must be > angle_min";
   if (range_max > 0.0 && !(range_max > range_min)) return "range_max: must be > range_min";
-  if (!(std::isfinite(time_offset) && std::abs(time_offset) < 1.0)) return "time_offset: must be within (-1, 1) s";
-  if (!(std::isfinite(expected_rate) && expected_rate >= 0.0)) return "expected_rate: must be >= 0";
   return "";
 }
 
 LaserParams loadLaserParams(const ros::NodeHandle& pnh) {
   LaserParams p;
-  loggedParam(pnh, "model", &p.driver.model);
-  loggedParam(pnh, "port", &p.driver.port);
-  loggedParam(pnh, "reconnect_period", &p.driver.reconnect_period);
-  loggedParam(pnh, "frame_id", &p.frame_id);
-  loggedParam(pnh, "angle_min", &p.angle_min);
-  loggedParam(pnh, "angle_max", &p.angle_max);
-  loggedParam(pnh, "range_min", &p.range_min);
-  loggedParam(pnh, "range_max", &p.range_max);
-  loggedParam(pnh, "upside_down", &p.upside_down);
-  loggedParam(pnh, "time_offset", &p.time_offset);
-  loggedParam(pnh, "expected_rate", &p.expected_rate);
-  const std::string error = p.validate();
-  if (!error.empty()) throw std::runtime_error("parameter " + pnh.getNamespace() + "/" + error);
+  const std::string error = readParams(pnh, laserFields(), &p);
+  if (!error.empty()) throw std::runtime_error("parameter " + error);
   return p;
 }
 

@@ -4,7 +4,7 @@
 
 #include <ros/console.h>
 
-#include "amigobot_tracking/ros/logged_param.h"
+#include "amigobot_tracking/ros/param_reader.h"
 
 #include "amigobot_tracking/world/raycast.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
@@ -12,35 +12,38 @@
 namespace amigobot_tracking {
 namespace ros_layer {
 
+const core::FieldTable<SimLaserConfig>& simLaserFields() {
+  using S = SimLaserConfig;
+  using core::field;
+  static const core::FieldTable<S> table = {
+      field("world_file", &S::world_file, "-", "world YAML (obstacles: [{center, radius}]); required"),
+      field("global_frame", &S::global_frame, "-", "frame of the world"),
+      field("laser_frame", &S::laser_frame, "-", "frame of the scans"),
+      field("beams", &S::beams, "-", "beams per scan", core::atLeast(2)),
+      field("angle_min", &S::angle_min, "rad", "first beam, laser frame", core::anyValue()),
+      field("angle_max", &S::angle_max, "rad", "last beam (> angle_min)", core::anyValue()),
+      field("range_min", &S::range_min, "m", "closer returns are -inf", core::nonNegative()),
+      field("range_max", &S::range_max, "m", "no return beyond (> range_min)", core::nonNegative()),
+      field("rate", &S::rate, "Hz", "scans per second", core::positive()),
+      field("noise_std", &S::noise_std, "m", "Gaussian range noise (0: exact)", core::nonNegative()),
+      field("seed", &S::seed, "-", "noise seed"),
+  };
+  return table;
+}
+
 std::string SimLaserConfig::validate() const {
-  if (world_file.empty()) return "world_file must name a world YAML";
-  if (global_frame.empty()) return "global_frame must not be empty";
-  if (laser_frame.empty()) return "laser_frame must not be empty";
-  if (beams < 2) return "beams must be >= 2, got " + std::to_string(beams);
-  if (!std::isfinite(angle_min) || !std::isfinite(angle_max) || !(angle_max > angle_min)) {
-    return "angle_max must be > angle_min (finite)";
-  }
-  if (!(std::isfinite(range_min) && range_min >= 0.0)) return "range_min must be >= 0";
-  if (!(std::isfinite(range_max) && range_max > range_min)) return "range_max must be > range_min";
-  if (!(std::isfinite(rate) && rate > 0.0)) return "rate must be > 0";
-  if (!(std::isfinite(noise_std) && noise_std >= 0.0)) return "noise_std must be >= 0";
+  const std::string bad = core::checkFields(simLaserFields(), *this);
+  if (!bad.empty()) return bad;
+  if (world_file.empty()) return "world_file: must name a world YAML";
+  if (global_frame.empty()) return "global_frame: must not be empty";
+  if (laser_frame.empty()) return "laser_frame: must not be empty";
+  if (!(angle_max > angle_min)) return "angle_max: must be > angle_min";
+  if (!(range_max > range_min)) return "range_max: must be > range_min";
   return "";
 }
 
 std::string loadSimLaserConfig(const ros::NodeHandle& pnh, SimLaserConfig* config) {
-  loggedParam(pnh, "world_file", &config->world_file);
-  loggedParam(pnh, "global_frame", &config->global_frame);
-  loggedParam(pnh, "laser_frame", &config->laser_frame);
-  loggedParam(pnh, "beams", &config->beams);
-  loggedParam(pnh, "angle_min", &config->angle_min);
-  loggedParam(pnh, "angle_max", &config->angle_max);
-  loggedParam(pnh, "range_min", &config->range_min);
-  loggedParam(pnh, "range_max", &config->range_max);
-  loggedParam(pnh, "rate", &config->rate);
-  loggedParam(pnh, "noise_std", &config->noise_std);
-  loggedParam(pnh, "seed", &config->seed);
-  const std::string error = config->validate();
-  return error.empty() ? "" : "parameter " + pnh.getNamespace() + "/" + error;
+  return readParams(pnh, simLaserFields(), config);
 }
 
 sensor_msgs::LaserScan simulateScan(const core::Pose2& laser, const std::vector<core::Disk>& disks,

@@ -8,6 +8,8 @@
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/ros/conversions.h"
+#include "amigobot_tracking/ros/markers.h"
+#include "amigobot_tracking/ros/reconfigure_mapping.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -82,14 +84,8 @@ bool TrackingNode::start() {
 
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TrackingConfig>>(reconfigure_mutex_, pnh_);
   TrackingConfig initial_gains;
-  initial_gains.k_d = controller_config_.k_d;
-  initial_gains.k_o = controller_config_.k_o;
-  initial_gains.k_r = controller_config_.k_r;
-  initial_gains.lambda = controller_config_.lambda;
-  initial_gains.rho_inf = controller_config_.rho_inf;
-  initial_gains.delta = controller_config_.delta;
-  initial_gains.v_max = controller_config_.v_max;
-  initial_gains.w_max = controller_config_.w_max;
+  const std::string unmapped = fillReconfigure(controller_config_, &initial_gains);
+  if (!unmapped.empty()) ROS_ERROR_STREAM_NAMED("tracking", unmapped);
   reconfigure_->updateConfig(initial_gains);
   reconfigure_->setCallback([this](TrackingConfig& config, uint32_t level) { onReconfigure(config, level); });
 
@@ -261,35 +257,17 @@ void TrackingNode::onReconfigure(TrackingConfig& config, uint32_t) {
   // The robot's limits cap the diamond; the capped value is shown back in the GUI.
   config.v_max = std::min(config.v_max, node_config_.robot_v_max);
   config.w_max = std::min(config.w_max, node_config_.robot_w_max);
-  candidate.k_d = config.k_d;
-  candidate.k_o = config.k_o;
-  candidate.k_r = config.k_r;
-  candidate.lambda = config.lambda;
-  candidate.rho_inf = config.rho_inf;
-  candidate.delta = config.delta;
-  candidate.v_max = config.v_max;
-  candidate.w_max = config.w_max;
-  const std::string invalid = candidate.validate();
+  std::string invalid = applyReconfigure(config, &candidate);
+  if (invalid.empty()) invalid = candidate.validate();
   if (!invalid.empty()) {
     const core::ControllerConfig& kept = config_pending_ ? pending_config_ : controller_config_;
     ROS_ERROR_STREAM_NAMED("tracking", "reconfigure rejected, gains unchanged: " << invalid);
-    config.k_d = kept.k_d;
-    config.k_o = kept.k_o;
-    config.k_r = kept.k_r;
-    config.lambda = kept.lambda;
-    config.rho_inf = kept.rho_inf;
-    config.delta = kept.delta;
-    config.v_max = kept.v_max;
-    config.w_max = kept.w_max;
+    fillReconfigure(kept, &config);
     return;
   }
   pending_config_ = candidate;
   config_pending_ = true;
-  ROS_INFO_STREAM_NAMED("tracking", "reconfigure: k_d " << candidate.k_d << ", k_o " << candidate.k_o << ", k_r "
-                                                        << candidate.k_r << ", lambda " << candidate.lambda
-                                                        << ", rho_inf " << candidate.rho_inf << ", delta "
-                                                        << candidate.delta << ", v_max " << candidate.v_max
-                                                        << ", w_max " << candidate.w_max);
+  ROS_INFO_STREAM_NAMED("tracking", "reconfigure: " << describeLiveFields(candidate));
 }
 
 }  // namespace ros_layer

@@ -6,41 +6,11 @@
 #include <ros/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include "amigobot_tracking/ros/param_reader.h"
+
 namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
-
-template <typename T>
-const char* typeName();
-template <>
-const char* typeName<double>() { return "a number"; }
-template <>
-const char* typeName<int>() { return "an integer"; }
-template <>
-const char* typeName<bool>() { return "true or false"; }
-template <>
-const char* typeName<std::string>() { return "a string"; }
-
-// Reads ~name over *value when set; logs the value used. False (with *error naming the
-// parameter) when the parameter exists with the wrong type: a typo must not silently
-// fall back to a default.
-template <typename T>
-bool readParam(const ros::NodeHandle& pnh, const std::string& name, T* value, std::string* error) {
-  const bool present = pnh.hasParam(name);
-  if (present) {
-    T read{};
-    if (!pnh.getParam(name, read)) {
-      *error = "parameter " + pnh.resolveName(name) + " must be " + typeName<T>();
-      return false;
-    }
-    *value = read;
-  }
-  ROS_INFO_STREAM_NAMED("tracking", "  " << pnh.resolveName(name) << " = " << std::boolalpha << *value
-                                         << (present ? "" : " (default)"));
-  return true;
-}
-
-bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
 bool number(const XmlRpc::XmlRpcValue& v, double* out) {
   if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
@@ -74,32 +44,46 @@ bool geometryRadius(const urdf::GeometrySharedPtr& geometry, const urdf::Pose& o
 
 }  // namespace
 
+const core::FieldTable<TrackingNodeConfig>& trackingNodeFields() {
+  using N = TrackingNodeConfig;
+  using core::field;
+  using core::positive;
+  static const core::FieldTable<N> table = {
+      field("global_frame", &N::global_frame, "-", "frame of poses, obstacles and markers"),
+      field("base_frame", &N::base_frame, "-", "the robot being controlled (REP 105)"),
+      field("target_frame", &N::target_frame, "-", "the tracked target (reference publisher or another robot)"),
+      field("control_rate", &N::control_rate, "Hz", "control timer rate, one step per tick",
+            core::interval(0.0, true, 1000.0, false)),
+      field("pose_timeout", &N::pose_timeout, "s", "older robot pose or target -> zero command", positive()),
+      field("scan_timeout", &N::scan_timeout, "s", "older scan -> zero command (when require_scan)", positive()),
+      field("require_scan", &N::require_scan, "-", "false: run on virtual obstacles alone (no laser)"),
+      field("autostart", &N::autostart, "-", "enable tracking at start (else call ~enable)"),
+      field("clicked_point_radius", &N::clicked_point_radius, "m", "radius of a disk added by rviz Publish Point",
+            positive()),
+      field("robot_v_max", &N::robot_v_max, "m/s", "the robot's own limit: v_max never exceeds it", positive()),
+      field("robot_w_max", &N::robot_w_max, "rad/s", "the robot's own limit: w_max never exceeds it", positive()),
+      field("target_exclusion_radius", &N::target_exclusion_radius, "m",
+            "laser disks this close to the target are the followed robot (0 = off)", core::nonNegative()),
+      field("resume_v_accel", &N::resume_v_accel, "m/s^2", "after a stop, v leaves zero at most this fast",
+            positive()),
+      field("resume_w_accel", &N::resume_w_accel, "rad/s^2", "after a stop, omega leaves zero at most this fast",
+            positive()),
+      field("robot_description_param", &N::robot_description_param, "-", "parameter holding the URDF"),
+      field("urdf_offset_link", &N::urdf_offset_link, "-", "URDF link fixed ahead of base_frame: its x is r"),
+  };
+  return table;
+}
+
 std::string TrackingNodeConfig::validate() const {
+  const std::string bad = core::checkFields(trackingNodeFields(), *this);
+  if (!bad.empty()) return bad;
   std::ostringstream err;
   if (global_frame.empty() || base_frame.empty() || target_frame.empty()) {
     err << (global_frame.empty() ? "global_frame" : base_frame.empty() ? "base_frame" : "target_frame")
-        << " must not be empty";
+        << ": must not be empty";
   } else if (global_frame == base_frame || base_frame == target_frame || global_frame == target_frame) {
-    err << "global_frame, base_frame and target_frame must differ, got " << global_frame << ", " << base_frame
-        << ", " << target_frame;
-  } else if (!positiveFinite(control_rate) || control_rate > 1000.0) {
-    err << "control_rate must be in (0, 1000] Hz, got " << control_rate;
-  } else if (!positiveFinite(pose_timeout)) {
-    err << "pose_timeout must be a finite number > 0, got " << pose_timeout;
-  } else if (!positiveFinite(scan_timeout)) {
-    err << "scan_timeout must be a finite number > 0, got " << scan_timeout;
-  } else if (!positiveFinite(clicked_point_radius)) {
-    err << "clicked_point_radius must be a finite number > 0, got " << clicked_point_radius;
-  } else if (!positiveFinite(robot_v_max)) {
-    err << "robot_v_max must be a finite number > 0, got " << robot_v_max;
-  } else if (!positiveFinite(robot_w_max)) {
-    err << "robot_w_max must be a finite number > 0, got " << robot_w_max;
-  } else if (!(std::isfinite(target_exclusion_radius) && target_exclusion_radius >= 0.0)) {
-    err << "target_exclusion_radius must be a finite number >= 0 (0 = off), got " << target_exclusion_radius;
-  } else if (!positiveFinite(resume_v_accel)) {
-    err << "resume_v_accel must be a finite number > 0, got " << resume_v_accel;
-  } else if (!positiveFinite(resume_w_accel)) {
-    err << "resume_w_accel must be a finite number > 0, got " << resume_w_accel;
+    err << "target_frame: global_frame, base_frame and target_frame must differ, got " << global_frame << ", "
+        << base_frame << ", " << target_frame;
   }
   return err.str();
 }
@@ -127,36 +111,15 @@ std::string readUrdfGeometry(const std::string& xml, const std::string& base_lin
 
 std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* c) {
   ROS_INFO_STREAM_NAMED("tracking", "tracking node parameters:");
-  std::string error;
-  const bool ok = readParam(pnh, "global_frame", &c->global_frame, &error) &&
-                  readParam(pnh, "base_frame", &c->base_frame, &error) &&
-                  readParam(pnh, "target_frame", &c->target_frame, &error) &&
-                  readParam(pnh, "control_rate", &c->control_rate, &error) &&
-                  readParam(pnh, "pose_timeout", &c->pose_timeout, &error) &&
-                  readParam(pnh, "scan_timeout", &c->scan_timeout, &error) &&
-                  readParam(pnh, "require_scan", &c->require_scan, &error) &&
-                  readParam(pnh, "autostart", &c->autostart, &error) &&
-                  readParam(pnh, "clicked_point_radius", &c->clicked_point_radius, &error) &&
-                  readParam(pnh, "robot_v_max", &c->robot_v_max, &error) &&
-                  readParam(pnh, "robot_w_max", &c->robot_w_max, &error) &&
-                  readParam(pnh, "target_exclusion_radius", &c->target_exclusion_radius, &error) &&
-                  readParam(pnh, "resume_v_accel", &c->resume_v_accel, &error) &&
-                  readParam(pnh, "resume_w_accel", &c->resume_w_accel, &error);
-  if (!ok) return error;
-  const std::string invalid = c->validate();
-  return invalid.empty() ? "" : "parameter ~" + invalid;
+  return readParams(pnh, trackingNodeFields(), c);
 }
 
 std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeConfig& node,
                                  core::ControllerConfig* c) {
   ROS_INFO_STREAM_NAMED("tracking", "controller parameters:");
-  std::string error;
   // Geometry: URDF first, explicit parameters override it.
-  std::string description_param = "robot_description", offset_link = "control_point";
-  if (!readParam(pnh, "robot_description_param", &description_param, &error) ||
-      !readParam(pnh, "urdf_offset_link", &offset_link, &error)) {
-    return error;
-  }
+  const std::string& description_param = node.robot_description_param;
+  const std::string& offset_link = node.urdf_offset_link;
   std::string xml, key;
   // Relative names are searched from ~ upwards (the usual /robot_description, or a namespaced one).
   if (pnh.searchParam(description_param, key) && pnh.getParam(key, xml)) {
@@ -173,33 +136,8 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
     ROS_INFO_STREAM_NAMED("tracking", "  no URDF '" << description_param << "' on the parameter server"
                                                       << ": robot_radius and offset come from parameters/defaults");
   }
-  core::EstimatorConfig& e = c->estimator;
-  const bool ok = readParam(pnh, "robot_radius", &c->robot_radius, &error) &&
-                  readParam(pnh, "offset", &c->offset, &error) && readParam(pnh, "v_max", &c->v_max, &error) &&
-                  readParam(pnh, "w_max", &c->w_max, &error) && readParam(pnh, "k_d", &c->k_d, &error) &&
-                  readParam(pnh, "k_o", &c->k_o, &error) && readParam(pnh, "lambda", &c->lambda, &error) &&
-                  readParam(pnh, "rho_inf", &c->rho_inf, &error) && readParam(pnh, "rho_0", &c->rho_0, &error) &&
-                  readParam(pnh, "k_r", &c->k_r, &error) && readParam(pnh, "delta", &c->delta, &error) &&
-                  readParam(pnh, "body_safe", &c->body_safe, &error) &&
-                  readParam(pnh, "min_margin", &c->min_margin, &error) &&
-                  readParam(pnh, "max_error_ratio", &c->max_error_ratio, &error) &&
-                  readParam(pnh, "estimator/a1", &e.a1, &error) && readParam(pnh, "estimator/a2", &e.a2, &error) &&
-                  readParam(pnh, "estimator/lambda_o", &e.lambda_o, &error) &&
-                  readParam(pnh, "estimator/rho_o", &e.rho_o, &error) &&
-                  readParam(pnh, "estimator/rho_o0", &e.rho_o0, &error) &&
-                  readParam(pnh, "estimator/jump_threshold", &e.jump_threshold, &error) &&
-                  // Beyond the paper (each off by default = the paper's law).
-                  readParam(pnh, "tangential_avoidance", &c->tangential_avoidance, &error) &&
-                  readParam(pnh, "k_t", &c->k_t, &error) &&
-                  readParam(pnh, "tangential_hysteresis", &c->tangential_hysteresis, &error) &&
-                  readParam(pnh, "moving_obstacles", &c->moving_obstacles, &error) &&
-                  readParam(pnh, "obstacle_horizon", &c->obstacle_horizon, &error) &&
-                  readParam(pnh, "predict_target", &c->predict_target, &error) &&
-                  readParam(pnh, "compensate_pose_age", &c->compensate_pose_age, &error) &&
-                  readParam(pnh, "max_prediction", &c->max_prediction, &error);
-  if (!ok) return error;
-  const std::string invalid = c->validate();
-  if (!invalid.empty()) return "parameter ~" + invalid;
+  const std::string error = readParams(pnh, core::controllerFields(), c);
+  if (!error.empty()) return error;
   std::ostringstream err;
   if (c->v_max > node.robot_v_max) {
     err << "parameter ~v_max must be <= ~robot_v_max = " << node.robot_v_max << ", got " << c->v_max;
@@ -211,30 +149,12 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
 
 std::string loadObstacleTrackerConfig(const ros::NodeHandle& pnh, core::ObstacleTrackerConfig* c) {
   ROS_INFO_STREAM_NAMED("tracking", "laser obstacle tracking parameters (used with moving_obstacles):");
-  std::string error;
-  const bool ok = readParam(pnh, "obstacle_tracker/gate", &c->gate, &error) &&
-                  readParam(pnh, "obstacle_tracker/position_gain", &c->position_gain, &error) &&
-                  readParam(pnh, "obstacle_tracker/velocity_gain", &c->velocity_gain, &error) &&
-                  readParam(pnh, "obstacle_tracker/max_speed", &c->max_speed, &error) &&
-                  readParam(pnh, "obstacle_tracker/still_speed", &c->still_speed, &error) &&
-                  readParam(pnh, "obstacle_tracker/forget_after", &c->forget_after, &error) &&
-                  readParam(pnh, "obstacle_tracker/min_hits", &c->min_hits, &error);
-  if (!ok) return error;
-  const std::string invalid = c->validate();
-  return invalid.empty() ? "" : "parameter ~obstacle_tracker/" + invalid;
+  return readParams(pnh, core::obstacleTrackerFields(), c, "obstacle_tracker/");
 }
 
 std::string loadScanObstacleConfig(const ros::NodeHandle& pnh, core::ScanObstacleConfig* c) {
   ROS_INFO_STREAM_NAMED("tracking", "laser obstacle parameters:");
-  std::string error;
-  const bool ok = readParam(pnh, "scan/cluster_tolerance", &c->cluster_tolerance, &error) &&
-                  readParam(pnh, "scan/max_disk_radius", &c->max_disk_radius, &error) &&
-                  readParam(pnh, "scan/min_disk_radius", &c->min_disk_radius, &error) &&
-                  readParam(pnh, "scan/min_cluster_points", &c->min_cluster_points, &error) &&
-                  readParam(pnh, "scan/max_range", &c->max_range, &error);
-  if (!ok) return error;
-  const std::string invalid = c->validate();
-  return invalid.empty() ? "" : "parameter ~scan/" + invalid;
+  return readParams(pnh, core::scanObstacleFields(), c, "scan/");
 }
 
 std::string loadVirtualObstacles(const ros::NodeHandle& pnh, std::vector<core::VirtualObstacle>* list) {

@@ -6,11 +6,32 @@
 namespace amigobot_tracking {
 namespace ros_layer {
 
-std::string TrailConfig::validate() const {
-  if (!(std::isfinite(min_distance) && min_distance >= 0.0)) return "min_distance must be >= 0";
-  if (max_poses < 2) return "max_poses must be >= 2, got " + std::to_string(max_poses);
-  return "";
+const core::FieldTable<TrailConfig>& trailFields() {
+  static const core::FieldTable<TrailConfig> table = {
+      core::field("min_distance", &TrailConfig::min_distance, "m", "a pose closer than this to the last is not added",
+                  core::nonNegative()),
+      core::field("max_poses", &TrailConfig::max_poses, "-", "oldest poses dropped beyond this", core::atLeast(2)),
+  };
+  return table;
 }
+
+std::string TrailConfig::validate() const { return core::checkFields(trailFields(), *this); }
+
+const core::FieldTable<TrailNodeConfig>& trailNodeFields() {
+  static const core::FieldTable<TrailNodeConfig> table = [] {
+    using T = TrailNodeConfig;
+    core::FieldTable<T> t = {
+        core::field("frame", &T::frame, "-", "the frame whose path is drawn"),
+        core::field("global_frame", &T::global_frame, "-", "the path's frame"),
+        core::field("rate", &T::rate, "Hz", "tf lookups per second", core::positive()),
+    };
+    core::include(&t, "", &T::trail, trailFields());
+    return t;
+  }();
+  return table;
+}
+
+std::string TrailNodeConfig::validate() const { return core::checkFields(trailNodeFields(), *this); }
 
 bool appendToTrail(const TrailConfig& config, const geometry_msgs::PoseStamped& pose, nav_msgs::Path* path) {
   if (!path->poses.empty()) {

@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/sim/scenario_fields.h"
 
 namespace amigobot_tracking {
 namespace sim {
@@ -117,17 +118,55 @@ double positive(Section& s, const std::string& name, double value) {
   return value;
 }
 
-double nonNegative(Section& s, const std::string& name, double value) {
-  if (!(value >= 0.0)) fail(s.file(), s.node()[name], s.key(name), "must be >= 0, got " + std::to_string(value));
-  return value;
+// Reads the rows of `table` that `nameOf` places in this section (their YAML names; "" for
+// rows of other sections): type, bounds, and whether the key is required.
+template <class C, class NameOf>
+void readSection(Section& s, const core::FieldTable<C>& table, C& config, NameOf&& nameOf) {
+  for (const core::Field<C>& f : table) {
+    const std::string name = nameOf(f.key);
+    if (name.empty()) continue;
+    if (!s.has(name)) {
+      if (requiredScenarioKey(s.key(name))) s.required(name);  // throws "missing (required)"
+      s.optional(name);
+      continue;
+    }
+    const YAML::Node node = s.optional(name);
+    core::FieldValue value;
+    switch (f.type) {
+      case core::FieldType::kReal: value = s.toNumber(node, s.key(name)); break;
+      case core::FieldType::kBoolean: value = s.toBool(node, s.key(name)); break;
+      case core::FieldType::kText: value = s.toText(node, s.key(name)); break;
+      case core::FieldType::kInteger: {
+        const double v = s.toNumber(node, s.key(name));
+        if (v != std::floor(v) || std::abs(v) > 2e9)
+          fail(s.file(), node, s.key(name), "expected an integer, got " + describe(node));
+        value = static_cast<int>(v);
+        break;
+      }
+    }
+    const std::string why = core::checkValue(f.type, f.bounds, value);
+    if (!why.empty()) fail(s.file(), node, s.key(name), why);
+    f.set(config, value);
+  }
+}
+
+// The controller's rows of one section (robot or controller) under their scenario names.
+void readControllerFields(Section& s, const std::string& section, core::ControllerConfig& c) {
+  readSection(s, core::controllerFields(), c, [&](const std::string& key) {
+    const std::string path = scenarioPath(key);
+    return path.rfind(section + ".", 0) == 0 ? path.substr(section.size() + 1) : std::string();
+  });
+}
+
+// The scenario's own rows ("simulation/duration") of one section.
+void readScenarioFields(Section& s, const std::string& section, Scenario& scenario) {
+  readSection(s, scenarioFields(), scenario, [&](const std::string& key) {
+    return key.rfind(section + "/", 0) == 0 ? key.substr(section.size() + 1) : std::string();
+  });
 }
 
 void parseRobot(Section s, sim::ClosedLoopSetup& setup) {
-  core::ControllerConfig& c = setup.controller;
-  c.robot_radius = positive(s, "radius", s.number("radius"));
-  c.offset = positive(s, "offset", s.number("offset"));
-  c.v_max = positive(s, "v_max", s.number("v_max"));
-  c.w_max = positive(s, "w_max", s.number("w_max"));
+  readControllerFields(s, "robot", setup.controller);
   const std::vector<double> pose = s.numbers("initial_pose", 3);
   setup.initial_pose = {pose[0], pose[1], pose[2]};
   s.finish();
@@ -135,35 +174,7 @@ void parseRobot(Section s, sim::ClosedLoopSetup& setup) {
 
 void parseController(Section s, sim::ClosedLoopSetup& setup) {
   core::ControllerConfig& c = setup.controller;
-  c.k_d = s.number("k_d");
-  c.k_o = s.number("k_o");
-  c.k_r = s.number("k_r");
-  c.lambda = s.number("lambda");
-  c.rho_inf = s.number("rho_inf");
-  c.rho_0 = s.number("rho_0");
-  c.delta = s.number("delta");
-  c.estimator.a1 = s.number("a1");
-  c.estimator.a2 = s.number("a2");
-  c.estimator.lambda_o = s.number("lambda_o");
-  c.estimator.rho_o = s.number("rho_o");
-  c.estimator.rho_o0 = s.number("rho_o0");
-  c.body_safe = s.boolean("body_safe");
-  // Optional.
-  c.min_margin = s.number("min_margin", 1e-3);
-  c.max_error_ratio = s.number("max_error_ratio", c.max_error_ratio);
-  c.estimator.jump_threshold = s.number("jump_threshold", c.estimator.jump_threshold);
-  // Beyond the paper, all optional; the defaults are the paper's law.
-  c.tangential_avoidance = s.boolean("tangential_avoidance", c.tangential_avoidance);
-  c.k_t = nonNegative(s, "k_t", s.number("k_t", c.k_t));
-  c.tangential_hysteresis = nonNegative(s, "tangential_hysteresis", s.number("tangential_hysteresis", c.tangential_hysteresis));
-  if (c.tangential_hysteresis >= 1.0)
-    fail(s.file(), s.node()["tangential_hysteresis"], s.key("tangential_hysteresis"),
-         "must be < 1 (a sine margin), got " + std::to_string(c.tangential_hysteresis));
-  c.moving_obstacles = s.boolean("moving_obstacles", c.moving_obstacles);
-  c.obstacle_horizon = nonNegative(s, "obstacle_horizon", s.number("obstacle_horizon", c.obstacle_horizon));
-  c.predict_target = s.boolean("predict_target", c.predict_target);
-  c.compensate_pose_age = s.boolean("compensate_pose_age", c.compensate_pose_age);
-  c.max_prediction = nonNegative(s, "max_prediction", s.number("max_prediction", c.max_prediction));
+  readControllerFields(s, "controller", c);
   const std::string variant = s.text("variant", "paper");
   try {
     setup.law = parseControlLaw(variant);
@@ -243,20 +254,13 @@ void parseObstacles(const YAML::Node& list, const std::string& file, sim::Closed
 
 void parseSimulation(Section s, Scenario& scenario) {
   sim::ClosedLoopSetup& setup = scenario.setup;
-  setup.duration = positive(s, "duration", s.number("duration"));
-  setup.control_period = positive(s, "control_period", s.number("control_period", 1e-3));
-  setup.max_step = s.number("max_step", 0.0);
-  scenario.log_period = s.number("log_period", 0.0);
-  if (scenario.log_period < 0.0) fail(s.file(), s.node()["log_period"], s.key("log_period"), "must be >= 0");
-  if (setup.max_step < 0.0) fail(s.file(), s.node()["max_step"], s.key("max_step"), "must be >= 0 (0 = fixed step)");
+  readScenarioFields(s, "simulation", scenario);
   const double seed = s.number("seed", 1.0);
   if (!(seed >= 0.0 && seed <= 9.0e15 && seed == std::floor(seed)))
     fail(s.file(), s.node()["seed"], s.key("seed"), "must be a whole number >= 0");
   setup.sensor.seed = static_cast<std::uint64_t>(seed);
-  sim::StepPolicy& policy = setup.step_policy;
-  policy.comfortable_ratio = s.number("comfortable_ratio", policy.comfortable_ratio);
-  policy.tight_ratio = s.number("tight_ratio", policy.tight_ratio);
-  if (!(policy.comfortable_ratio >= 0.0 && policy.comfortable_ratio < policy.tight_ratio))
+  const sim::StepPolicy& policy = setup.step_policy;
+  if (!(policy.comfortable_ratio < policy.tight_ratio))
     fail(s.file(), s.node()["comfortable_ratio"], s.key("comfortable_ratio"), "must be >= 0 and < tight_ratio");
   if (s.has("integrator")) {
     try {
@@ -267,14 +271,12 @@ void parseSimulation(Section s, Scenario& scenario) {
   } else {
     s.optional("integrator");
   }
-  scenario.name = s.text("name", scenario.name);
   s.finish();
 }
 
-void parseTarget(Section s, sim::ClosedLoopSetup& setup) {
-  setup.sample_period = s.number("sample_period", 0.0);
-  setup.sensor.noise_std = s.number("noise_std", 0.0);
-  setup.sensor.delay = s.number("delay", 0.0);
+void parseTarget(Section s, Scenario& scenario) {
+  sim::ClosedLoopSetup& setup = scenario.setup;
+  readScenarioFields(s, "target", scenario);
   const YAML::Node jumps = s.optional("jumps");
   if (jumps.IsDefined() && !jumps.IsNull()) {
     if (!jumps.IsSequence()) fail(s.file(), jumps, s.key("jumps"), "expected a list of {t, offset}, got " + describe(jumps));
@@ -288,14 +290,10 @@ void parseTarget(Section s, sim::ClosedLoopSetup& setup) {
     }
   }
   s.finish();
-  const std::string err = setup.sensor.validate();
-  if (!err.empty()) fail(s.file(), s.node(), s.key(err.substr(0, err.find(' '))), err);
-  if (setup.sample_period < 0.0) fail(s.file(), s.node()["sample_period"], s.key("sample_period"), "must be >= 0");
 }
 
-void parseLocalization(Section s, sim::ClosedLoopSetup& setup) {
-  setup.pose_sensor.sample_period = nonNegative(s, "sample_period", s.number("sample_period", 0.0));
-  setup.pose_sensor.delay = nonNegative(s, "delay", s.number("delay", 0.0));
+void parseLocalization(Section s, Scenario& scenario) {
+  readScenarioFields(s, "localization", scenario);
   s.finish();
 }
 
@@ -315,71 +313,18 @@ std::unique_ptr<core::Reference> Scenario::makeReference() const {
   return std::make_unique<core::SplineReference>(r.waypoints, r.duration);
 }
 
-namespace {
-
-// The YAML names of an enumeration, in the order the messages list them.
-template <typename E>
-struct Named {
-  const char* name;
-  E value;
-};
-
-constexpr Named<sim::ControlLaw> kLaws[] = {
-    {"paper", sim::ControlLaw::kPaper}, {"fixed_rho", sim::ControlLaw::kFixedRho},
-    {"proportional", sim::ControlLaw::kProportional}};
-constexpr Named<sim::VelocitySource> kSources[] = {
-    {"paper", sim::VelocitySource::kPaperEstimator}, {"finite_difference", sim::VelocitySource::kFiniteDifference},
-    {"kalman", sim::VelocitySource::kKalman}};
-constexpr Named<sim::Integrator> kIntegrators[] = {
-    {"explicit", sim::Integrator::kExplicit}, {"band_implicit", sim::Integrator::kBandImplicit},
-    {"second_order", sim::Integrator::kSecondOrder}};
-
-// Throws std::invalid_argument("unknown WHAT 'name' (choice, choice, ...)").
-template <typename E, size_t N>
-E byName(const Named<E> (&table)[N], const std::string& name, const std::string& what) {
-  std::string choices;
-  for (const Named<E>& n : table) {
-    if (name == n.name) return n.value;
-    choices += (choices.empty() ? "" : ", ") + std::string(n.name);
-  }
-  throw std::invalid_argument("unknown " + what + " '" + name + "' (" + choices + ")");
-}
-
-template <typename E, size_t N>
-std::string nameOf(const Named<E> (&table)[N], E value) {
-  for (const Named<E>& n : table)
-    if (n.value == value) return n.name;
-  return "?";
-}
-
-}  // namespace
-
-sim::ControlLaw parseControlLaw(const std::string& name) { return byName(kLaws, name, "controller variant"); }
-sim::VelocitySource parseVelocitySource(const std::string& name) { return byName(kSources, name, "estimator"); }
-sim::Integrator parseIntegrator(const std::string& name) { return byName(kIntegrators, name, "integrator"); }
-std::string toString(sim::ControlLaw law) { return nameOf(kLaws, law); }
-std::string toString(sim::VelocitySource source) { return nameOf(kSources, source); }
-std::string toString(sim::Integrator integrator) { return nameOf(kIntegrators, integrator); }
-
-// The YAML key of a field named first in a validate() message.
-static std::string keyOf(const std::string& message) {
-  const std::string field = message.substr(0, message.find(' '));
-  for (const char* robot : {"radius", "offset", "v_max", "w_max", "initial_pose"})
-    if (field == robot) return "robot." + field;
-  for (const char* simulation : {"duration", "control_period", "max_step"})
-    if (field == simulation) return "simulation." + field;
-  for (const char* target : {"sample_period", "noise_std", "delay", "jumps:"})
-    if (field == target) return "target." + field.substr(0, field.find(':'));
-  if (field == "pose_sample_period") return "localization.sample_period";
-  if (field == "pose_delay") return "localization.delay";
-  if (field == "obstacles:" || field == "obstacle_velocities") return "obstacles";
-  return "controller." + field;
-}
 
 void checkScenario(const Scenario& scenario) {
   const sim::ClosedLoopSetup& setup = scenario.setup;
+  // The controller's rules across fields name a table key ("key: reason"); the parser has
+  // checked every other field, so validateSetup's own messages are a last guard.
+  const std::string controller = setup.controller.validate();
+  if (!controller.empty()) {
+    const std::string key = controller.substr(0, controller.find(':'));
+    throw ScenarioError(scenario.file + ": " + scenarioPath(key) + controller.substr(key.size()));
+  }
   const std::string err = sim::validateSetup(setup);
-  if (!err.empty()) throw ScenarioError(scenario.file + ": " + keyOf(err) + ": " + err);
+  if (!err.empty()) throw ScenarioError(scenario.file + ": " + err);
   const auto reference = scenario.makeReference();
   const Eigen::Vector2d p_d = reference->at(0.0).position;
   const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, setup.controller.offset);
@@ -393,13 +338,14 @@ void checkScenario(const Scenario& scenario) {
   }
 }
 
-Scenario parseScenario(const std::string& text, const std::string& file) {
+Scenario parseScenario(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw ScenarioError(file + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
+  for (const std::string& o : overrides) applyOverride(&root, file, o);
   Scenario scenario;
   scenario.file = file;
   scenario.name = stem(file);
@@ -411,21 +357,21 @@ Scenario parseScenario(const std::string& text, const std::string& file) {
   if (!obstacles.IsDefined()) fail(file, root, "obstacles", "missing (required; [] for none)");
   if (!obstacles.IsNull()) parseObstacles(obstacles, file, scenario.setup);
   parseSimulation(Section(top.required("simulation"), "simulation", file), scenario);
-  if (top.has("target")) parseTarget(Section(top.optional("target"), "target", file), scenario.setup);
+  if (top.has("target")) parseTarget(Section(top.optional("target"), "target", file), scenario);
   else top.optional("target");
-  if (top.has("localization")) parseLocalization(Section(top.optional("localization"), "localization", file), scenario.setup);
+  if (top.has("localization")) parseLocalization(Section(top.optional("localization"), "localization", file), scenario);
   else top.optional("localization");
   top.finish();
   checkScenario(scenario);
   return scenario;
 }
 
-Scenario loadScenario(const std::string& path) {
+Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides) {
   std::ifstream in(path);
   if (!in) throw ScenarioError(path + ": cannot open the scenario file");
   std::stringstream text;
   text << in.rdbuf();
-  return parseScenario(text.str(), path);
+  return parseScenario(text.str(), path, overrides);
 }
 
 }  // namespace sim

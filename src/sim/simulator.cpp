@@ -1,5 +1,6 @@
 #include "amigobot_tracking/sim/simulator.h"
 
+#include "amigobot_tracking/sim/config_json.h"
 #include "amigobot_tracking/sim/json.h"
 
 #include <chrono>
@@ -71,6 +72,7 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   Json& s = j["scenario"];
   s["name"] = scenario.name;
   s["file"] = scenario.file;
+  s["controller"] = c;
   s["reference"] = scenario.reference.type;
   s["variant"] = toString(setup.law);
   s["estimator"] = toString(setup.velocity_source);

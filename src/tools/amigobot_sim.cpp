@@ -3,7 +3,8 @@
 // (scripts/reports/plot_run.py). No ROS at run time.
 //
 //   amigobot_sim --scenario FILE.yaml --out DIR [options]
-//   amigobot_sim --scenario FILE.yaml --benchmark N        (real-time factor, nothing written)
+//   amigobot_sim --scenario FILE.yaml --benchmark N [--benchmark-json F]  (real-time factor)
+//   amigobot_sim --scenario FILE.yaml --out DIR --set controller.k_d=2 --set target.delay=0.1
 //   amigobot_sim --scenario FILE.yaml --out DIR --monte-carlo N --seed S
 #include <spawn.h>
 #include <sys/wait.h>
@@ -18,6 +19,9 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"
@@ -28,60 +32,61 @@ using namespace amigobot_tracking;
 
 namespace {
 
-const char* kUsage =
-    "usage: amigobot_sim --scenario FILE.yaml --out DIR [options]\n"
-    "  --variant paper|fixed_rho|proportional   control law (overrides controller.variant)\n"
-    "  --estimator paper|finite_difference|kalman  target velocity source (controller.estimator)\n"
-    "  --body-safe true|false                   effective radius R + r in (10) (controller.body_safe)\n"
-    "  --max-step S                             variable step up to S seconds; 0 = fixed (simulation.max_step)\n"
-    "  --tangential true|false                  tangential escape (controller.tangential_avoidance)\n"
-    "  --moving-obstacles true|false            obstacle velocities in (10) (controller.moving_obstacles)\n"
-    "  --predict-target true|false              p_d + v_hat * sample age (controller.predict_target)\n"
-    "  --compensate-pose-age true|false         replay the commands over the pose's age (controller.compensate_pose_age)\n"
-    "  --target-delay S                         target measurement delay [s] (target.delay)\n"
-    "  --target-period S                        target sampling period [s] (target.sample_period)\n"
-    "  --pose-delay S                           robot pose delay [s] (localization.delay)\n"
-    "  --pose-period S                          robot pose sampling period [s] (localization.sample_period)\n"
-    "  --obstacle-speed S                       Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s\n"
-    "  --control-period S                       the fine step [s] (simulation.control_period)\n"
-    "  --integrator explicit|band_implicit|second_order  how steps are formed (simulation.integrator)\n"
-    "  --log-period S                           CSV row spacing [s]; 0 = every step (simulation.log_period)\n"
-    "  --no-plot                                write CSV and JSON only\n"
-    "  --monte-carlo N --seed S                 N randomised variants; writes DIR/monte_carlo.json\n"
-    "  --seed S                                 noise seed of a single run (simulation.seed)\n"
-    "  --benchmark N                            run N times without output; print the real-time factor\n";
+// The flags that are shorthands for a scenario key: each becomes `--set section.key=value`.
+struct Shorthand {
+  const char* flag;
+  const char* key;
+  const char* help;
+};
+constexpr Shorthand kShorthands[] = {
+    {"--variant", "controller.variant", "control law paper|fixed_rho|proportional"},
+    {"--estimator", "controller.estimator", "target velocity source paper|finite_difference|kalman"},
+    {"--body-safe", "controller.body_safe", "effective radius R + r in (10) (true|false)"},
+    {"--tangential", "controller.tangential_avoidance", "tangential escape (true|false)"},
+    {"--moving-obstacles", "controller.moving_obstacles", "obstacle velocities in (10) (true|false)"},
+    {"--predict-target", "controller.predict_target", "p_d + v_hat * sample age (true|false)"},
+    {"--compensate-pose-age", "controller.compensate_pose_age", "replay the commands over the pose's age"},
+    {"--target-delay", "target.delay", "target measurement delay [s]"},
+    {"--target-period", "target.sample_period", "target sampling period [s]"},
+    {"--pose-delay", "localization.delay", "robot pose delay [s]"},
+    {"--pose-period", "localization.sample_period", "robot pose sampling period [s]"},
+    {"--max-step", "simulation.max_step", "variable step up to S seconds; 0 = fixed"},
+    {"--control-period", "simulation.control_period", "the fine step [s]"},
+    {"--integrator", "simulation.integrator", "explicit|band_implicit|second_order"},
+    {"--log-period", "simulation.log_period", "CSV row spacing [s]; 0 = every step"},
+    {"--seed", "simulation.seed", "noise seed of a single run; Monte Carlo: the base seed"},
+};
 
-int usage(const std::string& why) {
-  std::fprintf(stderr, "amigobot_sim: %s\n%s", why.c_str(), kUsage);
-  return 2;
-}
-
-double toNumber(const std::string& flag, const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v)) throw sim::ScenarioError(flag + ": not a number: '" + text + "'");
-  return v;
-}
-
-bool toBool(const std::string& flag, const std::string& text) {
-  if (text != "true" && text != "false") throw sim::ScenarioError(flag + ": expected true or false, got '" + text + "'");
-  return text == "true";
-}
-
-// A number >= 0 (delays, periods, speeds).
-double toNonNegative(const std::string& flag, const std::string& text) {
-  const double v = toNumber(flag, text);
-  if (v < 0.0) throw sim::ScenarioError(flag + ": must be >= 0, got '" + text + "'");
-  return v;
-}
-
-// A whole number in [lo, hi] (counts and seeds).
-long long toWhole(const std::string& flag, const std::string& text, double lo, double hi) {
-  const double v = toNumber(flag, text);
-  if (v != std::floor(v) || v < lo || v > hi)
-    throw sim::ScenarioError(flag + ": expected a whole number in [" + std::to_string(static_cast<long long>(lo)) + ", " +
-                             std::to_string(static_cast<long long>(hi)) + "], got '" + text + "'");
-  return static_cast<long long>(v);
+// --benchmark: N runs without output; the wall-time figures on stdout and, with a path, as JSON.
+int runBenchmark(const sim::Scenario& scenario, int runs, const std::string& json_path) {
+  std::vector<double> walls;
+  sim::RunResult r;
+  for (int i = 0; i < runs; ++i) {
+    r = sim::runScenario(scenario, false);
+    walls.push_back(r.wall_time);
+  }
+  std::sort(walls.begin(), walls.end());
+  const double median = walls[walls.size() / 2];
+  const bool variable = scenario.setup.max_step > scenario.setup.control_period;
+  const sim::RunMetrics& m = r.summary.metrics;
+  std::printf("%s: %s, %s, %llu steps for %.3f s simulated; wall median %.3f ms, best %.3f ms over %d runs\n",
+              scenario.name.c_str(), variable ? "variable step" : "fixed step",
+              sim::toString(scenario.setup.integrator).c_str(), static_cast<unsigned long long>(m.steps), m.sim_time,
+              median * 1e3, walls.front() * 1e3, runs);
+  std::printf("realtime_factor %.0f x (median), %.0f x (best)\n", m.sim_time / median, m.sim_time / walls.front());
+  if (json_path.empty()) return 0;
+  const nlohmann::json j = {{"scenario", scenario.name},
+                            {"variable_step", variable},
+                            {"integrator", sim::toString(scenario.setup.integrator)},
+                            {"steps", m.steps},
+                            {"sim_time", m.sim_time},
+                            {"runs", runs},
+                            {"wall_median", median},
+                            {"wall_best", walls.front()},
+                            {"realtime_factor_median", m.sim_time / median},
+                            {"realtime_factor_best", m.sim_time / walls.front()}};
+  sim::writeText(json_path, j.dump(2) + "\n");
+  return 0;
 }
 
 int runPlot(const std::string& csv) {
@@ -101,102 +106,52 @@ int runPlot(const std::string& csv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::map<std::string, std::string> opt;
-  bool plot = true;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    if (flag == "--no-plot") {
-      plot = false;
-    } else if (flag == "--help" || flag == "-h") {
-      std::printf("%s", kUsage);
-      return 0;
-    } else if (flag.rfind("--", 0) == 0 && i + 1 < argc) {
-      opt[flag] = argv[++i];
-    } else {
-      return usage("unexpected argument '" + flag + "'");
-    }
-  }
-  static const char* known[] = {"--scenario", "--out", "--variant", "--estimator", "--body-safe", "--max-step",
-                                "--control-period", "--log-period", "--monte-carlo", "--seed", "--benchmark",
-                                "--tangential", "--moving-obstacles", "--predict-target", "--compensate-pose-age", "--target-delay",
-                                "--target-period", "--pose-delay", "--pose-period", "--obstacle-speed", "--integrator"};
-  for (const auto& [flag, value] : opt) {
-    if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
-      return usage("unknown option '" + flag + "'");
-  }
-  if (!opt.count("--scenario")) return usage("--scenario FILE.yaml is required");
-  if (!opt.count("--out") && !opt.count("--benchmark")) return usage("--out DIR is required");
-
-  sim::Scenario scenario;
+  CLI::App app{"Offline simulator: a scenario file through the core's closed loop (no ROS)", "amigobot_sim"};
+  std::string scenario_path, out, benchmark_json;
+  std::vector<std::string> sets;
   int monte_carlo = 0, benchmark = 0;
   double obstacle_speed = 0.0;
-  std::uint64_t seed = 1;
+  bool no_plot = false;
+  app.add_option("--scenario", scenario_path, "scenario file (config/scenarios/*.yaml)")->required();
+  app.add_option("--out", out, "output folder: trajectory.csv, metrics.json, figures");
+  app.add_option("--set", sets, "section.key=value: any scenario key (repeatable), checked like the file");
+  std::map<std::string, std::string> shorthand_values;
+  for (const Shorthand& s : kShorthands)
+    app.add_option(s.flag, shorthand_values[s.flag], std::string(s.help) + " (= --set " + s.key + "=...)");
+  app.add_option("--monte-carlo", monte_carlo, "N randomised variants; writes DIR/monte_carlo.json")
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--obstacle-speed", obstacle_speed, "Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--benchmark", benchmark, "run N times without output; print the real-time factor")
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--benchmark-json", benchmark_json, "with --benchmark: also write its figures to this JSON file");
+  app.add_flag("--no-plot", no_plot, "write CSV and JSON only");
   try {
-    scenario = sim::loadScenario(opt["--scenario"]);
-    sim::ClosedLoopSetup& setup = scenario.setup;
-    try {
-      if (opt.count("--variant")) setup.law = sim::parseControlLaw(opt["--variant"]);
-    } catch (const std::invalid_argument& e) {
-      throw sim::ScenarioError(std::string("--variant: ") + e.what());
-    }
-    try {
-      if (opt.count("--estimator")) setup.velocity_source = sim::parseVelocitySource(opt["--estimator"]);
-    } catch (const std::invalid_argument& e) {
-      throw sim::ScenarioError(std::string("--estimator: ") + e.what());
-    }
-    try {
-      if (opt.count("--integrator")) setup.integrator = sim::parseIntegrator(opt["--integrator"]);
-    } catch (const std::invalid_argument& e) {
-      throw sim::ScenarioError(std::string("--integrator: ") + e.what());
-    }
-    core::ControllerConfig& c = setup.controller;
-    if (opt.count("--body-safe")) c.body_safe = toBool("--body-safe", opt["--body-safe"]);
-    if (opt.count("--tangential")) c.tangential_avoidance = toBool("--tangential", opt["--tangential"]);
-    if (opt.count("--moving-obstacles")) c.moving_obstacles = toBool("--moving-obstacles", opt["--moving-obstacles"]);
-    if (opt.count("--predict-target")) c.predict_target = toBool("--predict-target", opt["--predict-target"]);
-    if (opt.count("--compensate-pose-age"))
-      c.compensate_pose_age = toBool("--compensate-pose-age", opt["--compensate-pose-age"]);
-    if (opt.count("--target-delay")) setup.sensor.delay = toNonNegative("--target-delay", opt["--target-delay"]);
-    if (opt.count("--target-period")) setup.sample_period = toNonNegative("--target-period", opt["--target-period"]);
-    if (opt.count("--pose-delay")) setup.pose_sensor.delay = toNonNegative("--pose-delay", opt["--pose-delay"]);
-    if (opt.count("--pose-period"))
-      setup.pose_sensor.sample_period = toNonNegative("--pose-period", opt["--pose-period"]);
-    if (opt.count("--obstacle-speed")) obstacle_speed = toNonNegative("--obstacle-speed", opt["--obstacle-speed"]);
-    if (opt.count("--max-step")) setup.max_step = toNumber("--max-step", opt["--max-step"]);
-    if (opt.count("--control-period")) setup.control_period = toNumber("--control-period", opt["--control-period"]);
-    if (opt.count("--log-period")) scenario.log_period = toNumber("--log-period", opt["--log-period"]);
-    if (opt.count("--monte-carlo")) monte_carlo = static_cast<int>(toWhole("--monte-carlo", opt["--monte-carlo"], 1, 1e6));
-    if (opt.count("--benchmark")) benchmark = static_cast<int>(toWhole("--benchmark", opt["--benchmark"], 1, 1e6));
-    if (opt.count("--seed")) {
-      seed = static_cast<std::uint64_t>(toWhole("--seed", opt["--seed"], 0, 9e15));
-      setup.sensor.seed = seed;  // a single run: the noise seed; Monte Carlo: the base of every variant
-    }
-    sim::checkScenario(scenario);  // again, with the overrides
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;  // --help: 0; a bad command line: 2, as a bad scenario
+  }
+  if (out.empty() && benchmark == 0) {
+    std::fprintf(stderr, "amigobot_sim: --out DIR is required (or --benchmark N)\n%s", app.help().c_str());
+    return 2;
+  }
+
+  std::vector<std::string> overrides;
+  for (const Shorthand& s : kShorthands)
+    if (app.count(s.flag)) overrides.push_back(std::string(s.key) + "=" + shorthand_values[s.flag]);
+  overrides.insert(overrides.end(), sets.begin(), sets.end());
+  sim::Scenario scenario;
+  try {
+    scenario = sim::loadScenario(scenario_path, overrides);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "amigobot_sim: %s\n", e.what());
     return 2;
   }
+  // Monte Carlo's base seed: --seed, else 1 (not the file's simulation.seed).
+  const std::uint64_t seed = app.count("--seed") ? scenario.setup.sensor.seed : 1;
+  if (benchmark > 0) return runBenchmark(scenario, benchmark, benchmark_json);
 
-  if (benchmark > 0) {
-    std::vector<double> walls;
-    sim::RunResult r;
-    for (int i = 0; i < benchmark; ++i) {
-      r = sim::runScenario(scenario, false);
-      walls.push_back(r.wall_time);
-    }
-    std::sort(walls.begin(), walls.end());
-    const double median = walls[walls.size() / 2];
-    std::printf("%s: %s, %s, %llu steps for %.3f s simulated; wall median %.3f ms, best %.3f ms over %d runs\n",
-                scenario.name.c_str(), scenario.setup.max_step > scenario.setup.control_period ? "variable step" : "fixed step",
-                sim::toString(scenario.setup.integrator).c_str(),
-                static_cast<unsigned long long>(r.summary.metrics.steps), r.summary.metrics.sim_time, median * 1e3,
-                walls.front() * 1e3, benchmark);
-    std::printf("realtime_factor %.0f x (median), %.0f x (best)\n", r.summary.metrics.sim_time / median,
-                r.summary.metrics.sim_time / walls.front());
-    return 0;
-  }
-
-  const std::string out = opt["--out"];
   try {
     std::filesystem::create_directories(out);
     if (monte_carlo > 0) {
@@ -240,7 +195,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "amigobot_sim: %s\n", e.what());
     return 1;
   }
-  if (plot) {
+  if (!no_plot) {
     std::fflush(stdout);  // our lines before the plotter's
     const int rc = runPlot(out + "/trajectory.csv");
     if (rc != 0) {

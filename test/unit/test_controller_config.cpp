@@ -1,4 +1,4 @@
-// ControllerConfig::validate names the first bad field.
+// ControllerConfig::validate names the first bad field by its table key.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,7 +25,7 @@ TEST(ControllerConfig, DefaultsAreValid) { EXPECT_EQ(ControllerConfig().validate
 
 TEST(ControllerConfig, RejectsEachBadField) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  expectRejected([](ControllerConfig& c) { c.robot_radius = 0.0; }, "radius");
+  expectRejected([](ControllerConfig& c) { c.robot_radius = 0.0; }, "robot_radius");
   expectRejected([](ControllerConfig& c) { c.offset = -0.3; }, "offset");
   expectRejected([](ControllerConfig& c) { c.offset = 0.0; }, "offset");
   expectRejected([](ControllerConfig& c) { c.v_max = 0.0; }, "v_max");
@@ -40,12 +40,12 @@ TEST(ControllerConfig, RejectsEachBadField) {
   expectRejected([](ControllerConfig& c) { c.delta = std::numeric_limits<double>::infinity(); }, "delta");
   expectRejected([](ControllerConfig& c) { c.max_error_ratio = 1.0; }, "max_error_ratio");
   expectRejected([](ControllerConfig& c) { c.min_margin = c.delta; }, "min_margin");
-  expectRejected([](ControllerConfig& c) { c.estimator.a1 = 0.0; }, "a1");
-  expectRejected([](ControllerConfig& c) { c.estimator.a2 = -2.0; }, "a2");
-  expectRejected([](ControllerConfig& c) { c.estimator.lambda_o = 0.0; }, "lambda_o");
-  expectRejected([](ControllerConfig& c) { c.estimator.rho_o = 0.0; }, "rho_o");
-  expectRejected([](ControllerConfig& c) { c.estimator.rho_o0 = 0.001; }, "rho_o0");
-  expectRejected([](ControllerConfig& c) { c.estimator.jump_threshold = -1.0; }, "estimator jump_threshold");
+  expectRejected([](ControllerConfig& c) { c.estimator.a1 = 0.0; }, "estimator/a1");
+  expectRejected([](ControllerConfig& c) { c.estimator.a2 = -2.0; }, "estimator/a2");
+  expectRejected([](ControllerConfig& c) { c.estimator.lambda_o = 0.0; }, "estimator/lambda_o");
+  expectRejected([](ControllerConfig& c) { c.estimator.rho_o = 0.0; }, "estimator/rho_o");
+  expectRejected([](ControllerConfig& c) { c.estimator.rho_o0 = 0.001; }, "estimator/rho_o0");
+  expectRejected([](ControllerConfig& c) { c.estimator.jump_threshold = -1.0; }, "estimator/jump_threshold");
 }
 
 TEST(ControllerConfig, MessageNamesTheValue) {

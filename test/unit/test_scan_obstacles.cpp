@@ -213,7 +213,7 @@ TEST(ScanObstacles, InvalidGeometryIsRefused) {
 TEST(ScanObstacles, ConfigValidationNamesTheField) {
   const ScanObstacleConfig good;
   EXPECT_EQ(good.validate(), "");
-  auto first_word = [](ScanObstacleConfig c) { return c.validate().substr(0, c.validate().find(' ')); };
+  auto first_word = [](ScanObstacleConfig c) { return c.validate().substr(0, c.validate().find(':')); };
   ScanObstacleConfig c = good;
   c.cluster_tolerance = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(first_word(c), "cluster_tolerance");

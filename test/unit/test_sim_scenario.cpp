@@ -239,3 +239,25 @@ TEST(SimScenario, RefusesBadBeyondThePaperKeys) {
   expectRefused(replaced(kMinimum, "radius: 0.15}", "radius: 0.15, velocity: [0.3]}"), "obstacles[0].velocity");
   expectRefused(replaced(kMinimum, "radius: 0.15}", "radius: 0.15, velocity: fast}"), "obstacles[0].velocity");
 }
+
+// amigobot_sim --set section.key=value: applied to the file's tree and checked like the file.
+TEST(SimScenario, OverridesAreCheckedLikeTheFile) {
+  const sim::Scenario s = sim::parseScenario(kMinimum, "min.yaml", {"controller.k_d=2", "target.delay=0.1",
+                                                                   "controller.tangential_avoidance=true"});
+  EXPECT_EQ(s.setup.controller.k_d, 2.0);
+  EXPECT_EQ(s.setup.sensor.delay, 0.1);
+  EXPECT_TRUE(s.setup.controller.tangential_avoidance);
+  const auto refused = [](const std::string& assignment, const std::string& key) {
+    try {
+      sim::parseScenario(kMinimum, "bad.yaml", {assignment});
+      ADD_FAILURE() << "accepted --set " << assignment;
+    } catch (const sim::ScenarioError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  refused("controller.k_d=-1", "controller.k_d: must be a finite number > 0");
+  refused("controller.k_dd=1", "controller.k_dd: unknown key");
+  refused("controller.body_safe=maybe", "controller.body_safe");
+  refused("simulation.duration", "expected section.key=value");
+  refused("reference.amplitude=0", "reference.amplitude");
+}

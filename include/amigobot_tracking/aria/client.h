@@ -22,6 +22,7 @@
 #include "amigobot_tracking/aria/sip.h"
 #include "amigobot_tracking/aria/transport.h"
 #include "amigobot_tracking/aria/wheel_command.h"
+#include "amigobot_tracking/core/field_table.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -50,9 +51,14 @@ struct ClientConfig {
   double trans_accel = 0.0, trans_decel = 0.0;  // [m/s^2] SETA when > 0; 0 = firmware's
   double rot_accel = 0.0, rot_decel = 0.0;      // [rad/s^2] SETRA when > 0
 
-  // Empty when valid, otherwise "field: reason" for the first bad field.
+  // Empty when valid, otherwise "key: reason" for the first bad field (the table's bounds,
+  // then the robot's limits, its watchdog and the back-off order).
   std::string validate() const;
 };
+
+// The plain fields (robot and command_mode are chosen by name: see ros/driver.h). Keys are the
+// driver's ROS parameters (cmd_vel_timeout: the command_timeout member).
+const core::FieldTable<ClientConfig>& clientFields();
 
 enum class LinkState { kStopped, kConnecting, kConnected, kWaitingToReconnect };
 std::string linkStateName(LinkState state);

@@ -14,6 +14,7 @@
 #include "amigobot_tracking/aria/packet.h"
 #include "amigobot_tracking/aria/robot_params.h"
 #include "amigobot_tracking/aria/sip.h"
+#include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -32,8 +33,11 @@ struct EmulatorOptions {
   double sonar_max_range = 5.0;   // [m] reported when nothing is in the cone
   double sonar_half_cone = 0.2;   // [rad] half opening angle of a transducer's cone
   double physics_step = 0.01;     // [s]
-  std::string validate() const;
+  std::string validate() const;   // "" or "key: reason"
 };
+
+// Its plain fields (the robot, world, pose and seed are set by the emulator tool).
+const core::FieldTable<EmulatorOptions>& emulatorFields();
 
 struct EmulatorCounters {
   std::uint64_t packets = 0;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "amigobot_tracking/core/estimator.h"
+#include "amigobot_tracking/core/field_table.h"
 
 namespace amigobot_tracking {
 namespace core {
@@ -51,9 +52,14 @@ struct ControllerConfig {
 
   // The radius used in (10): R, or R + r when body_safe.
   double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
-  // Empty when valid, otherwise "field: reason" naming the first bad field.
+  // Empty when valid, otherwise "key: reason" naming the first bad field (the table's
+  // bounds, then rho_0 > rho_inf, min_margin < delta and the estimator's own rules).
   std::string validate() const;
 };
+
+// Every field read from parameters and scenarios, the estimator's under "estimator/"
+// (adaptive_rho follows the scenario's controller variant). Live rows: dynamic_reconfigure.
+const FieldTable<ControllerConfig>& controllerFields();
 
 }  // namespace core
 }  // namespace amigobot_tracking

@@ -33,6 +33,8 @@
 
 #include <Eigen/Core>
 
+#include "amigobot_tracking/core/field_table.h"
+
 namespace amigobot_tracking {
 namespace core {
 
@@ -50,9 +52,13 @@ struct EstimatorConfig {
            jump_threshold == o.jump_threshold && bdf2 == o.bdf2;
   }
 
-  // Empty when valid, otherwise "field: reason" for the first bad field.
+  // Empty when valid, otherwise "key: reason" for the first bad field (the table's bounds,
+  // then rho_o0 >= rho_o).
   std::string validate() const;
 };
+
+// The fields read from parameters and scenarios (bdf2 follows the simulator's integrator).
+const FieldTable<EstimatorConfig>& estimatorFields();
 
 // rho_o(t) = (rho_o(0) - rho_o) exp(-lambda_o t) + rho_o.
 double estimatorBound(const EstimatorConfig& config, double elapsed);

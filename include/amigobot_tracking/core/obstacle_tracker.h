@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -27,8 +28,11 @@ struct ObstacleTrackerConfig {
   double forget_after = 0.5;    // [s] a track unseen this long is dropped
   int min_hits = 3;             // matches before a velocity is reported
 
-  std::string validate() const;  // empty when valid, else names the first bad field
+  std::string validate() const;  // empty when valid, else "key: reason" for the first bad field
 };
+
+// Its fields (ROS parameters under ~obstacle_tracker/).
+const FieldTable<ObstacleTrackerConfig>& obstacleTrackerFields();
 
 struct TrackedObstacle {
   std::uint32_t id = 0;

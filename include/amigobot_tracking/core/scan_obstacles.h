@@ -29,6 +29,7 @@
 
 #include <Eigen/Geometry>
 
+#include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -41,9 +42,12 @@ struct ScanObstacleConfig {
   int min_cluster_points = 1;       // [-] smaller clusters are noise (1 keeps thin legs).
   double max_range = 1e9;           // [m] beams farther than this are ignored (besides range_max).
 
-  // Empty when valid, otherwise "field: reason" naming the first bad field.
+  // Empty when valid, otherwise "key: reason" naming the first bad field.
   std::string validate() const;
 };
+
+// Its fields (ROS parameters under ~scan/).
+const FieldTable<ScanObstacleConfig>& scanObstacleFields();
 
 // The geometry of a sensor_msgs/LaserScan, without ROS.
 struct ScanGeometry {

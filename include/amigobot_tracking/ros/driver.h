@@ -25,6 +25,9 @@ namespace ros_layer {
 
 struct DriverParams {
   aria::ClientConfig client;
+  std::string robot_model = "amigo";     // built-in robot parameters: amigo | amigo-sh
+  std::string robot_params;              // robot YAML (config/robots/); overrides robot_model
+  std::string command_mode = "vel_rvel";  // vel_rvel | vel2
   std::string odom_frame = "odom";
   std::string base_frame = "base_link";
   std::string sonar_frame_prefix = "sonar_";  // transducer i publishes in <prefix><i>
@@ -34,9 +37,16 @@ struct DriverParams {
   double heading_variance = 1e-2;   // [rad^2]
   double battery_low_voltage = 11.0;  // [V] diagnostics warn below this
   double sonar_min_range = 0.1;       // [m] sensor_msgs/Range min_range
+
+  // "" or "key: reason": the table's bounds, non-empty frames, then client.validate() (with
+  // client.robot and client.command_mode already chosen from robot_model/robot_params/command_mode).
+  std::string validate() const;
 };
 
-// Reads the private parameters (see README); throws std::runtime_error naming the bad one.
+// The driver's ROS parameters: its own rows and aria::clientFields(), flat.
+const core::FieldTable<DriverParams>& driverFields();
+
+// Reads the private parameters (see README); throws std::runtime_error("~key: reason").
 DriverParams loadDriverParams(const ros::NodeHandle& pnh);
 
 class AmigobotDriver {

@@ -8,6 +8,7 @@
 
 #include <ros/node_handle.h>
 
+#include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -27,8 +28,10 @@ struct GroundTruthConfig {
   double socket_timeout = 0.5;          // [s] a status reply slower than this counts as a lost link
   double reconnect_period = 1.0;        // [s] between reconnection attempts
 
-  std::string validate() const;  // empty when valid, else names the bad field
+  std::string validate() const;  // empty when valid, else "key: reason"
 };
+
+const core::FieldTable<GroundTruthConfig>& groundTruthFields();
 
 std::string loadGroundTruthConfig(const ros::NodeHandle& pnh, GroundTruthConfig* config);
 

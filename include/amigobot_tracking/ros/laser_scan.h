@@ -10,13 +10,14 @@
 #include <ros/node_handle.h>
 #include <sensor_msgs/LaserScan.h>
 
+#include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/sensors/laser_driver.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
 struct LaserParams {
-  sensors::LaserDriverConfig driver;  // model, port, reconnect_period
+  sensors::LaserDriverConfig driver;  // model, port, reconnect_period, stall_timeout
   std::string frame_id = "laser";
   double angle_min = -M_PI, angle_max = M_PI;  // [rad] crop; wider than the device: no crop
   double range_min = 0.0, range_max = 0.0;     // [m] override; 0: the device's own
@@ -28,6 +29,8 @@ struct LaserParams {
   std::string validate() const;
 };
 
+// The one description of the parameters (config/laser.yaml, the README's table).
+const core::FieldTable<LaserParams>& laserFields();
 // Reads the private parameters; throws std::runtime_error naming the bad one.
 LaserParams loadLaserParams(const ros::NodeHandle& pnh);
 

@@ -10,6 +10,7 @@
 #include <ros/node_handle.h>
 #include <sensor_msgs/LaserScan.h>
 
+#include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -28,11 +29,13 @@ struct SimLaserConfig {
   double noise_std = 0.005;        // [m] Gaussian range noise (0: exact)
   int seed = 1;                    // noise seed
 
-  // Empty when valid, else names the bad field.
+  // Empty when valid, else "key: reason".
   std::string validate() const;
 };
 
-// Reads the private parameters (each logged), then validates. Empty string when valid.
+const core::FieldTable<SimLaserConfig>& simLaserFields();
+
+// Reads the private parameters (param_reader.h). "" or "~key: reason".
 std::string loadSimLaserConfig(const ros::NodeHandle& pnh, SimLaserConfig* config);
 
 // One scan of `disks` seen from `laser` (pose of the laser frame in the global frame).

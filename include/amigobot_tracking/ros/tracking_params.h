@@ -10,6 +10,7 @@
 #include <ros/node_handle.h>
 
 #include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 #include "amigobot_tracking/core/virtual_obstacles.h"
@@ -17,30 +18,34 @@
 namespace amigobot_tracking {
 namespace ros_layer {
 
-// Frames (REP 105) and the node's own timing and safety settings.
+// Frames (REP 105), the node's own timing and safety settings, and where the URDF is.
+// Defaults and meanings: trackingNodeFields().
 struct TrackingNodeConfig {
-  std::string global_frame = "map";      // frame of poses, obstacles, markers
-  std::string base_frame = "base_link";  // the robot (REP 105)
-  std::string target_frame = "target";   // the tracked target (another robot, or the reference publisher)
-  double control_rate = 20.0;            // [Hz] control timer
-  double pose_timeout = 0.5;             // [s] older robot pose or target -> zero command
-  double scan_timeout = 0.5;             // [s] older scan -> zero command (when require_scan)
-  bool require_scan = true;              // false: run on virtual obstacles alone (no laser)
-  bool autostart = false;                // enable tracking at start
-  double clicked_point_radius = 0.2;     // [m] radius of a disk added by rviz "Publish Point"
-  double robot_v_max = 1.0;              // [m/s] the robot's own limit: v_max never exceeds it
-  double robot_w_max = 5.24;             // [rad/s] the robot's own limit (ARIA: 300 deg/s)
-  // [m] laser disks whose centre is this close to the target are the target itself (another
-  // robot being followed), not obstacles; 0 = off. Never applied to virtual obstacles.
+  std::string global_frame = "map";
+  std::string base_frame = "base_link";
+  std::string target_frame = "target";
+  double control_rate = 20.0;
+  double pose_timeout = 0.5;
+  double scan_timeout = 0.5;
+  bool require_scan = true;
+  bool autostart = false;
+  double clicked_point_radius = 0.2;
+  double robot_v_max = 1.0;
+  double robot_w_max = 5.24;  // ARIA: 300 deg/s
   double target_exclusion_radius = 0.0;
   // Resume ramp (core/resume_ramp.h): after a zero command of the nodelet's own (inputs lost,
   // disabled, a refused step) the command grows by at most these per second; stops are
   // immediate. Defaults: the AmigoBot firmware's accelerations (config/robots/amigo.yaml).
-  double resume_v_accel = 0.3;    // [m/s^2]
-  double resume_w_accel = 1.745;  // [rad/s^2]
+  double resume_v_accel = 0.3;
+  double resume_w_accel = 1.745;
+  std::string robot_description_param = "robot_description";
+  std::string urdf_offset_link = "control_point";
 
+  // "" or "key: reason" (the table's bounds, non-empty and distinct frames).
   std::string validate() const;
 };
+
+const core::FieldTable<TrackingNodeConfig>& trackingNodeFields();
 
 // Robot geometry read from the URDF (robot_description) with urdfdom.
 struct UrdfGeometry {
@@ -54,11 +59,11 @@ struct UrdfGeometry {
 std::string readUrdfGeometry(const std::string& xml, const std::string& base_link, const std::string& offset_link,
                              UrdfGeometry* out);
 
-// Loaders: read ~params over the struct's defaults, log every value, return "" or an error
-// naming the parameter (wrong type, or the struct's validate()).
+// Loaders: read ~params over the struct's defaults through param_reader.h, log every value,
+// return "" or "~key: reason" (wrong type, bounds, or the struct's validate()).
 std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* config);
 // robot_radius and offset: ~robot_radius/~offset if set, else the URDF on the parameter
-// server (~robot_description_param, default "robot_description"), else the defaults;
+// server (node.robot_description_param), else the defaults;
 // the log says which.
 std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeConfig& node,
                                  core::ControllerConfig* config);

@@ -4,7 +4,11 @@
 
 #include <cstddef>
 
+#include <string>
+
 #include <nav_msgs/Path.h>
+
+#include "amigobot_tracking/core/field_table.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -12,8 +16,21 @@ namespace ros_layer {
 struct TrailConfig {
   double min_distance = 0.02;  // [m] a pose closer than this to the last one is not added
   int max_poses = 3000;        // [-] oldest poses dropped beyond this (>= 2)
-  std::string validate() const;
+  std::string validate() const;  // "" or "key: reason"
 };
+
+const core::FieldTable<TrailConfig>& trailFields();
+
+// The trail_publisher node's parameters: which frame, in which frame, how often.
+struct TrailNodeConfig {
+  std::string frame = "base_link";
+  std::string global_frame = "map";
+  double rate = 5.0;  // [Hz]
+  TrailConfig trail;
+  std::string validate() const;  // "" or "key: reason"
+};
+
+const core::FieldTable<TrailNodeConfig>& trailNodeFields();
 
 // Appends `pose` to `path` unless it is within min_distance of the last pose; returns
 // whether it was appended.

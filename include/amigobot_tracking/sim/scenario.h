@@ -42,10 +42,13 @@ struct Scenario {
   std::unique_ptr<core::Reference> makeReference() const;
 };
 
-// Reads and checks a scenario file. Throws ScenarioError("FILE: key: reason").
-Scenario loadScenario(const std::string& path);
+// Reads and checks a scenario file. Throws ScenarioError("FILE:LINE: section.key: reason").
+// `overrides`: "section.key=value" (amigobot_sim --set), applied before the checks: a value
+// set so is checked like one in the file (unknown key, type, bounds).
+Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
 // The same from text; `file` only labels the messages.
-Scenario parseScenario(const std::string& text, const std::string& file);
+Scenario parseScenario(const std::string& text, const std::string& file,
+                       const std::vector<std::string>& overrides = {});
 // The checks that need the whole scenario (controller and setup validation, |e(0)| < rho(0));
 // parseScenario runs them, and callers that change a scenario (overrides, Monte Carlo) call
 // them again. Throws ScenarioError.

@@ -23,6 +23,7 @@
 #include "amigobot_tracking/core/waypoint_reference.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/node_command_line.h"
+#include "amigobot_tracking/ros/param_reader.h"
 
 using amigobot_tracking::core::Reference;
 
@@ -61,52 +62,61 @@ std::vector<Eigen::Vector2d> readWaypoints(const ros::NodeHandle& pnh, const std
   return points;
 }
 
-double readPositive(const ros::NodeHandle& pnh, const std::string& name, double fallback) {
-  double value = fallback;
-  if (pnh.hasParam(name) && !pnh.getParam(name, value)) {
-    throw std::invalid_argument("parameter " + pnh.resolveName(name) + " must be a number");
-  }
-  if (!(std::isfinite(value) && value > 0.0)) {
-    throw std::invalid_argument("parameter " + pnh.resolveName(name) + " must be > 0, got " + std::to_string(value));
-  }
-  ROS_INFO_STREAM("  " << pnh.resolveName(name) << " = " << value);
-  return value;
-}
-
-std::unique_ptr<Reference> makeReference(const ros::NodeHandle& pnh) {
+// The plain parameters; origin, reference/center and reference/waypoints are lists (above).
+struct PublisherConfig {
+  std::string global_frame = "map";
+  std::string target_frame = "target";
+  double rate = 50.0;
+  double time_scale = 1.0;
+  double start_delay = 0.0;
   std::string type = "circle";
-  pnh.getParam("reference/type", type);
-  ROS_INFO_STREAM("  " << pnh.resolveName("reference/type") << " = " << type);
+  double amplitude = 1.0, k = 3.0, period_scale = 1.0;  // rose
+  double radius = 1.0, period = 30.0;                   // circle
+  double duration = 60.0;                               // spline
+  double speed = 0.2;                                   // waypoints
+  bool loop = false;                                    // waypoints
+
+  std::string validate() const { return amigobot_tracking::core::checkFields(fields(), *this); }
+
+  static const amigobot_tracking::core::FieldTable<PublisherConfig>& fields() {
+    using P = PublisherConfig;
+    using namespace amigobot_tracking::core;
+    static const FieldTable<P> table = {
+        field("global_frame", &P::global_frame, "-", "frame the target moves in"),
+        field("target_frame", &P::target_frame, "-", "the broadcast frame"),
+        field("rate", &P::rate, "Hz", "tf broadcasts per second", positive()),
+        field("time_scale", &P::time_scale, "-", "> 1 runs the reference slower", positive()),
+        field("start_delay", &P::start_delay, "s", "the target waits at its first point this long", nonNegative()),
+        field("reference/type", &P::type, "-", "the curve", oneOf({"rose", "circle", "spline", "waypoints"})),
+        field("reference/amplitude", &P::amplitude, "m", "rose: amplitude", positive()),
+        field("reference/k", &P::k, "-", "rose: petal factor", positive()),
+        field("reference/period_scale", &P::period_scale, "s/rad", "rose: its own time scale", positive()),
+        field("reference/radius", &P::radius, "m", "circle: radius", positive()),
+        field("reference/period", &P::period, "s", "circle: period", positive()),
+        field("reference/duration", &P::duration, "s", "spline: duration", positive()),
+        field("reference/speed", &P::speed, "m/s", "waypoints: speed", positive()),
+        field("reference/loop", &P::loop, "-", "waypoints: start again after the last"),
+    };
+    return table;
+  }
+};
+
+std::unique_ptr<Reference> makeReference(const ros::NodeHandle& pnh, const PublisherConfig& c) {
   using namespace amigobot_tracking::core;
   try {
-    if (type == "rose") {
-      return std::make_unique<RoseReference>(readPositive(pnh, "reference/amplitude", 1.0),
-                                             readPositive(pnh, "reference/k", 3.0),
-                                             readPositive(pnh, "reference/period_scale", 1.0));
-    }
-    if (type == "circle") {
+    if (c.type == "rose") return std::make_unique<RoseReference>(c.amplitude, c.k, c.period_scale);
+    if (c.type == "circle") {
       Eigen::Vector2d center(0.0, 0.0);
       readPoint(pnh, "reference/center", &center);
-      return std::make_unique<CircleReference>(center, readPositive(pnh, "reference/radius", 1.0),
-                                               readPositive(pnh, "reference/period", 30.0));
+      return std::make_unique<CircleReference>(center, c.radius, c.period);
     }
-    if (type == "spline") {
-      return std::make_unique<SplineReference>(readWaypoints(pnh, "reference/waypoints"),
-                                               readPositive(pnh, "reference/duration", 60.0));
-    }
-    if (type == "waypoints") {
-      bool loop = false;
-      pnh.getParam("reference/loop", loop);
-      return std::make_unique<WaypointReference>(readWaypoints(pnh, "reference/waypoints"),
-                                                 readPositive(pnh, "reference/speed", 0.2), loop);
-    }
+    if (c.type == "spline") return std::make_unique<SplineReference>(readWaypoints(pnh, "reference/waypoints"), c.duration);
+    return std::make_unique<WaypointReference>(readWaypoints(pnh, "reference/waypoints"), c.speed, c.loop);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string(e.what()).find("parameter") == 0
                                     ? e.what()
                                     : "parameter " + pnh.resolveName("reference") + ": " + e.what());
   }
-  throw std::invalid_argument("parameter " + pnh.resolveName("reference/type") +
-                              " must be rose, circle, spline or waypoints, got '" + type + "'");
 }
 
 }  // namespace
@@ -119,25 +129,20 @@ const amigobot_tracking::ros_layer::NodeHelp kHelp{
 int main(int argc, char** argv) {
   amigobot_tracking::ros_layer::initNode(argc, argv, "reference_publisher", kHelp);
   ros::NodeHandle pnh("~");
-  std::string global_frame = "map", target_frame = "target";
-  pnh.getParam("global_frame", global_frame);
-  pnh.getParam("target_frame", target_frame);
+  PublisherConfig config;
   std::unique_ptr<Reference> reference;
-  double rate = 0.0, time_scale = 0.0, start_delay = 0.0;
   Eigen::Vector2d origin(0.0, 0.0);
   try {
-    rate = readPositive(pnh, "rate", 50.0);
-    time_scale = readPositive(pnh, "time_scale", 1.0);
-    pnh.getParam("start_delay", start_delay);
-    if (!(std::isfinite(start_delay) && start_delay >= 0.0)) {
-      throw std::invalid_argument("parameter " + pnh.resolveName("start_delay") + " must be >= 0");
-    }
+    const std::string error = amigobot_tracking::ros_layer::readParams(pnh, PublisherConfig::fields(), &config);
+    if (!error.empty()) throw std::invalid_argument(error);
     readPoint(pnh, "origin", &origin);
-    reference = makeReference(pnh);
+    reference = makeReference(pnh, config);
   } catch (const std::invalid_argument& e) {
     ROS_FATAL_STREAM("reference_publisher refuses to start: " << e.what());
     return 1;
   }
+  const std::string &global_frame = config.global_frame, &target_frame = config.target_frame;
+  const double rate = config.rate, time_scale = config.time_scale, start_delay = config.start_delay;
   ROS_INFO_STREAM("reference_publisher: " << global_frame << " -> " << target_frame << " at " << rate
                                           << " Hz, time_scale " << time_scale << ", start_delay " << start_delay
                                           << " s, origin (" << origin.transpose() << ")");

@@ -5,7 +5,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
-#include "amigobot_tracking/ros/logged_param.h"
+#include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/trail.h"
 #include "amigobot_tracking/ros/node_command_line.h"
 
@@ -18,20 +18,15 @@ const ros_layer::NodeHelp kHelp{
 int main(int argc, char** argv) {
   ros_layer::initNode(argc, argv, "trail_publisher", kHelp);
   ros::NodeHandle nh, pnh("~");
-  std::string frame = "base_link", global_frame = "map";
-  double rate = 5.0;
-  ros_layer::TrailConfig config;
-  ros_layer::loggedParam(pnh, "frame", &frame);
-  ros_layer::loggedParam(pnh, "global_frame", &global_frame);
-  ros_layer::loggedParam(pnh, "rate", &rate);
-  ros_layer::loggedParam(pnh, "min_distance", &config.min_distance);
-  ros_layer::loggedParam(pnh, "max_poses", &config.max_poses);
-  std::string error = config.validate();
-  if (error.empty() && !(rate > 0.0)) error = "rate must be > 0";
+  ros_layer::TrailNodeConfig params;
+  const std::string error = ros_layer::readParams(pnh, ros_layer::trailNodeFields(), &params);
   if (!error.empty()) {
-    ROS_FATAL_STREAM("trail_publisher: parameter " << pnh.getNamespace() << "/" << error);
+    ROS_FATAL_STREAM("trail_publisher: " << error);
     return 1;
   }
+  const std::string &frame = params.frame, &global_frame = params.global_frame;
+  const ros_layer::TrailConfig& config = params.trail;
+  const double rate = params.rate;
   tf2_ros::Buffer tf;
   tf2_ros::TransformListener listener(tf);
   ros::Publisher pub = nh.advertise<nav_msgs::Path>("trail", 1, true);

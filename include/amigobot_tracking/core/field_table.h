@@ -1,0 +1,174 @@
+// One description per parameter set: a table of the fields of a config struct (key, unit,
+// meaning, type, bounds, live-reconfigurable) that every reader and writer walks, so a field
+// is named once. Keys are ROS-style paths ('/' between nesting levels: "estimator/a1"), the
+// same in ROS parameters, scenario files, dynamic_reconfigure, JSON and --set. Defaults are
+// read from a default-constructed struct, never written a second time. Std only.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace amigobot_tracking {
+namespace core {
+
+enum class FieldType { kReal, kInteger, kBoolean, kText };
+using FieldValue = std::variant<double, int, bool, std::string>;
+
+// Allowed values: an interval for numbers (NaN never; +-inf only when !finite), a list of
+// choices for text (empty: any text).
+struct Bounds {
+  double min = -std::numeric_limits<double>::infinity();
+  bool min_open = false;
+  double max = std::numeric_limits<double>::infinity();
+  bool max_open = false;
+  bool finite = true;
+  std::vector<std::string> choices;
+};
+
+inline Bounds anyValue() { return Bounds(); }  // finite, any number
+inline Bounds interval(double min, bool min_open, double max, bool max_open) {
+  Bounds b;
+  b.min = min;
+  b.min_open = min_open;
+  b.max = max;
+  b.max_open = max_open;
+  return b;
+}
+inline Bounds positive() { return interval(0.0, true, std::numeric_limits<double>::infinity(), false); }
+inline Bounds nonNegative() { return interval(0.0, false, std::numeric_limits<double>::infinity(), false); }
+inline Bounds atLeast(double min) { return interval(min, false, std::numeric_limits<double>::infinity(), false); }
+inline Bounds oneOf(std::vector<std::string> choices) {
+  Bounds b;
+  b.choices = std::move(choices);
+  return b;
+}
+inline Bounds allowInfinite(Bounds b) {
+  b.finite = false;
+  return b;
+}
+
+template <class C>
+struct Field {
+  std::string key;      // "k_d", "estimator/a1"
+  std::string unit;     // "m/s"; "-" when dimensionless
+  std::string meaning;  // one line
+  FieldType type = FieldType::kReal;
+  Bounds bounds;
+  bool live = false;  // changeable at run time (dynamic_reconfigure)
+  std::function<FieldValue(const C&)> get;
+  std::function<void(C&, const FieldValue&)> set;  // the value has the field's type
+};
+
+template <class C>
+using FieldTable = std::vector<Field<C>>;
+
+namespace detail {
+template <class T>
+constexpr FieldType typeOf();
+template <>
+constexpr FieldType typeOf<double>() { return FieldType::kReal; }
+template <>
+constexpr FieldType typeOf<int>() { return FieldType::kInteger; }
+template <>
+constexpr FieldType typeOf<bool>() { return FieldType::kBoolean; }
+template <>
+constexpr FieldType typeOf<std::string>() { return FieldType::kText; }
+}  // namespace detail
+
+// A row for the member `member` of C (double, int, bool or std::string).
+template <class C, class T>
+Field<C> field(std::string key, T C::*member, std::string unit, std::string meaning, Bounds bounds = {}) {
+  Field<C> f;
+  f.key = std::move(key);
+  f.unit = std::move(unit);
+  f.meaning = std::move(meaning);
+  f.type = detail::typeOf<T>();
+  f.bounds = std::move(bounds);
+  f.get = [member](const C& c) { return FieldValue(c.*member); };
+  f.set = [member](C& c, const FieldValue& v) { c.*member = std::get<T>(v); };
+  return f;
+}
+
+// The same row, changeable at run time.
+template <class C>
+Field<C> live(Field<C> f) {
+  f.live = true;
+  return f;
+}
+
+// Appends `sub`'s rows for the member `member` of C under `prefix` ("estimator/").
+template <class C, class S>
+void include(FieldTable<C>* into, const std::string& prefix, S C::*member, const FieldTable<S>& sub) {
+  for (const Field<S>& s : sub) {
+    Field<C> f;
+    f.key = prefix + s.key;
+    f.unit = s.unit;
+    f.meaning = s.meaning;
+    f.type = s.type;
+    f.bounds = s.bounds;
+    f.live = s.live;
+    f.get = [member, get = s.get](const C& c) { return get(c.*member); };
+    f.set = [member, set = s.set](C& c, const FieldValue& v) { set(c.*member, v); };
+    into->push_back(std::move(f));
+  }
+}
+
+// "a number", "an integer", "true or false", "a text".
+std::string typeName(FieldType type);
+// "> 0", "in (0, 1]", "one of a, b", "" for any value.
+std::string describeBounds(FieldType type, const Bounds& bounds);
+// "" when `value` is allowed, else "must be ..., got ..." (without the key).
+std::string checkValue(FieldType type, const Bounds& bounds, const FieldValue& value);
+// The value as written in YAML/--set ("0.15", "true", "map"); reals to full precision.
+std::string formatValue(const FieldValue& value);
+// Parses text of the given type ("3" is a real too; booleans: true/false). False on bad text.
+bool parseValue(FieldType type, const std::string& text, FieldValue* out);
+
+template <class C>
+const Field<C>* findField(const FieldTable<C>& table, const std::string& key) {
+  for (const Field<C>& f : table)
+    if (f.key == key) return &f;
+  return nullptr;
+}
+
+// "" when every field is within its bounds, else "key: reason" for the first that is not.
+template <class C>
+std::string checkFields(const FieldTable<C>& table, const C& config) {
+  for (const Field<C>& f : table) {
+    const std::string why = checkValue(f.type, f.bounds, f.get(config));
+    if (!why.empty()) return f.key + ": " + why;
+  }
+  return "";
+}
+
+// Sets one field from text (`--set`): "" or "key: reason" (unknown key, bad text, out of bounds).
+template <class C>
+std::string setField(const FieldTable<C>& table, const std::string& key, const std::string& text, C* config) {
+  const Field<C>* f = findField(table, key);
+  if (!f) return key + ": unknown key";
+  FieldValue value;
+  if (!parseValue(f->type, text, &value)) return key + ": expected " + typeName(f->type) + ", got '" + text + "'";
+  const std::string why = checkValue(f->type, f->bounds, value);
+  if (!why.empty()) return key + ": " + why;
+  f->set(*config, value);
+  return "";
+}
+
+// Calls visit(field, value) for every row, in table order (loggers, JSON).
+template <class C, class Visit>
+void visitFields(const FieldTable<C>& table, const C& config, Visit&& visit) {
+  for (const Field<C>& f : table) visit(f, f.get(config));
+}
+
+// The value of the row in a default-constructed C.
+template <class C>
+FieldValue defaultValue(const Field<C>& f) {
+  return f.get(C());
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,61 @@
+// ClientConfig's field table and its validation.
+#include <string>
+
+#include "amigobot_tracking/aria/client.h"
+
+namespace amigobot_tracking {
+namespace aria {
+
+const core::FieldTable<ClientConfig>& clientFields() {
+  using C = ClientConfig;
+  using core::field;
+  using core::nonNegative;
+  using core::positive;
+  static const core::FieldTable<C> table = {
+      field("port", &C::port, "-", "serial device, or host:port for TCP"),
+      field("baud", &C::baud, "baud", "serial only", core::atLeast(1)),
+      field("v_max", &C::v_max, "m/s", "diamond half-width in v every command is checked against", positive()),
+      field("w_max", &C::w_max, "rad/s", "diamond half-width in omega", positive()),
+      field("cmd_vel_timeout", &C::command_timeout, "s", "a request older than this becomes a stop; 0 = never",
+            nonNegative()),
+      field("command_refresh", &C::command_refresh, "s", "motion command re-sent at least this often", positive()),
+      field("min_command_interval", &C::min_command_interval, "s", "at most one motion command per this",
+            nonNegative()),
+      field("sync_timeout", &C::sync_timeout, "s", "wait for each SYNC reply", positive()),
+      field("max_sync_tries", &C::max_sync_tries, "-", "SYNC packets sent per connection attempt", core::atLeast(3)),
+      field("config_timeout", &C::config_timeout, "s", "wait for CONFIGpac; 0 = do not request it", nonNegative()),
+      field("link_timeout", &C::link_timeout, "s", "no SIP for this long -> link lost, reconnect", positive()),
+      field("reconnect_delay_min", &C::reconnect_delay_min, "s", "first back-off after a failure", positive()),
+      field("reconnect_delay_max", &C::reconnect_delay_max, "s", "back-off ceiling (doubles up to it)", positive()),
+      field("enable_motors", &C::enable_motors, "-", "ENABLE 1 after every (re)connection"),
+      field("sonar", &C::sonar, "-", "SONAR 1 after OPEN (false: SONAR 0)"),
+      field("open_with_argument", &C::open_with_argument, "-", "OPEN int 1 as ARIA; false: a bare OPEN (p2os)"),
+      field("max_packet_count", &C::max_packet_count, "-", "parser limit on the count byte",
+            core::interval(3, false, 255, false)),
+      field("trans_accel", &C::trans_accel, "m/s^2", "SETA when > 0; 0 = the firmware's", nonNegative()),
+      field("trans_decel", &C::trans_decel, "m/s^2", "SETA (decel) when > 0; 0 = the firmware's", nonNegative()),
+      field("rot_accel", &C::rot_accel, "rad/s^2", "SETRA when > 0; 0 = the firmware's", nonNegative()),
+      field("rot_decel", &C::rot_decel, "rad/s^2", "SETRA (decel) when > 0; 0 = the firmware's", nonNegative()),
+  };
+  return table;
+}
+
+std::string ClientConfig::validate() const {
+  const std::string bad = core::checkFields(clientFields(), *this);
+  if (!bad.empty()) return bad;
+  if (port.empty()) return "port: empty (expected /dev/ttyUSB0 or host:port)";
+  const std::string robot_error = robot.validate();
+  if (!robot_error.empty()) return "robot." + robot_error;
+  if (v_max > robot.max_velocity) return "v_max: exceeds the robot's max_velocity " + std::to_string(robot.max_velocity);
+  if (w_max > robot.max_rot_velocity) {
+    return "w_max: exceeds the robot's max_rot_velocity " + std::to_string(robot.max_rot_velocity);
+  }
+  if (command_refresh >= robot.watchdog) {
+    return "command_refresh: must be well below the robot's " + std::to_string(robot.watchdog) + " s watchdog";
+  }
+  if (reconnect_delay_max < reconnect_delay_min) return "reconnect_delay_max: smaller than reconnect_delay_min";
+  return {};
+}
+
+}  // namespace aria
+}  // namespace amigobot_tracking

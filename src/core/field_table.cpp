@@ -1,0 +1,120 @@
+#include "amigobot_tracking/core/field_table.h"
+
+#include <charconv>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace amigobot_tracking {
+namespace core {
+namespace {
+
+std::string number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+double asNumber(const FieldValue& v) {
+  if (const double* d = std::get_if<double>(&v)) return *d;
+  if (const int* i = std::get_if<int>(&v)) return *i;
+  return 0.0;
+}
+
+}  // namespace
+
+std::string typeName(FieldType type) {
+  switch (type) {
+    case FieldType::kReal: return "a number";
+    case FieldType::kInteger: return "an integer";
+    case FieldType::kBoolean: return "true or false";
+    case FieldType::kText: return "a text";
+  }
+  return "?";
+}
+
+std::string describeBounds(FieldType type, const Bounds& b) {
+  if (type == FieldType::kText) return b.choices.empty() ? "" : "one of " + joined(b.choices);
+  if (type == FieldType::kBoolean) return "";
+  const bool low = std::isfinite(b.min), high = std::isfinite(b.max);
+  if (low && high) {
+    return std::string("in ") + (b.min_open ? "(" : "[") + number(b.min) + ", " + number(b.max) +
+           (b.max_open ? ")" : "]");
+  }
+  if (low) return (b.min_open ? "> " : ">= ") + number(b.min);
+  if (high) return (b.max_open ? "< " : "<= ") + number(b.max);
+  return "";
+}
+
+std::string checkValue(FieldType type, const Bounds& b, const FieldValue& value) {
+  if (type == FieldType::kBoolean) return "";
+  if (type == FieldType::kText) {
+    const std::string& text = std::get<std::string>(value);
+    for (const std::string& c : b.choices)
+      if (c == text) return "";
+    return b.choices.empty() ? "" : "must be " + describeBounds(type, b) + ", got '" + text + "'";
+  }
+  const double v = asNumber(value);
+  const bool finite_ok = b.finite ? std::isfinite(v) : !std::isnan(v);
+  const bool low_ok = b.min_open ? v > b.min : v >= b.min;
+  const bool high_ok = b.max_open ? v < b.max : v <= b.max;
+  if (finite_ok && low_ok && high_ok) return "";
+  const std::string range = describeBounds(type, b);
+  const std::string what = type == FieldType::kInteger ? "" : b.finite ? "a finite number" : "a number";
+  std::string must = what;
+  if (!range.empty()) must += (must.empty() ? "" : " ") + range;
+  return "must be " + must + ", got " + formatValue(value);
+}
+
+std::string formatValue(const FieldValue& value) {
+  std::ostringstream out;
+  if (const double* d = std::get_if<double>(&value)) {
+    // Shortest text that reads back to the same double (0.15, not 0.14999999999999999).
+    char text[64];
+    const std::to_chars_result r = std::to_chars(text, text + sizeof text, *d);
+    out << std::string(text, r.ptr);
+  } else if (const int* i = std::get_if<int>(&value)) {
+    out << *i;
+  } else if (const bool* b = std::get_if<bool>(&value)) {
+    out << (*b ? "true" : "false");
+  } else {
+    out << std::get<std::string>(value);
+  }
+  return out.str();
+}
+
+bool parseValue(FieldType type, const std::string& text, FieldValue* out) {
+  if (type == FieldType::kText) {
+    *out = text;
+    return true;
+  }
+  if (type == FieldType::kBoolean) {
+    if (text != "true" && text != "false") return false;
+    *out = text == "true";
+    return true;
+  }
+  if (text.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  if (type == FieldType::kInteger) {
+    const long v = std::strtol(text.c_str(), &end, 10);
+    if (*end != '\0' || errno != 0 || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+      return false;
+    *out = static_cast<int>(v);
+    return true;
+  }
+  const double v = std::strtod(text.c_str(), &end);
+  if (*end != '\0') return false;
+  *out = v;
+  return true;
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,181 @@
+// The field tables are the one description of the nodelets' parameters; this test fails
+// when the files that document them drift: every tracking field in config/tracking.yaml or
+// config/controller_experiment.yaml (with a comment on its line; "(reconfigurable)" exactly
+// for the live ones), every driver field in config/driver.yaml, each in the README's
+// parameter tables (the laser's in config/laser.yaml too), and in cfg/Tracking.cfg exactly when live -- and the other way, no cfg
+// entry or README row of the two nodelets' tables naming no field.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/core/obstacle_tracker.h"
+#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/ros/driver.h"
+#include "amigobot_tracking/ros/laser_scan.h"
+#include "amigobot_tracking/ros/tracking_params.h"
+
+using namespace amigobot_tracking;
+
+namespace {
+
+struct Row {
+  bool live;
+};
+
+template <class C>
+void add(std::map<std::string, Row>* rows, const std::string& prefix, const core::FieldTable<C>& table) {
+  for (const auto& f : table) (*rows)[prefix + f.key] = {f.live};
+}
+
+// Every parameter of the tracking nodelet that a table describes, with its live flag.
+std::map<std::string, Row> nodeletFields() {
+  std::map<std::string, Row> rows;
+  add(&rows, "", ros_layer::trackingNodeFields());
+  add(&rows, "", core::controllerFields());
+  add(&rows, "scan/", core::scanObstacleFields());
+  add(&rows, "obstacle_tracker/", core::obstacleTrackerFields());
+  return rows;
+}
+
+std::map<std::string, Row> driverRows() {
+  std::map<std::string, Row> rows;
+  add(&rows, "", ros_layer::driverFields());
+  return rows;
+}
+
+std::map<std::string, Row> laserRows() {
+  std::map<std::string, Row> rows;
+  add(&rows, "", ros_layer::laserFields());
+  return rows;
+}
+
+const char kTrackingHeader[] = "| Parameter | Type | Unit | Default | Meaning |";
+const char kDriverHeader[] = "| Parameter | Type | Default | Meaning |";
+
+std::vector<std::string> lines(const std::string& relative) {
+  std::ifstream in(std::string(AMIGOBOT_SOURCE_DIR) + "/" + relative);
+  EXPECT_TRUE(in) << "cannot read " << relative;
+  std::vector<std::string> out;
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// YAML keys (nested with '/') -> the comment on their line; "# key: value  # ..." lines
+// (documented but commented out) count too.
+std::map<std::string, std::string> yamlKeys(const std::string& file) {
+  static const std::regex entry(R"(^(\s*)(?:# )?([A-Za-z_][A-Za-z0-9_]*):(.*)$)");
+  std::map<std::string, std::string> keys;
+  std::vector<std::pair<size_t, std::string>> parents;  // indentation, key
+  for (const std::string& line : lines(file)) {
+    std::smatch m;
+    if (!std::regex_match(line, m, entry)) continue;
+    const size_t indent = m[1].length();
+    while (!parents.empty() && parents.back().first >= indent) parents.pop_back();
+    std::string key;
+    for (const auto& p : parents) key += p.second + "/";
+    key += m[2].str();
+    const std::string rest = m[3].str();
+    const size_t hash = rest.find('#');
+    keys[key] = hash == std::string::npos ? "" : rest.substr(hash + 1);
+    if (rest.find_first_not_of(' ') == hash || rest.find_first_not_of(' ') == std::string::npos)
+      parents.emplace_back(indent, m[2].str());
+  }
+  return keys;
+}
+
+// `a/{b,c}` -> a/b, a/c.
+std::vector<std::string> expand(const std::string& name) {
+  const size_t open = name.find('{'), close = name.find('}');
+  if (open == std::string::npos || close == std::string::npos) return {name};
+  std::vector<std::string> out;
+  std::stringstream inner(name.substr(open + 1, close - open - 1));
+  for (std::string part; std::getline(inner, part, ',');)
+    out.push_back(name.substr(0, open) + part + name.substr(close + 1));
+  return out;
+}
+
+// Names in backticks in the first cell of the README's table rows; with a `header`, the rows
+// of the table under that header alone.
+std::set<std::string> readmeNames(const std::string& header = "") {
+  static const std::regex code("`([^`]+)`");
+  std::set<std::string> names;
+  bool in_nodelet = false;
+  for (const std::string& line : lines("README.md")) {
+    if (!header.empty() && line.rfind(header, 0) == 0) in_nodelet = true;
+    else if (line.rfind("|", 0) != 0) in_nodelet = false;
+    if (line.rfind("|", 0) != 0 || (!header.empty() && !in_nodelet)) continue;
+    const std::string cell = line.substr(1, line.find('|', 1) - 1);
+    for (std::sregex_iterator it(cell.begin(), cell.end(), code), end; it != end; ++it)
+      for (const std::string& n : expand((*it)[1].str())) names.insert(n);
+  }
+  return names;
+}
+
+}  // namespace
+
+TEST(ParamCoverage, EveryFieldIsInTheYamlWithAComment) {
+  std::map<std::string, std::string> keys = yamlKeys("config/tracking.yaml");
+  for (const auto& [k, comment] : yamlKeys("config/controller_experiment.yaml")) keys[k] = comment;
+  for (const auto& [key, row] : nodeletFields()) {
+    const auto it = keys.find(key);
+    if (it == keys.end()) {
+      ADD_FAILURE() << key << " is in no config/tracking.yaml or config/controller_experiment.yaml line";
+      continue;
+    }
+    EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
+    EXPECT_EQ(it->second.find("(reconfigurable)") != std::string::npos, row.live)
+        << key << ": '(reconfigurable)' in its comment exactly when live";
+  }
+}
+
+TEST(ParamCoverage, EveryDriverFieldIsInItsYamlWithAComment) {
+  const std::map<std::string, std::string> keys = yamlKeys("config/driver.yaml");
+  for (const auto& [key, row] : driverRows()) {
+    const auto it = keys.find(key);
+    ASSERT_NE(it, keys.end()) << key << " is not in config/driver.yaml";
+    EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
+  }
+  for (const auto& [key, comment] : keys) EXPECT_TRUE(driverRows().count(key)) << "config/driver.yaml: " << key;
+}
+
+TEST(ParamCoverage, EveryLaserFieldIsInItsYamlAndTheReadme) {
+  const std::map<std::string, std::string> keys = yamlKeys("config/laser.yaml");
+  const std::set<std::string> readme = readmeNames();
+  for (const auto& [key, row] : laserRows()) {
+    const auto it = keys.find(key);
+    ASSERT_NE(it, keys.end()) << key << " is not in config/laser.yaml";
+    EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
+    EXPECT_TRUE(readme.count(key)) << key << " is in no README parameter table";
+  }
+  for (const auto& [key, comment] : keys) EXPECT_TRUE(laserRows().count(key)) << "config/laser.yaml: " << key;
+}
+
+TEST(ParamCoverage, EveryFieldIsInTheReadmeAndEveryRowNamesOne) {
+  const std::set<std::string> all = readmeNames();
+  const std::map<std::string, Row> fields = nodeletFields(), driver = driverRows();
+  for (const auto& [key, row] : fields) EXPECT_TRUE(all.count(key)) << key << " is in no README parameter table";
+  for (const auto& [key, row] : driver) EXPECT_TRUE(all.count(key)) << key << " is in no README parameter table";
+  const std::set<std::string> not_in_tables = {"virtual_obstacles"};  // a list (tracking_params.h)
+  for (const std::string& name : readmeNames(kTrackingHeader))
+    EXPECT_TRUE(fields.count(name) || not_in_tables.count(name)) << "README row `" << name << "` names no field";
+  for (const std::string& name : readmeNames(kDriverHeader))
+    EXPECT_TRUE(driver.count(name)) << "README driver row `" << name << "` names no field";
+}
+
+TEST(ParamCoverage, TheCfgHasExactlyTheLiveFields) {
+  static const std::regex add(R"re(gen\.add\(\s*"([A-Za-z0-9_]+)")re");
+  std::set<std::string> cfg;
+  for (const std::string& line : lines("cfg/Tracking.cfg")) {
+    std::smatch m;
+    if (std::regex_search(line, m, add)) cfg.insert(m[1].str());
+  }
+  EXPECT_FALSE(cfg.empty());
+  for (const auto& [key, row] : nodeletFields())
+    EXPECT_EQ(cfg.count(key) > 0, row.live) << key << ": in cfg/Tracking.cfg exactly when live";
+  for (const std::string& name : cfg) EXPECT_TRUE(nodeletFields().count(name)) << "cfg entry " << name << " names no field";
+}
