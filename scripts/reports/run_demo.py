@@ -73,9 +73,10 @@ def main():
         env["DISPLAY"] = display
         sp.start_master(procs, env, master)
         log(f"private ROS master on port {master}, Xvfb on {display}")
-        tcp, status = sp.free_port(), sp.free_port()
+        tcp, status, laser = sp.free_port(), sp.free_port(), sp.free_port()
         launch = procs.start("sim_launch", ["roslaunch", "amigobot_tracking", "sim.launch", f"tcp_port:={tcp}",
-                                            f"status_port:={status}", f"start_delay:={START_DELAY_S}", "rviz:=true"]
+                                            f"status_port:={status}", f"laser_port:={laser}",
+                                            f"start_delay:={START_DELAY_S}", "rviz:=true"]
                              + ([] if args.paper_law else [f"tracking_params:={DEMO_PARAMS}"]),
                              env)
         t_launch = time.time()

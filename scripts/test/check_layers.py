@@ -19,7 +19,8 @@ ALLOWED = {
     "sim": {"std", "eigen", "core", "yaml", "json"},
     "world": {"std", "eigen", "core", "yaml"},
     "aria": {"std", "posix", "eigen", "core", "world", "mrpt", "yaml"},
-    "tools": {"std", "posix", "eigen", "core", "sim", "aria", "world", "mrpt", "yaml", "json", "cli11"},
+    "sensors": {"std", "posix", "eigen", "core", "world", "mrpt"},
+    "tools": {"std", "posix", "eigen", "core", "sim", "aria", "sensors", "world", "mrpt", "yaml", "json", "cli11"},
     "ros": None,  # anything
 }
 LIBRARIES = {"Eigen": "eigen", "yaml-cpp": "yaml", "nlohmann": "json", "mrpt": "mrpt", "CLI": "cli11"}

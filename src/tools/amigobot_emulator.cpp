@@ -13,6 +13,7 @@
 
 #include "amigobot_tracking/aria/emulator.h"
 #include "amigobot_tracking/aria/emulator_server.h"
+#include "amigobot_tracking/core/program_arguments.h"
 #include "amigobot_tracking/world/world.h"
 
 using namespace amigobot_tracking::aria;
@@ -21,16 +22,6 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 void onSignal(int) { g_stop = true; }
-
-// The arguments CLI11 parses (in its reversed order), without the remappings roslaunch
-// appends (__name:=emulator, __log:=...): this tool is ROS-free.
-std::vector<std::string> ownArguments(int argc, char** argv) {
-  std::vector<std::string> args;
-  for (int i = argc - 1; i > 0; --i) {
-    if (std::string(argv[i]).find(":=") == std::string::npos) args.emplace_back(argv[i]);
-  }
-  return args;
-}
 
 }  // namespace
 
@@ -69,7 +60,7 @@ int main(int argc, char** argv) {
                "behave like an ARIA simulator (MobileSim): motors start enabled, SIPs always 0x32, watchdog "
                "only warns, CLOSE drops the connection");
   app.footer("Prints 'READY tcp=PORT status=PORT pty=PATH' on stdout once it listens.");
-  std::vector<std::string> args = ownArguments(argc, argv);
+  std::vector<std::string> args = amigobot_tracking::core::ownArguments(argc, argv);
   try {
     app.parse(args);
   } catch (const CLI::ParseError& e) {

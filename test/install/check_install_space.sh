@@ -20,5 +20,5 @@ echo "install space: building into $SCRATCH/install"
   > "$SCRATCH/build.log" 2>&1 || { tail -n 40 "$SCRATCH/build.log"; echo "FAILED: catkin_make install"; exit 1; }
 
 # Free ports for a private master and the emulator (the same helper as the rostests).
-"${clean_env[@]}" /usr/bin/python3 "$ROOT/scripts/test/with_free_ports.py" master tcp_port status_port -- \
+"${clean_env[@]}" /usr/bin/python3 "$ROOT/scripts/test/with_free_ports.py" master tcp_port status_port laser_port -- \
   bash "$ROOT/test/install/run_from_install_space.sh" "$SCRATCH/install"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Part of check_install_space.sh, run in a clean environment:
-#   run_from_install_space.sh PREFIX master:=PORT tcp_port:=PORT status_port:=PORT
+#   run_from_install_space.sh PREFIX master:=PORT tcp_port:=PORT status_port:=PORT laser_port:=PORT
 set -euo pipefail
 PREFIX=$1; shift
 declare -A port
@@ -20,7 +20,8 @@ echo "$nodes"
 
 # roslaunch starts the master itself on ROS_MASTER_URI's port.
 roslaunch amigobot_tracking sim.launch autostart:=true start_delay:=0.0 \
-  tcp_port:="${port[tcp_port]}" status_port:="${port[status_port]}" > "$ROS_HOME/sim.log" 2>&1 &
+  tcp_port:="${port[tcp_port]}" status_port:="${port[status_port]}" laser_port:="${port[laser_port]}" \
+  > "$ROS_HOME/sim.log" 2>&1 &
 for _ in $(seq 60); do rostopic list > /dev/null 2>&1 && break; sleep 0.5; done
 failed=0
 for topic in /odom /scan /cmd_vel; do

@@ -28,6 +28,7 @@
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/aria/packet.h"
+#include "child_process.h"
 
 namespace amigobot_test {
 
@@ -96,38 +97,13 @@ class EmulatorProcess {
   ~EmulatorProcess() { kill(SIGTERM); }
 
   void start(std::vector<std::string> extra, int tcp_port, std::string pty_link) {
-    int out[2];
-    if (::pipe(out) < 0) throw std::runtime_error("pipe");
     std::vector<std::string> args = {AMIGOBOT_EMULATOR, "--tcp-port", std::to_string(tcp_port), "--status-port", "0"};
     if (!pty_link.empty()) {
       args.push_back("--pty");
       args.push_back(pty_link);
     }
     args.insert(args.end(), extra.begin(), extra.end());
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::dup2(out[1], STDOUT_FILENO);
-      ::close(out[0]);
-      ::close(out[1]);
-      std::vector<char*> argv;
-      for (auto& a : args) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(argv[0], argv.data());
-      std::_Exit(127);
-    }
-    ::close(out[1]);
-    // Read the READY line (generous timeout for a loaded machine).
-    std::string line;
-    const double end = now() + 20.0;
-    char c;
-    while (now() < end) {
-      pollfd p{out[0], POLLIN, 0};
-      if (::poll(&p, 1, 100) <= 0) continue;
-      if (::read(out[0], &c, 1) != 1) break;
-      if (c == '\n') break;
-      line.push_back(c);
-    }
-    ::close(out[0]);
+    const std::string line = process_.start(args);
     if (std::sscanf(line.c_str(), "READY tcp=%d status=%d", &tcp_port_, &status_port_) != 2) {
       kill(SIGKILL);
       throw std::runtime_error("amigobot_emulator did not start: '" + line + "'");
@@ -139,17 +115,7 @@ class EmulatorProcess {
     if (pid_ > 0) ::kill(pid_, signal);
   }
   void kill(int signal) {
-    if (pid_ <= 0) return;
-    ::kill(pid_, signal);
-    int status = 0;
-    for (int i = 0; i < 300 && ::waitpid(pid_, &status, WNOHANG) == 0; ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    if (::waitpid(pid_, &status, WNOHANG) == 0) {
-      ::kill(pid_, SIGKILL);
-      ::waitpid(pid_, &status, 0);
-    }
-    pid_ = -1;
+    process_.stop(signal);
     status_.reset();
   }
 
@@ -167,7 +133,7 @@ class EmulatorProcess {
   }
 
  private:
-  pid_t pid_ = -1;
+  ChildProcess process_;
   int tcp_port_ = -1, status_port_ = -1;
   std::unique_ptr<StatusClient> status_;
 };

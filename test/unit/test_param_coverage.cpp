@@ -2,7 +2,7 @@
 // when the files that document them drift: every tracking field in config/tracking.yaml or
 // config/controller_experiment.yaml (with a comment on its line; "(reconfigurable)" exactly
 // for the live ones), every driver field in config/driver.yaml, each in the README's
-// parameter tables, and in cfg/Tracking.cfg exactly when live -- and the other way, no cfg
+// parameter tables (the laser's in config/laser.yaml too), and in cfg/Tracking.cfg exactly when live -- and the other way, no cfg
 // entry or README row of the two nodelets' tables naming no field.
 #include <gtest/gtest.h>
 
@@ -16,6 +16,7 @@
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 #include "amigobot_tracking/ros/driver.h"
+#include "amigobot_tracking/ros/laser_scan.h"
 #include "amigobot_tracking/ros/tracking_params.h"
 
 using namespace amigobot_tracking;
@@ -44,6 +45,12 @@ std::map<std::string, Row> nodeletFields() {
 std::map<std::string, Row> driverRows() {
   std::map<std::string, Row> rows;
   add(&rows, "", ros_layer::driverFields());
+  return rows;
+}
+
+std::map<std::string, Row> laserRows() {
+  std::map<std::string, Row> rows;
+  add(&rows, "", ros_layer::laserFields());
   return rows;
 }
 
@@ -134,6 +141,18 @@ TEST(ParamCoverage, EveryDriverFieldIsInItsYamlWithAComment) {
     EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
   }
   for (const auto& [key, comment] : keys) EXPECT_TRUE(driverRows().count(key)) << "config/driver.yaml: " << key;
+}
+
+TEST(ParamCoverage, EveryLaserFieldIsInItsYamlAndTheReadme) {
+  const std::map<std::string, std::string> keys = yamlKeys("config/laser.yaml");
+  const std::set<std::string> readme = readmeNames();
+  for (const auto& [key, row] : laserRows()) {
+    const auto it = keys.find(key);
+    ASSERT_NE(it, keys.end()) << key << " is not in config/laser.yaml";
+    EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
+    EXPECT_TRUE(readme.count(key)) << key << " is in no README parameter table";
+  }
+  for (const auto& [key, comment] : keys) EXPECT_TRUE(laserRows().count(key)) << "config/laser.yaml: " << key;
 }
 
 TEST(ParamCoverage, EveryFieldIsInTheReadmeAndEveryRowNamesOne) {

@@ -1,0 +1,35 @@
+# Layer 2, sensors: the lasers' own protocols (SCIP 2.0, CoLa-A), the laser emulator and the
+# ROS-free laser driver over MRPT. Core + world + MRPT; no ROS.
+amigobot_add_library(amigobot_tracking_sensors
+  src/sensors/scip.cpp
+  src/sensors/cola_a.cpp
+  src/sensors/laser_model.cpp
+  src/sensors/laser_session.cpp
+  src/sensors/scan_source.cpp
+  src/sensors/laser_emulator_server.cpp
+  src/sensors/transport_address.cpp
+  src/sensors/hokuyo_device.cpp
+  src/sensors/tim_device.cpp
+  src/sensors/laser_driver.cpp
+)
+target_include_directories(amigobot_tracking_sensors PUBLIC include)
+target_link_libraries(amigobot_tracking_sensors PUBLIC amigobot_tracking_core amigobot_tracking_world mrpt::comms mrpt::hwdrivers)
+
+amigobot_add_tool(laser_emulator src/tools/laser_emulator.cpp)
+target_link_libraries(laser_emulator amigobot_tracking_sensors amigobot_tracking_aria amigobot_tracking_world)
+
+if(CATKIN_ENABLE_TESTING)
+  # The encoders against the specifications' examples, the sessions' conversations.
+  foreach(unit scip cola_a laser_session)
+    amigobot_add_unit_test(test_sensors_${unit} test/unit/test_sensors_${unit}.cpp)
+    target_link_libraries(test_sensors_${unit} amigobot_tracking_sensors)
+  endforeach()
+endif()
+
+if(CATKIN_ENABLE_TESTING)
+  # The driver against the emulator executable over real TCP sockets and a real pty.
+  amigobot_add_unit_test(test_sensors_driver_emulator test/integration/test_sensors_driver_emulator.cpp)
+  target_link_libraries(test_sensors_driver_emulator amigobot_tracking_sensors)
+  target_compile_definitions(test_sensors_driver_emulator PRIVATE AMIGOBOT_LASER_EMULATOR="$<TARGET_FILE:laser_emulator>")
+  add_dependencies(test_sensors_driver_emulator laser_emulator)
+endif()

@@ -1,0 +1,51 @@
+// ROS wrapper of the laser driver (sensors::LaserDriver): publishes `scan`
+// (sensor_msgs/LaserScan, laser_scan.h) and /diagnostics (scan rate through FrequencyStatus,
+// device identity, counters, last error). The device I/O runs on its own thread; the
+// destructor stops it and closes the device. Shared by the nodelet amigobot_tracking/Laser
+// and the node laser_node.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+
+#include "amigobot_tracking/ros/laser_scan.h"
+#include "amigobot_tracking/ros/rate_monitor.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+class LaserNode {
+ public:
+  // Throws std::runtime_error naming a bad parameter; then nothing is started.
+  LaserNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+  ~LaserNode();
+  LaserNode(const LaserNode&) = delete;
+  LaserNode& operator=(const LaserNode&) = delete;
+
+ private:
+  void loop();  // I/O thread
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  LaserParams params_;
+  ros::NodeHandle nh_, pnh_;
+  ros::Publisher scan_pub_;
+  diagnostic_updater::Updater updater_;
+  std::unique_ptr<RateMonitor> rate_;
+  ros::Timer diagnostics_timer_;
+  std::mutex mutex_;  // guards the copies below and rate_
+  std::string identity_, last_error_;
+  sensors::LaserDriverCounters counters_;
+  bool connected_ = false;
+  std::uint64_t skipped_ = 0;  // scans the crop emptied
+  std::atomic<bool> stop_{false};
+  std::thread io_;
+};
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

@@ -1,0 +1,49 @@
+// SICK CoLa-A ("Command Language A", ASCII), as TiM5xx and LMS1xx speak it over TCP port
+// 2111: every telegram is STX (0x02), space-separated fields, ETX (0x03). Numbers are
+// upper-case hexadecimal without leading zeros, signed ones in two's complement of 32 bits.
+// The scan telegram (answer "sRA LMDscandata" to a poll, "sSN LMDscandata" while streamed)
+// is laid out as in SICK's telegram listing; both ends of it live here: the emulator encodes
+// it, the driver decodes it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace amigobot_tracking {
+namespace sensors {
+namespace cola {
+
+constexpr char kStx = 0x02;
+constexpr char kEtx = 0x03;
+
+std::string hex(std::uint32_t value);    // 1388 for 5000
+std::string hexSigned(std::int32_t value);  // FFF92230 for -450000
+// Throws std::invalid_argument naming the field on an empty or non-hex field.
+std::uint32_t parseHex(const std::string& field, const char* what);
+
+std::string frame(const std::string& body);  // STX body ETX
+// Takes the first complete telegram out of *buffer (bytes before its STX are dropped) and
+// returns its body; false when none is complete yet.
+bool nextTelegram(std::string* buffer, std::string* body);
+
+struct ScanTelegram {
+  std::string command = "sRA";       // sRA (polled) or sSN (streamed)
+  std::uint32_t serial = 0;
+  std::uint32_t telegram_counter = 0, scan_counter = 0;
+  std::uint32_t time_since_start_us = 0, time_of_transmission_us = 0;
+  std::uint32_t scan_frequency = 0;       // [1/100 Hz]
+  std::uint32_t measurement_frequency = 0;  // [100 Hz] beams per second / 100
+  float scale_factor = 1.0f;              // range [mm] = value * scale_factor
+  std::int32_t start_angle = 0;           // [1/10000 deg] in SICK's frame: 0 deg is +y of the device
+  std::uint32_t angular_step = 0;         // [1/10000 deg]
+  std::vector<std::uint32_t> ranges;      // raw DIST1 values; 0 = no echo
+};
+
+std::string encodeScan(const ScanTelegram& scan);
+// Empty when `body` is a complete scan telegram (then *scan holds it), else what is wrong.
+std::string decodeScan(const std::string& body, ScanTelegram* scan);
+
+}  // namespace cola
+}  // namespace sensors
+}  // namespace amigobot_tracking

@@ -1,0 +1,78 @@
+// I/O of the laser emulator: one client at a time over TCP (a new connection replaces the
+// old one, as a device with one host) and, for SCIP, over a pseudo-terminal with a stable
+// symlink (the URG's USB-ACM port). A scan is cast at the model's rate from the robot pose
+// the status source gives, and streamed to the client that asked for it. Faults on request
+// damage every n-th streamed scan telegram. Plain POSIX sockets and poll().
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/sensors/laser_model.h"
+#include "amigobot_tracking/sensors/laser_session.h"
+#include "amigobot_tracking/sensors/scan_source.h"
+
+namespace amigobot_tracking {
+namespace sensors {
+
+enum class Fault { kNone, kMalformed, kTruncated, kChecksum, kStall, kDisconnect };
+// none | malformed | truncated | checksum | stall | disconnect; throws naming the bad value.
+Fault parseFault(const std::string& name);
+
+struct LaserServerOptions {
+  int tcp_port = 10940;  // 0 = any free port; -1 = none
+  std::string bind_address = "127.0.0.1";
+  std::string pty_link;  // SCIP only; empty = none
+  Fault fault = Fault::kNone;
+  int fault_every = 0;        // damage scan telegram n, 2n, ... (0 = never)
+  double stall_time = 2.0;    // [s] silence of a stall
+  std::string serial = "H0000001";
+
+  void validate(const LaserModel& model) const;  // throws naming the bad option
+};
+
+// The robot's pose at emulator time: false when it is not known (then no scan is sent).
+using PoseSource = std::function<bool(core::Pose2* base, double* t)>;
+
+class LaserEmulatorServer {
+ public:
+  LaserEmulatorServer(LaserModel model, ScanSource source, PoseSource pose, LaserServerOptions options);
+  ~LaserEmulatorServer();
+  LaserEmulatorServer(const LaserEmulatorServer&) = delete;
+  LaserEmulatorServer& operator=(const LaserEmulatorServer&) = delete;
+
+  void open();  // throws std::runtime_error naming what failed
+  int tcpPort() const { return tcp_port_; }
+  const std::string& ptyName() const { return pty_name_; }
+  void run(const std::atomic<bool>& stop);  // checks `stop` at least every 10 ms
+
+ private:
+  struct Link {
+    int fd = -1;
+    std::unique_ptr<LaserSession> session;
+  };
+  void accept();
+  void drop(Link& link);
+  void serve(Link& link);
+  void tick();
+  void send(double now);  // streams latest_ to the clients that asked for scans
+  std::string damage(std::string telegram);
+
+  LaserModel model_;
+  ScanSource source_;
+  PoseSource pose_;
+  LaserServerOptions options_;
+  int listen_fd_ = -1, pty_slave_ = -1, tcp_port_ = -1;
+  std::string pty_name_;
+  Link tcp_, pty_;
+  EmulatedScan latest_, pending_;  // last sent; cast but not yet sent
+  bool has_pending_ = false;
+  double next_scan_ = 0.0, stall_until_ = 0.0, pending_due_ = 0.0;
+  std::uint64_t streamed_ = 0;
+};
+
+}  // namespace sensors
+}  // namespace amigobot_tracking

@@ -1,0 +1,43 @@
+// What the emulated laser sees: a ray-cast scan of the world's disks from the laser's mount
+// pose on the robot, with optional Gaussian range noise and dropouts.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/sensors/laser_model.h"
+#include "amigobot_tracking/sensors/laser_session.h"
+
+namespace amigobot_tracking {
+namespace sensors {
+
+struct ScanSourceOptions {
+  core::Pose2 mount;          // [m, m, rad] laser in base_link
+  bool upside_down = false;   // mounted upside down: the beams sweep clockwise in base_link
+  double range_noise = 0.0;   // [m] std-dev added to every hit
+  double dropout = 0.0;       // probability that a beam reports no measurement
+  std::uint32_t seed = 1;
+
+  void validate() const;  // throws std::invalid_argument naming the bad option
+};
+
+class ScanSource {
+ public:
+  ScanSource(LaserModel model, std::vector<core::Disk> obstacles, ScanSourceOptions options);
+  // The scan of the robot at `base` (base_link in the world) at emulator time t.
+  EmulatedScan cast(const core::Pose2& base, double t);
+  // The sensor pose in the world for a robot at `base`.
+  core::Pose2 sensorPose(const core::Pose2& base) const;
+
+ private:
+  LaserModel model_;
+  std::vector<core::Disk> obstacles_;
+  ScanSourceOptions options_;
+  std::mt19937 random_;
+  std::uint64_t index_ = 0;
+};
+
+}  // namespace sensors
+}  // namespace amigobot_tracking

@@ -1,0 +1,103 @@
+#include "amigobot_tracking/ros/laser_scan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "amigobot_tracking/ros/param_reader.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+const core::FieldTable<LaserParams>& laserFields() {
+  using P = LaserParams;
+  using D = sensors::LaserDriverConfig;
+  using core::field;
+  static const core::FieldTable<P> table = [] {
+    core::FieldTable<P> t;
+    core::include(&t, "", &P::driver,
+                  core::FieldTable<D>{
+                      field("model", &D::model, "-", "the laser's protocol", core::oneOf({"hokuyo_urg", "sick_tim5xx"})),
+                      field("port", &D::port, "-", "serial device, or host:port for TCP"),
+                      field("reconnect_period", &D::reconnect_period, "s", "first wait before reopening (doubles up to 8x)",
+                            core::interval(0.0, true, 60.0, false)),
+                      field("stall_timeout", &D::stall_timeout, "s", "no scan for this long: the link is reopened",
+                            core::interval(0.0, true, 60.0, false)),
+                  });
+    t.push_back(field("frame_id", &P::frame_id, "-", "frame of the scans"));
+    t.push_back(field("angle_min", &P::angle_min, "rad", "crop: first published beam at or after", core::anyValue()));
+    t.push_back(field("angle_max", &P::angle_max, "rad", "crop: last published beam at or before (> angle_min)", core::anyValue()));
+    t.push_back(field("range_min", &P::range_min, "m", "override; closer returns are -inf (0: the device's)", core::nonNegative()));
+    t.push_back(field("range_max", &P::range_max, "m", "override; farther returns are +inf (0: the device's)", core::nonNegative()));
+    t.push_back(field("upside_down", &P::upside_down, "-", "mounted upside down: beams mirrored"));
+    t.push_back(field("time_offset", &P::time_offset, "s", "added to every stamp", core::interval(-1.0, true, 1.0, true)));
+    t.push_back(field("expected_rate", &P::expected_rate, "Hz", "diagnostics' scan rate (0: the model's)", core::nonNegative()));
+    return t;
+  }();
+  return table;
+}
+
+std::string LaserParams::validate() const {
+  const std::string bad = core::checkFields(laserFields(), *this);
+  if (!bad.empty()) return bad;
+  try {
+    driver.validate();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  if (frame_id.empty()) return "frame_id: empty";
+  if (!(angle_max > angle_min)) return "angle_max: must be > angle_min";
+  if (range_max > 0.0 && !(range_max > range_min)) return "range_max: must be > range_min";
+  return "";
+}
+
+LaserParams loadLaserParams(const ros::NodeHandle& pnh) {
+  LaserParams p;
+  const std::string error = readParams(pnh, laserFields(), &p);
+  if (!error.empty()) throw std::runtime_error("parameter " + error);
+  return p;
+}
+
+bool toLaserScan(const sensors::LaserScanData& scan, const LaserParams& params, sensor_msgs::LaserScan* out) {
+  const int n = static_cast<int>(scan.ranges.size());
+  // Beam angles in the published frame: an upside-down mount sees beam i at -angle_i, so the
+  // order is reversed to keep the increment positive.
+  const double sign = params.upside_down ? -1.0 : 1.0;
+  auto angle = [&](int k) {  // k-th published beam
+    const int i = params.upside_down ? n - 1 - k : k;
+    return sign * (scan.angle_min + scan.angle_increment * i);
+  };
+  int first = 0, last = n - 1;
+  const double eps = 1e-9;
+  while (first < n && angle(first) < params.angle_min - eps) ++first;
+  while (last >= first && angle(last) > params.angle_max + eps) --last;
+  if (last < first) return false;
+  const double range_min = params.range_min > 0.0 ? params.range_min : scan.range_min;
+  const double range_max = params.range_max > 0.0 ? params.range_max : scan.range_max;
+  out->angle_min = static_cast<float>(angle(first));
+  out->angle_max = static_cast<float>(angle(last));
+  out->angle_increment = static_cast<float>(scan.angle_increment);
+  out->time_increment = static_cast<float>(params.upside_down ? -scan.time_increment : scan.time_increment);
+  out->scan_time = static_cast<float>(scan.scan_time);
+  out->range_min = static_cast<float>(range_min);
+  out->range_max = static_cast<float>(range_max);
+  out->ranges.resize(static_cast<std::size_t>(last - first + 1));
+  out->intensities.clear();
+  for (int k = first; k <= last; ++k) {
+    const int i = params.upside_down ? n - 1 - k : k;
+    float r = scan.ranges[static_cast<std::size_t>(i)];
+    if (std::isfinite(r) && r > range_max) r = std::numeric_limits<float>::infinity();
+    if (std::isfinite(r) && r < range_min) r = -std::numeric_limits<float>::infinity();
+    out->ranges[static_cast<std::size_t>(k - first)] = r;
+    if (!scan.intensities.empty()) out->intensities.push_back(scan.intensities[static_cast<std::size_t>(i)]);
+  }
+  // The stamp is the time of the first published beam.
+  const int first_measured = params.upside_down ? n - 1 - first : first;
+  out->header.stamp.fromSec(scan.stamp + params.time_offset + scan.time_increment * first_measured);
+  out->header.frame_id = params.frame_id;
+  return true;
+}
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

@@ -1,0 +1,101 @@
+// SCIP 2.0 through MRPT's CHokuyoURG. MRPT spreads the N beams evenly over its aperture;
+// the beam angles here come from the PP reply instead: (step - AFRT) 2 pi / ARES.
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <mrpt/hwdrivers/CHokuyoURG.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include "amigobot_tracking/sensors/laser_device.h"
+#include "amigobot_tracking/sensors/transport_address.h"
+
+namespace amigobot_tracking {
+namespace sensors {
+namespace {
+
+// CHokuyoURG keeps the PP reply in a protected member: read it from a subclass.
+class Urg : public mrpt::hwdrivers::CHokuyoURG {
+ public:
+  const TSensorInfo& info() const { return m_sensor_info; }
+  // Reception time, not MRPT's firmware-clock fit (which drifts from the first packets).
+  void useReceptionTime() { m_disable_firmware_timestamp = true; }
+};
+
+class HokuyoDevice : public LaserDevice {
+ public:
+  explicit HokuyoDevice(const std::string& port) : port_(port) {
+    urg_.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+    urg_.useReceptionTime();
+    std::string host;
+    int tcp_port = 0;
+    if (splitTcpAddress(port, &host, &tcp_port)) {
+      urg_.setIPandPort(host, static_cast<unsigned>(tcp_port));
+    } else {
+      urg_.setSerialPort(port);
+    }
+    bool ok = false;
+    try {
+      ok = urg_.turnOn();
+    } catch (const std::exception& e) {
+      throw std::runtime_error("hokuyo_urg " + port + ": cannot open: " + std::string(e.what()).substr(0, 200));
+    }
+    const auto& i = urg_.info();
+    if (!ok || i.scans_per_360deg <= 0 || i.scan_last < i.scan_first) {
+      throw std::runtime_error("hokuyo_urg " + port + ": no SCIP 2.0 answer (PP) from the device");
+    }
+    const double step = 2.0 * M_PI / i.scans_per_360deg;
+    geometry_.angle_min = (i.scan_first - i.scan_front) * step;
+    geometry_.angle_increment = step;
+    geometry_.scan_time = i.motor_speed_rpm > 0 ? 60.0 / i.motor_speed_rpm : 0.1;
+    geometry_.time_increment = geometry_.scan_time / i.scans_per_360deg;
+    geometry_.range_min = i.d_min;
+    geometry_.range_max = i.d_max;
+    identity_ = "Hokuyo " + i.model + " (SCIP 2.0, ARES " + std::to_string(i.scans_per_360deg) + ", AMIN " +
+                std::to_string(i.scan_first) + ", AMAX " + std::to_string(i.scan_last) + ", AFRT " +
+                std::to_string(i.scan_front) + ") at " + port;
+  }
+
+  bool read(LaserScanData* scan, int /*timeout_ms: MRPT waits its comms timeout*/) override {
+    bool have = false, error = false;
+    mrpt::obs::CObservation2DRangeScan obs;
+    urg_.doProcessSimple(have, obs, error);
+    // MRPT does not tell a damaged reply from a lost link: the driver reopens after a stall.
+    if (error && !have) throw ScanError("hokuyo_urg " + port_ + ": damaged reply, device error or link lost");
+    if (!have) return false;
+    const double received = systemSeconds();
+    const std::size_t n = obs.getScanSize();
+    const std::size_t expected = static_cast<std::size_t>(urg_.info().scan_last - urg_.info().scan_first + 1);
+    if (n != expected) throw ScanError("hokuyo_urg " + port_ + ": scan of " + std::to_string(n) + " beams");
+    LaserScanData out = geometry_;
+    out.ranges.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const float r = obs.getScanRange(k);
+      // Values below DMIN are error codes: 0 no echo (REP 117: +inf), others invalid (NaN).
+      if (obs.getScanRangeValidity(k)) {
+        out.ranges[k] = r;
+      } else {
+        out.ranges[k] = std::lround(r * 1000.0f) == 0 ? std::numeric_limits<float>::infinity()
+                                                      : std::numeric_limits<float>::quiet_NaN();
+      }
+    }
+    // A URG sends a scan once its last beam is measured.
+    out.stamp = received - out.time_increment * static_cast<double>(n - 1);
+    *scan = std::move(out);
+    return true;
+  }
+
+  std::string identity() const override { return identity_; }
+
+ private:
+  std::string port_, identity_;
+  Urg urg_;
+  LaserScanData geometry_;
+};
+
+}  // namespace
+
+std::unique_ptr<LaserDevice> openHokuyo(const std::string& port) { return std::make_unique<HokuyoDevice>(port); }
+
+}  // namespace sensors
+}  // namespace amigobot_tracking

@@ -1,0 +1,93 @@
+#include "amigobot_tracking/sensors/laser_driver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+#include "amigobot_tracking/sensors/transport_address.h"
+
+namespace amigobot_tracking {
+namespace sensors {
+
+double systemSeconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+void LaserDriverConfig::validate() const {
+  if (model != "hokuyo_urg" && model != "sick_tim5xx") {
+    throw std::invalid_argument("model: '" + model + "' has no driver here (hokuyo_urg | sick_tim5xx)");
+  }
+  if (port.empty()) throw std::invalid_argument("port: empty (expected /dev/ttyACM0 or host:port)");
+  std::string host;
+  int tcp = 0;
+  if (!splitTcpAddress(port, &host, &tcp) && model == "sick_tim5xx") {
+    throw std::invalid_argument("port: sick_tim5xx speaks CoLa-A over TCP: expected host:port, got '" + port + "'");
+  }
+  if (!(reconnect_period > 0.0 && reconnect_period <= 60.0)) throw std::invalid_argument("reconnect_period: must be within (0, 60] s");
+  if (!(stall_timeout > 0.0 && stall_timeout <= 60.0)) throw std::invalid_argument("stall_timeout: must be within (0, 60] s");
+}
+
+LaserDriver::LaserDriver(LaserDriverConfig config) : config_(std::move(config)) {
+  config_.validate();
+  backoff_ = config_.reconnect_period;
+}
+
+void LaserDriver::close() { device_.reset(); }
+
+void LaserDriver::fail(const std::string& why) {
+  last_error_ = why;
+  device_.reset();
+  next_open_ = systemSeconds() + backoff_;
+  backoff_ = std::min(2.0 * backoff_, 8.0 * config_.reconnect_period);
+}
+
+bool LaserDriver::poll(LaserScanData* scan, double timeout) {
+  const double now = systemSeconds();
+  if (!device_) {
+    if (now < next_open_) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(std::min(timeout, next_open_ - now)));
+      return false;
+    }
+    try {
+      device_ = config_.model == "hokuyo_urg" ? openHokuyo(config_.port) : openTim(config_.port);
+    } catch (const std::exception& e) {
+      fail(e.what());
+      return false;
+    }
+    ++counters_.opens;
+    identity_ = device_->identity();
+    last_scan_ = systemSeconds();
+    last_error_.clear();
+  }
+  try {
+    if (!device_->read(scan, static_cast<int>(std::ceil(timeout * 1000.0)))) {
+      if (systemSeconds() - last_scan_ > config_.stall_timeout) {
+        ++counters_.stalls;
+        fail(config_.model + " " + config_.port + ": no scan for " + std::to_string(config_.stall_timeout) + " s");
+      }
+      return false;
+    }
+  } catch (const ScanError& e) {
+    ++counters_.damaged;
+    last_error_ = e.what();
+    if (systemSeconds() - last_scan_ > config_.stall_timeout) {
+      ++counters_.stalls;
+      fail(e.what());
+    }
+    return false;
+  } catch (const std::exception& e) {
+    ++counters_.link_failures;
+    fail(e.what());
+    return false;
+  }
+  last_scan_ = systemSeconds();
+  backoff_ = config_.reconnect_period;  // a good scan: the next failure waits the shortest time
+  scan->sequence = sequence_++;
+  ++counters_.scans;
+  return true;
+}
+
+}  // namespace sensors
+}  // namespace amigobot_tracking

@@ -1,0 +1,229 @@
+#include "amigobot_tracking/sensors/laser_emulator_server.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace amigobot_tracking {
+namespace sensors {
+namespace {
+
+std::runtime_error failure(const std::string& what) {
+  return std::runtime_error("laser_emulator: " + what + ": " + std::strerror(errno));
+}
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Sends everything the peer takes now; a peer that does not read loses the rest, as a
+// sensor's output buffer overflows.
+void sendAll(int fd, const std::string& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::send(fd, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (n < 0 && errno == ENOTSOCK) n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n <= 0) return;
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+// Position just after the n-th occurrence of `c`, or npos.
+std::size_t after(const std::string& text, char c, int n) {
+  std::size_t at = 0;
+  for (int i = 0; i < n; ++i) {
+    at = text.find(c, at);
+    if (at == std::string::npos) return at;
+    ++at;
+  }
+  return at;
+}
+
+}  // namespace
+
+Fault parseFault(const std::string& name) {
+  if (name == "none") return Fault::kNone;
+  if (name == "malformed") return Fault::kMalformed;
+  if (name == "truncated") return Fault::kTruncated;
+  if (name == "checksum") return Fault::kChecksum;
+  if (name == "stall") return Fault::kStall;
+  if (name == "disconnect") return Fault::kDisconnect;
+  throw std::invalid_argument("fault: '" + name + "' (expected none | malformed | truncated | checksum | stall | disconnect)");
+}
+
+void LaserServerOptions::validate(const LaserModel& model) const {
+  if (fault_every < 0) throw std::invalid_argument("fault_every: must be >= 0");
+  if (fault != Fault::kNone && fault_every == 0) throw std::invalid_argument("fault_every: must be > 0 with a fault");
+  if (fault == Fault::kChecksum && model.protocol != Protocol::kScip) {
+    throw std::invalid_argument("fault: checksum needs a SCIP model (CoLa-A has no checksum)");
+  }
+  if (!pty_link.empty() && model.protocol != Protocol::kScip) throw std::invalid_argument("pty: only SCIP lasers have a serial port");
+  if (!(stall_time > 0.0)) throw std::invalid_argument("stall_time: must be > 0");
+}
+
+LaserEmulatorServer::LaserEmulatorServer(LaserModel model, ScanSource source, PoseSource pose,
+                                         LaserServerOptions options)
+    : model_(std::move(model)), source_(std::move(source)), pose_(std::move(pose)), options_(std::move(options)) {
+  options_.validate(model_);
+  latest_.ranges.assign(static_cast<std::size_t>(model_.beams()), std::numeric_limits<float>::quiet_NaN());
+}
+
+LaserEmulatorServer::~LaserEmulatorServer() {
+  for (int fd : {listen_fd_, tcp_.fd, pty_.fd, pty_slave_}) {
+    if (fd >= 0) ::close(fd);
+  }
+  if (!options_.pty_link.empty() && !pty_name_.empty()) ::unlink(options_.pty_link.c_str());
+}
+
+void LaserEmulatorServer::open() {
+  if (options_.tcp_port >= 0) {
+    listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (listen_fd_ < 0) throw failure("socket");
+    const int one = 1;
+    ::setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(static_cast<std::uint16_t>(options_.tcp_port));
+    if (::inet_pton(AF_INET, options_.bind_address.c_str(), &addr.sin_addr) != 1) {
+      throw std::runtime_error("laser_emulator: bind: '" + options_.bind_address + "' is not an IPv4 address");
+    }
+    if (::bind(listen_fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0 || ::listen(listen_fd_, 2) < 0) {
+      throw failure("cannot listen on " + options_.bind_address + ":" + std::to_string(options_.tcp_port));
+    }
+    socklen_t len = sizeof(addr);
+    ::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len);
+    tcp_port_ = ntohs(addr.sin_port);
+  }
+  if (!options_.pty_link.empty()) {
+    pty_.fd = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    if (pty_.fd < 0 || ::grantpt(pty_.fd) < 0 || ::unlockpt(pty_.fd) < 0) throw failure("posix_openpt");
+    pty_name_ = ::ptsname(pty_.fd);
+    // A held slave keeps the pty alive between clients; raw mode: no echo, no line editing.
+    pty_slave_ = ::open(pty_name_.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+    if (pty_slave_ < 0) throw failure("open " + pty_name_);
+    termios tio{};
+    ::tcgetattr(pty_slave_, &tio);
+    ::cfmakeraw(&tio);
+    ::tcsetattr(pty_slave_, TCSANOW, &tio);
+    ::unlink(options_.pty_link.c_str());
+    if (::symlink(pty_name_.c_str(), options_.pty_link.c_str()) < 0) throw failure("symlink " + options_.pty_link);
+    pty_.session = makeSession(model_, options_.serial);
+  }
+  next_scan_ = steadySeconds();
+}
+
+void LaserEmulatorServer::accept() {
+  const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC | SOCK_NONBLOCK);
+  if (fd < 0) return;
+  drop(tcp_);
+  tcp_.fd = fd;
+  tcp_.session = makeSession(model_, options_.serial);
+}
+
+void LaserEmulatorServer::drop(Link& link) {
+  if (link.fd >= 0) ::close(link.fd);
+  link.fd = -1;
+  link.session.reset();
+}
+
+void LaserEmulatorServer::serve(Link& link) {
+  char buffer[4096];
+  const ssize_t n = ::read(link.fd, buffer, sizeof(buffer));
+  if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR && errno != EIO)) {
+    if (&link == &tcp_) drop(link);  // the pty stays, like the device's USB port
+    return;
+  }
+  if (n < 0) return;
+  const std::string out = link.session->receive(std::string(buffer, static_cast<std::size_t>(n)), latest_);
+  if (!out.empty()) sendAll(link.fd, out);
+}
+
+std::string LaserEmulatorServer::damage(std::string telegram) {
+  const bool scip = model_.protocol == Protocol::kScip;
+  switch (options_.fault) {
+    case Fault::kMalformed: {
+      // SCIP: a data line one character short; CoLa-A: a range that is not a number.
+      const std::size_t at = scip ? after(telegram, '\n', 3) : after(telegram, ' ', 26);
+      if (at != std::string::npos && at < telegram.size()) telegram.replace(at, 1, scip ? "" : "Z");
+      return telegram;
+    }
+    case Fault::kTruncated: return telegram.substr(0, telegram.size() / 2);
+    case Fault::kChecksum: telegram[telegram.size() - 3] ^= 0x01; return telegram;  // last data line's sum
+    default: return telegram;
+  }
+}
+
+void LaserEmulatorServer::tick() {
+  const double now = steadySeconds();
+  // A scan leaves the device once its last beam is measured: cast at the first beam, sent
+  // one sweep of the measured beams later.
+  if (has_pending_ && now >= pending_due_) {
+    has_pending_ = false;
+    latest_ = pending_;
+    send(now);
+  }
+  if (now < next_scan_) return;
+  next_scan_ += model_.scanTime();
+  if (next_scan_ < now) next_scan_ = now + model_.scanTime();  // fell behind: skip, as a device would
+  core::Pose2 base;
+  double t = 0.0;
+  if (!pose_(&base, &t)) return;
+  pending_ = source_.cast(base, t);
+  pending_due_ = now + model_.timeIncrement() * (model_.beams() - 1);
+  has_pending_ = true;
+}
+
+void LaserEmulatorServer::send(double now) {
+  for (Link* link : {&tcp_, &pty_}) {
+    if (!link->session || now < stall_until_) continue;
+    std::string telegram = link->session->stream(latest_);
+    if (telegram.empty()) continue;
+    if (options_.fault_every > 0 && ++streamed_ % static_cast<std::uint64_t>(options_.fault_every) == 0) {
+      if (options_.fault == Fault::kStall) {
+        stall_until_ = now + options_.stall_time;
+        continue;
+      }
+      if (options_.fault == Fault::kDisconnect && link == &tcp_) {
+        drop(tcp_);
+        continue;
+      }
+      telegram = damage(std::move(telegram));
+    }
+    sendAll(link->fd, telegram);
+  }
+}
+
+void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
+  while (!stop) {
+    std::vector<pollfd> fds;
+    if (listen_fd_ >= 0) fds.push_back({listen_fd_, POLLIN, 0});
+    if (tcp_.fd >= 0) fds.push_back({tcp_.fd, POLLIN, 0});
+    if (pty_.fd >= 0) fds.push_back({pty_.fd, POLLIN, 0});
+    if (::poll(fds.data(), fds.size(), 5) < 0 && errno != EINTR) throw failure("poll");
+    for (const pollfd& p : fds) {
+      if (!(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      if (p.fd == listen_fd_) {
+        accept();
+      } else if (p.fd == tcp_.fd) {
+        serve(tcp_);
+      } else if (p.fd == pty_.fd && (p.revents & POLLIN)) {
+        serve(pty_);
+      }
+    }
+    tick();
+  }
+}
+
+}  // namespace sensors
+}  // namespace amigobot_tracking

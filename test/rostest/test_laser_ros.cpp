@@ -1,0 +1,155 @@
+// The Laser nodelet against laser_emulator, for each emulated protocol: LaserScan geometry
+// fields, monotonic stamps, every beam equal to the ray-cast truth within 1 mm, diagnostics
+// with the device identity, a clean unload; a bad parameter names itself and starts nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+#include <vector>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <nodelet/loader.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include "amigobot_tracking/sensors/scan_source.h"
+#include "child_process.h"
+
+using namespace amigobot_tracking;
+using namespace amigobot_tracking::sensors;
+
+namespace {
+
+const core::Pose2 kRobot{0.3, 0.1, -0.4};
+const core::Pose2 kMount{0.11, 0.0, 0.0};
+
+std::vector<core::Disk> room() {
+  std::vector<core::Disk> disks(3);
+  disks[0].center = {2.0, -0.5};
+  disks[0].radius = 0.4;
+  disks[1].center = {-0.5, 2.0};
+  disks[1].radius = 0.3;
+  disks[2].center = {1.0, 1.5};
+  disks[2].radius = 0.2;
+  return disks;
+}
+
+struct Received {
+  std::mutex mutex;
+  std::vector<sensor_msgs::LaserScan> scans;
+  std::string diagnostics;
+  int level = -1;
+};
+
+void runAgainst(const std::string& model) {
+  const std::string world = "/tmp/amigobot_laser_rostest_" + std::to_string(::getpid()) + ".yaml";
+  {
+    std::ofstream out(world);
+    out << "obstacles:\n";
+    for (const core::Disk& d : room()) out << "  - {center: [" << d.center.x() << ", " << d.center.y() << "], radius: " << d.radius << "}\n";
+  }
+  amigobot_test::ChildProcess emulator;
+  const std::string line = emulator.start({AMIGOBOT_LASER_EMULATOR, "--model", model, "--tcp-port", "0", "--world", world,
+                                           "--pose", std::to_string(kRobot.x), std::to_string(kRobot.y),
+                                           std::to_string(kRobot.theta), "--mount-x", std::to_string(kMount.x)});
+  int port = 0;
+  ASSERT_EQ(std::sscanf(line.c_str(), "READY tcp=%d", &port), 1) << line;
+  const std::string name = "/laser_" + model;
+  ros::param::set(name + "/model", model);
+  ros::param::set(name + "/port", "127.0.0.1:" + std::to_string(port));
+  ros::param::set(name + "/frame_id", "laser");
+  ros::NodeHandle nh;
+  Received in;
+  auto scan_sub = nh.subscribe<sensor_msgs::LaserScan>("scan", 20, [&](const sensor_msgs::LaserScan::ConstPtr& m) {
+    std::lock_guard<std::mutex> l(in.mutex);
+    in.scans.push_back(*m);
+  });
+  auto diag_sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+        for (const auto& s : m->status) {
+          if (s.name.find("Laser " + model) == std::string::npos) continue;
+          std::lock_guard<std::mutex> l(in.mutex);
+          in.level = s.level;
+          in.diagnostics.clear();
+          for (const auto& kv : s.values) in.diagnostics += kv.key + "=" + kv.value + ";";
+        }
+      });
+  nodelet::Loader loader(false);
+  ASSERT_TRUE(loader.load(name, "amigobot_tracking/Laser", {}, {}));
+  auto count = [&] {
+    std::lock_guard<std::mutex> l(in.mutex);
+    return in.scans.size();
+  };
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(20.0);
+  auto diagnosed = [&] {  // past the updater's "starting up" message, which has no values
+    std::lock_guard<std::mutex> l(in.mutex);
+    return in.diagnostics.find("device=") != std::string::npos;
+  };
+  while ((count() < 6 || !diagnosed()) && ros::WallTime::now() < end) ros::WallDuration(0.05).sleep();
+  ASSERT_GE(count(), 6u) << "no scans from the Laser nodelet";
+  ASSERT_TRUE(loader.unload(name));
+  const std::size_t after_unload = count();
+  ros::WallDuration(0.5).sleep();
+  EXPECT_LE(count(), after_unload + 1) << "the I/O thread must stop on unload";
+
+  std::lock_guard<std::mutex> l(in.mutex);
+  const LaserModel device = laserModel(model);
+  ScanSourceOptions options;
+  options.mount = kMount;
+  ScanSource source(device, room(), options);
+  const EmulatedScan truth = source.cast(kRobot, 0.0);
+  for (std::size_t k = 0; k < in.scans.size(); ++k) {
+    const sensor_msgs::LaserScan& s = in.scans[k];
+    EXPECT_EQ(s.header.frame_id, "laser");
+    EXPECT_FLOAT_EQ(s.angle_min, static_cast<float>(device.angleMin()));
+    EXPECT_FLOAT_EQ(s.angle_max, static_cast<float>(device.angleMax()));
+    EXPECT_FLOAT_EQ(s.angle_increment, static_cast<float>(device.angleIncrement()));
+    EXPECT_NEAR(s.scan_time, device.scanTime(), 1e-6);
+    EXPECT_NEAR(s.time_increment, device.timeIncrement(), 1e-7);
+    EXPECT_FLOAT_EQ(s.range_max, static_cast<float>(device.range_max));
+    EXPECT_NEAR(s.header.stamp.toSec(), ros::Time::now().toSec(), 30.0);
+    if (k > 0) {
+      EXPECT_GT(s.header.stamp, in.scans[k - 1].header.stamp) << "stamps must increase";
+      EXPECT_LT((s.header.stamp - in.scans[k - 1].header.stamp).toSec(), 3 * device.scanTime());
+    }
+    ASSERT_EQ(s.ranges.size(), truth.ranges.size());
+    for (std::size_t i = 0; i < s.ranges.size(); ++i) {
+      if (std::isinf(truth.ranges[i])) {
+        EXPECT_TRUE(std::isinf(s.ranges[i]) && s.ranges[i] > 0) << "beam " << i;
+      } else {
+        EXPECT_NEAR(s.ranges[i], truth.ranges[i], 0.0005 + 1e-6) << "beam " << i;
+      }
+    }
+  }
+  EXPECT_EQ(in.level, 0) << in.diagnostics;
+  EXPECT_NE(in.diagnostics.find("device="), std::string::npos) << in.diagnostics;
+  EXPECT_NE(in.diagnostics.find("scan rate [Hz]"), std::string::npos) << in.diagnostics;
+}
+
+}  // namespace
+
+TEST(LaserRos, HokuyoUrgOverScip) { runAgainst("hokuyo_urg"); }
+
+TEST(LaserRos, SickTim5xxOverColaA) { runAgainst("sick_tim5xx"); }
+
+TEST(LaserRos, BadParameterStartsNothing) {
+  ros::param::set("/bad_laser/model", "urg9");
+  nodelet::Loader loader(false);
+  EXPECT_TRUE(loader.load("/bad_laser", "amigobot_tracking/Laser", {}, {}));  // the manager survives
+  ros::WallDuration(0.5).sleep();
+  ros::NodeHandle nh;
+  ros::master::V_TopicInfo topics;
+  ros::master::getTopics(topics);
+  for (const auto& t : topics) EXPECT_NE(t.name, "/scan") << "a laser with a bad model must not advertise";
+  EXPECT_TRUE(loader.unload("/bad_laser"));
+}
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_laser_ros");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,87 @@
+// CoLa-A fields and the LMDscandata telegram against SICK's telegram listing.
+#include <gtest/gtest.h>
+
+#include "amigobot_tracking/sensors/cola_a.h"
+
+using namespace amigobot_tracking::sensors;
+
+TEST(ColaA, HexFieldsAsTheListingWritesThem) {
+  EXPECT_EQ(cola::hex(5000), "1388");         // scan frequency 50 Hz in 1/100 Hz
+  EXPECT_EQ(cola::hex(1500), "5DC");          // 15 Hz
+  EXPECT_EQ(cola::hex(3333), "D05");          // 0.3333 deg in 1/10000 deg
+  EXPECT_EQ(cola::hex(811), "32B");           // beams of a TiM5xx
+  EXPECT_EQ(cola::hexSigned(-450000), "FFF92230");  // starting angle -45 deg
+  EXPECT_EQ(cola::hex(0), "0");
+  EXPECT_EQ(cola::parseHex("FFF92230", "angle"), 0xFFF92230u);
+  EXPECT_EQ(static_cast<std::int32_t>(cola::parseHex("FFF92230", "angle")), -450000);
+  EXPECT_THROW(cola::parseHex("12G", "range"), std::invalid_argument);
+  EXPECT_THROW(cola::parseHex("", "range"), std::invalid_argument);
+}
+
+TEST(ColaA, TelegramsAreFramedAndFoundInAStream) {
+  EXPECT_EQ(cola::frame("sRN LMDscandata"), "\x02sRN LMDscandata\x03");
+  std::string buffer = "noise\x02sRN SerialNumber\x03\x02sMN Run\x03\x02sRN Fi";
+  std::string body;
+  ASSERT_TRUE(cola::nextTelegram(&buffer, &body));
+  EXPECT_EQ(body, "sRN SerialNumber");
+  ASSERT_TRUE(cola::nextTelegram(&buffer, &body));
+  EXPECT_EQ(body, "sMN Run");
+  EXPECT_FALSE(cola::nextTelegram(&buffer, &body));
+  EXPECT_EQ(buffer, "\x02sRN Fi");  // the incomplete telegram waits for its ETX
+  buffer += "\x02sMN Run\x03";      // a cut telegram followed by a whole one: the whole one
+  ASSERT_TRUE(cola::nextTelegram(&buffer, &body));
+  EXPECT_EQ(body, "sMN Run");
+}
+
+TEST(ColaA, DecodesAHandWrittenScanTelegram) {
+  const std::string body =
+      "sRA LMDscandata 1 1 89A27F 0 0 343 347 27477BA9 2747813B 0 0 7 0 0 5DC A2 0 1 DIST1 3F800000 00000000 "
+      "FFF92230 D05 3 3E8 0 FA0 0 0 0 0 0 0";
+  cola::ScanTelegram scan;
+  ASSERT_EQ(cola::decodeScan(body, &scan), "");
+  EXPECT_EQ(scan.command, "sRA");
+  EXPECT_EQ(scan.serial, 0x89A27Fu);
+  EXPECT_EQ(scan.telegram_counter, 0x343u);
+  EXPECT_EQ(scan.scan_counter, 0x347u);
+  EXPECT_EQ(scan.scan_frequency, 1500u);
+  EXPECT_EQ(scan.measurement_frequency, 162u);
+  EXPECT_FLOAT_EQ(scan.scale_factor, 1.0f);
+  EXPECT_EQ(scan.start_angle, -450000);
+  EXPECT_EQ(scan.angular_step, 3333u);
+  EXPECT_EQ(scan.ranges, (std::vector<std::uint32_t>{1000, 0, 4000}));
+}
+
+TEST(ColaA, EncodeThenDecodeKeepsEveryField) {
+  cola::ScanTelegram in;
+  in.command = "sSN";
+  in.serial = 0x1234567;
+  in.telegram_counter = 7;
+  in.scan_counter = 9;
+  in.time_since_start_us = 123456789;
+  in.time_of_transmission_us = 123500000;
+  in.scan_frequency = 1500;
+  in.measurement_frequency = 162;
+  in.start_angle = -450000;
+  in.angular_step = 3333;
+  in.ranges = {1, 2, 0xFFFF, 0};
+  const std::string body = cola::encodeScan(in);
+  EXPECT_NE(body.find(" DIST1 3F800000 0 FFF92230 D05 4 1 2 FFFF 0 "), std::string::npos) << body;
+  cola::ScanTelegram out;
+  ASSERT_EQ(cola::decodeScan(body, &out), "");
+  EXPECT_EQ(out.command, in.command);
+  EXPECT_EQ(out.time_since_start_us, in.time_since_start_us);
+  EXPECT_EQ(out.start_angle, in.start_angle);
+  EXPECT_EQ(out.ranges, in.ranges);
+}
+
+TEST(ColaA, RejectsBrokenScanTelegrams) {
+  cola::ScanTelegram scan;
+  const std::string good =
+      "sRA LMDscandata 1 1 1 0 0 1 1 1 1 0 0 0 0 0 5DC A2 0 1 DIST1 3F800000 0 FFF92230 D05 3 1 2 3 0 0 0 0 0 0";
+  ASSERT_EQ(cola::decodeScan(good, &scan), "");
+  EXPECT_NE(cola::decodeScan(good.substr(0, good.find(" 2 3 ")), &scan), "");  // truncated
+  std::string bad = good;
+  bad.replace(bad.find(" 2 3 "), 5, " Z 3 ");
+  EXPECT_NE(cola::decodeScan(bad, &scan).find("range"), std::string::npos);
+  EXPECT_NE(cola::decodeScan("sRA SerialNumber 8 12345678", &scan), "");
+}
