@@ -52,6 +52,10 @@ class ChildProcess {
     return line;
   }
 
+  // Sends `signal` and returns at once (SIGSTOP / SIGCONT freeze and thaw the child).
+  void signal(int signal) {
+    if (pid_ > 0) ::kill(pid_, signal);
+  }
   void stop(int signal) {
     if (pid_ <= 0) return;
     ::kill(pid_, signal);

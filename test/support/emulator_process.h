@@ -111,9 +111,7 @@ class EmulatorProcess {
   }
 
   // Sends `signal` and returns at once (SIGSTOP / SIGCONT freeze and thaw the robot).
-  void signal(int signal) {
-    if (pid_ > 0) ::kill(pid_, signal);
-  }
+  void signal(int signal) { process_.signal(signal); }
   void kill(int signal) {
     process_.stop(signal);
     status_.reset();
