@@ -20,7 +20,7 @@ target_compile_options(test_e2e PRIVATE ${AMIGOBOT_WARNINGS})
 add_dependencies(test_e2e ${PROJECT_NAME}_generate_messages_cpp)
 add_dependencies(tests test_e2e)
 set(AMIGOBOT_E2E_NODES test_e2e amigobot_emulator amigobot_tracking_ros amigobot_tracking_ros_driver
-    sim_laser ground_truth_localization reference_publisher trail_publisher)
+    sim_laser ground_truth_localization reference_publisher trail_publisher laser_emulator amigobot_tracking_ros_laser)
 
 # amigobot_add_e2e_test(FILE PORT_ARG...): rostest FILE with a free port for each PORT_ARG.
 function(amigobot_add_e2e_test file)
@@ -34,7 +34,7 @@ function(amigobot_add_e2e_test file)
                           DEPENDENCIES ${AMIGOBOT_E2E_NODES})
 endfunction()
 
-amigobot_add_e2e_test(test/e2e/tracking.test tcp_port status_port)
+amigobot_add_e2e_test(test/e2e/tracking.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/diamond.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/watchdog.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/target_loss.test tcp_port status_port)
