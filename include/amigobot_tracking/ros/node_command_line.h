@@ -5,11 +5,13 @@
 #pragma once
 
 #include <cstdlib>
+#include <exception>
 #include <string>
 
 #include <CLI/CLI.hpp>
 #include <ros/console.h>
 #include <ros/init.h>
+#include <ros/node_handle.h>
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -38,6 +40,21 @@ inline bool configLoaded(const std::string& program, const std::string& error) {
   if (error.empty()) return true;
   ROS_FATAL_STREAM(program << ": " << error);
   return false;
+}
+
+// The main of a node whose constructor wires everything (and throws on a configuration
+// error): builds Node(nh, ~) and spins; 1 after ROS_FATAL naming the program on an error.
+template <class Node>
+int spinNode(const std::string& program) {
+  ros::NodeHandle nh, pnh("~");
+  try {
+    Node node(nh, pnh);
+    ros::spin();
+  } catch (const std::exception& e) {
+    ROS_FATAL_STREAM(program << ": " << e.what());
+    return 1;
+  }
+  return 0;
 }
 
 }  // namespace ros_layer

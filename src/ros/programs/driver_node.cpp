@@ -10,13 +10,5 @@ const amigobot_tracking::ros_layer::NodeHelp kHelp{
 
 int main(int argc, char** argv) {
   amigobot_tracking::ros_layer::initNode(argc, argv, "amigobot_driver", kHelp);
-  ros::NodeHandle nh, pnh("~");
-  try {
-    amigobot_tracking::ros_layer::AmigobotDriver driver(nh, pnh);
-    ros::spin();
-  } catch (const std::exception& e) {
-    ROS_FATAL_STREAM("amigobot_driver: " << e.what());
-    return 1;
-  }
-  return 0;
+  return amigobot_tracking::ros_layer::spinNode<amigobot_tracking::ros_layer::AmigobotDriver>("amigobot_driver");
 }

@@ -11,13 +11,5 @@ const amigobot_tracking::ros_layer::NodeHelp kHelp{
 
 int main(int argc, char** argv) {
   amigobot_tracking::ros_layer::initNode(argc, argv, "laser", kHelp);
-  ros::NodeHandle nh, pnh("~");
-  try {
-    amigobot_tracking::ros_layer::LaserNode laser(nh, pnh);
-    ros::spin();
-  } catch (const std::exception& e) {
-    ROS_FATAL_STREAM("laser_node: " << e.what());
-    return 1;
-  }
-  return 0;
+  return amigobot_tracking::ros_layer::spinNode<amigobot_tracking::ros_layer::LaserNode>("laser_node");
 }
