@@ -32,6 +32,7 @@ const core::FieldTable<GroundTruthConfig>& groundTruthFields() {
       field("socket_timeout", &G::socket_timeout, "s", "a slower status reply counts as a lost link",
             core::positive()),
       field("reconnect_period", &G::reconnect_period, "s", "between reconnection attempts", core::positive()),
+      field("publish_tf", &G::publish_tf, "-", "broadcast map -> odom (false: only the ground_truth topic)"),
   };
   return table;
 }

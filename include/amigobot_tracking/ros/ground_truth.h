@@ -27,6 +27,9 @@ struct GroundTruthConfig {
   double transform_tolerance = 0.1;     // [s] map -> odom is stamped this far ahead (as amcl does)
   double socket_timeout = 0.5;          // [s] a status reply slower than this counts as a lost link
   double reconnect_period = 1.0;        // [s] between reconnection attempts
+  // false: only the `ground_truth` topic (for judging a run whose map -> odom comes from the
+  // real localisation); true: also map -> odom, so map -> base_link is the true pose.
+  bool publish_tf = true;
 
   std::string validate() const;  // empty when valid, else "key: reason"
 };

@@ -1,6 +1,8 @@
 // ground_truth_localization: asks the emulator's status socket for the true pose of the
 // robot and broadcasts map -> odom so that map -> base_link is that pose (REP 105), and
 // publishes the true pose as `ground_truth` (nav_msgs/Odometry in map) for recording.
+// With publish_tf false it only publishes `ground_truth`: the judge of a run that localises
+// itself (sim.launch localization:=map|slam).
 // When the socket goes away it says so, stops broadcasting (consumers see the pose age
 // and stop the robot) and reconnects every reconnect_period (aria::StatusClient).
 // Parameters: ros/ground_truth.h (GroundTruthConfig).
@@ -60,6 +62,7 @@ int main(int argc, char** argv) {
     truth.twist.twist.linear.x = status.v;
     truth.twist.twist.angular.z = status.w;
     truth_pub.publish(truth);
+    if (!config.publish_tf) continue;
 
     geometry_msgs::TransformStamped odom_base;
     try {
