@@ -1,5 +1,5 @@
 # Layer 3, ros: run_report scores a recorded run (rosbag) like the offline simulator (make demo).
-amigobot_add_library(amigobot_tracking_ros_report src/ros/recorded_run.cpp)
+amigobot_add_library(amigobot_tracking_ros_report src/ros/recorded_run.cpp src/ros/localization_error.cpp)
 target_link_libraries(amigobot_tracking_ros_report amigobot_tracking_sim amigobot_tracking_core)
 add_dependencies(amigobot_tracking_ros_report ${PROJECT_NAME}_generate_messages_cpp)
 
@@ -10,4 +10,6 @@ target_link_libraries(run_report amigobot_tracking_ros_report amigobot_tracking_
 if(CATKIN_ENABLE_TESTING)
   amigobot_add_unit_test(test_recorded_run test/unit/test_recorded_run.cpp)
   target_link_libraries(test_recorded_run amigobot_tracking_ros_report ${catkin_LIBRARIES})
+  amigobot_add_unit_test(test_localization_error test/unit/test_localization_error.cpp)
+  target_link_libraries(test_localization_error amigobot_tracking_ros_report ${catkin_LIBRARIES})
 endif()

@@ -13,10 +13,13 @@
 #include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
+#include <nlohmann/json.hpp>
 #include <tf2/utils.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include "amigobot_tracking/TrackingState.h"
 #include "amigobot_tracking/VirtualObstacleArray.h"
+#include "amigobot_tracking/ros/localization_error.h"
 #include "amigobot_tracking/ros/recorded_run.h"
 #include "amigobot_tracking/world/world.h"
 
@@ -42,6 +45,14 @@ int main(int argc, char** argv) {
   app.add_option("--rho-inf", config.rho_inf, "[m] for the plots")->capture_default_str();
   app.add_option("--v-max", config.v_max, "[m/s] the run's diamond")->capture_default_str();
   app.add_option("--w-max", config.w_max, "[rad/s] the run's diamond")->capture_default_str();
+  std::string global_frame = "map", base_frame = "base_link";
+  double localization_skip = 2.0;
+  app.add_option("--global-frame", global_frame, "localisation error: the believed pose is tf global -> base")
+      ->capture_default_str();
+  app.add_option("--base-frame", base_frame, "localisation error: the robot's frame (the truth's child)")
+      ->capture_default_str();
+  app.add_option("--localization-skip", localization_skip, "[s] localisation error: start-up not scored")
+      ->capture_default_str();
   app.footer("Exit 0: safe run; 3: collision or a command outside the diamond; 4: the run did not happen; "
              "2: bad arguments or unreadable input.");
   try {
@@ -57,12 +68,17 @@ int main(int argc, char** argv) {
     ros_layer::RecordedRun run(config);
     rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
     const std::string state_topic = ns + "/state", virtual_topic = ns + "/virtual_obstacles";
-    rosbag::View view(bag, rosbag::TopicQuery({state_topic, virtual_topic, cmd_topic, truth_topic}));
+    ros_layer::LocalizationErrorMeter localization(global_frame, base_frame, localization_skip);
+    rosbag::View view(bag, rosbag::TopicQuery({state_topic, virtual_topic, cmd_topic, truth_topic, "/tf", "/tf_static"}));
     for (const rosbag::MessageInstance& msg : view) {
-      if (msg.getTopic() == truth_topic) {
+      if (msg.getTopic() == "/tf" || msg.getTopic() == "/tf_static") {
+        if (auto t = msg.instantiate<tf2_msgs::TFMessage>()) localization.addTf(*t, msg.getTopic() == "/tf_static");
+      } else if (msg.getTopic() == truth_topic) {
         if (auto o = msg.instantiate<nav_msgs::Odometry>()) {
-          run.addTruth(o->header.stamp.toSec(), core::Pose2{o->pose.pose.position.x, o->pose.pose.position.y,
-                                                            tf2::getYaw(o->pose.pose.orientation)});
+          const core::Pose2 truth{o->pose.pose.position.x, o->pose.pose.position.y,
+                                  tf2::getYaw(o->pose.pose.orientation)};
+          run.addTruth(o->header.stamp.toSec(), truth);
+          localization.addTruth(o->header.stamp, truth);
         }
       } else if (msg.getTopic() == cmd_topic) {
         if (auto c = msg.instantiate<geometry_msgs::Twist>()) run.addCommand(c->linear.x, c->angular.z);
@@ -85,7 +101,16 @@ int main(int argc, char** argv) {
     run.finish();
     const ros_layer::RecordedRunSummary s = run.summary();
     sim::writeTrajectoryCsv(out + "/trajectory.csv", run.rows());
-    sim::writeText(out + "/metrics.json", ros_layer::recordedRunJson(s, config, run.allObstacles(), name));
+    const ros_layer::LocalizationErrorStats loc = localization.finish();
+    nlohmann::json metrics = nlohmann::json::parse(ros_layer::recordedRunJson(s, config, run.allObstacles(), name));
+    metrics["localization"] = {{"frames", global_frame + " -> " + base_frame},
+                               {"samples", loc.samples},
+                               {"missed", loc.missed},
+                               {"rms_position_m", loc.rms_position},
+                               {"max_position_m", loc.max_position},
+                               {"rms_heading_deg", loc.rms_heading * 180.0 / M_PI},
+                               {"max_heading_deg", loc.max_heading * 180.0 / M_PI}};
+    sim::writeText(out + "/metrics.json", metrics.dump(2) + "\n");
     const sim::RunMetrics& m = s.metrics;
     std::printf("tracking: %llu steps over %.1f s, path %.2f m; |e| < rho in %.1f %% of steps, max |e|/rho %.2f, "
                 "AAE %.3f m, ASE %.4f m^2, TEC %.2f\n",
@@ -97,6 +122,11 @@ int main(int argc, char** argv) {
                 static_cast<unsigned long long>(m.body_collisions),
                 static_cast<unsigned long long>(s.command_violations), static_cast<unsigned long long>(s.commands),
                 s.max_command_norm);
+    std::printf("localisation: tf %s -> %s against the ground truth at %llu samples (%llu without a pose): "
+                "RMS %.3f m, max %.3f m; heading RMS %.2f deg, max %.2f deg\n",
+                global_frame.c_str(), base_frame.c_str(), static_cast<unsigned long long>(loc.samples),
+                static_cast<unsigned long long>(loc.missed), loc.rms_position, loc.max_position,
+                loc.rms_heading * 180.0 / M_PI, loc.max_heading * 180.0 / M_PI);
     if (!s.ran()) {
       std::fprintf(stderr, "run_report: the run did not happen (%llu enabled steps, %llu ground-truth poses, %.2f m)\n",
                    static_cast<unsigned long long>(m.steps), static_cast<unsigned long long>(s.truth_samples),
