@@ -53,7 +53,7 @@ test: build ## build and run every test, ending with `N passed, N failed` (~10 m
 demo: build ## the whole stack on the emulated robot, headless, scored report in report/demo
 	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
-bench: build ## benchmarks: core, simulator speed, scan obstacles, laser chain, tracking cycle, ARIA
+bench: build ## benchmarks: core, simulator speed, scan obstacles, world ray casting, laser chain, tracking cycle, ARIA
 	$(CATKIN) bench_core
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 50
@@ -63,6 +63,8 @@ bench: build ## benchmarks: core, simulator speed, scan obstacles, laser chain, 
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 50 --integrator second_order --control-period 0.004 --max-step 0.01
 	$(CATKIN) bench_scan_obstacles
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_scan_obstacles --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(CATKIN) bench_world
+	$(WS)/devel/lib/amigobot_tracking/bench_world --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(CATKIN) bench_laser
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_laser
 	$(CATKIN) bench_tracking_cycle

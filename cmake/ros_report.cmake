@@ -1,6 +1,6 @@
 # Layer 3, ros: run_report scores a recorded run (rosbag) like the offline simulator (make demo).
 amigobot_add_library(amigobot_tracking_ros_report src/ros/recorded_run.cpp src/ros/localization_error.cpp)
-target_link_libraries(amigobot_tracking_ros_report amigobot_tracking_sim amigobot_tracking_core)
+target_link_libraries(amigobot_tracking_ros_report amigobot_tracking_sim amigobot_tracking_world amigobot_tracking_core)
 add_dependencies(amigobot_tracking_ros_report ${PROJECT_NAME}_generate_messages_cpp)
 
 amigobot_add_tool(run_report src/ros/programs/run_report.cpp)

@@ -49,6 +49,10 @@ def fig3_xy(d, meta, out_dir, dpi, title):
     fig, ax = plt.subplots(figsize=(6, 6))
     t_end = d["t"][-1]
     worst = int(np.argmin(d["clearance_body"]))
+    for a, b in meta.get("walls", []):  # a recorded run's room (world file)
+        ax.plot([a[0], b[0]], [a[1], b[1]], "-", color="0.3", lw=2.0)
+    for points in meta.get("polygons", []):
+        ax.add_patch(plt.Polygon(points, closed=True, color="0.55", alpha=0.6))
     for obs in meta.get("obstacles", []):
         c, r, v = obs["center"], obs["radius"], obs.get("velocity", [0, 0])
         moving = any(abs(x) > 0 for x in v)

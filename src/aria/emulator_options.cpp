@@ -34,11 +34,8 @@ std::string EmulatorOptions::validate() const {
   const std::string robot_error = robot.validate();
   if (!robot_error.empty()) return "robot." + robot_error;
   if (!initial_pose.isFinite()) return "initial_pose: must be finite";
-  for (std::size_t i = 0; i < obstacles.size(); ++i) {
-    if (!(obstacles[i].radius > 0.0) || !obstacles[i].center.allFinite()) {
-      return "obstacles[" + std::to_string(i) + "]: needs a finite centre and a positive radius";
-    }
-  }
+  const std::string world_error = world::validateWorld(world);
+  if (!world_error.empty()) return "world." + world_error;
   if (name.empty() || name.size() > 60) return "name: must be 1..60 characters";
   return {};
 }

@@ -1,5 +1,5 @@
-// RobotEmulator's sensing: sonar ranges from the disks of the world and the SIP it sends
-// each cycle (odometry in firmware units, the transducers fired in the POLLING order).
+// RobotEmulator's sensing: sonar ranges from the world (disks, walls, polygons) and the SIP
+// it sends each cycle (odometry in firmware units, the transducers fired in the POLLING order).
 #include <algorithm>
 #include <cmath>
 
@@ -7,6 +7,7 @@
 
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/aria/emulator.h"
+#include "amigobot_tracking/world/geometry.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -26,19 +27,8 @@ std::vector<double> RobotEmulator::sonarRanges() const {
   const mrpt::poses::CPose2D robot(pose_.x, pose_.y, pose_.theta);
   for (const SonarPose& s : options_.robot.sonars) {
     const mrpt::poses::CPose2D sensor = robot + mrpt::poses::CPose2D(s.x, s.y, s.yaw);
-    double best = options_.sonar_max_range;
-    for (const core::Disk& d : options_.obstacles) {
-      const double dx = d.center.x() - sensor.x(), dy = d.center.y() - sensor.y();
-      const double dist = std::hypot(dx, dy);
-      if (dist <= d.radius) {
-        best = 0.0;
-        continue;
-      }
-      // The disk is seen when any part of it is inside the cone; range to its surface.
-      const double bearing = std::abs(core::wrapAngle(std::atan2(dy, dx) - sensor.phi()));
-      if (bearing <= options_.sonar_half_cone + std::asin(d.radius / dist)) best = std::min(best, dist - d.radius);
-    }
-    ranges.push_back(best);
+    const core::Pose2 axis{sensor.x(), sensor.y(), sensor.phi()};
+    ranges.push_back(std::min(options_.sonar_max_range, world::coneRange(options_.world, axis, options_.sonar_half_cone)));
   }
   return ranges;
 }

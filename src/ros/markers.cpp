@@ -10,22 +10,9 @@ namespace {
 
 using visualization_msgs::Marker;
 
-std_msgs::ColorRGBA color(float r, float g, float b, float a = 1.0f) {
-  std_msgs::ColorRGBA c;
-  c.r = r;
-  c.g = g;
-  c.b = b;
-  c.a = a;
-  return c;
-}
+std_msgs::ColorRGBA color(float r, float g, float b, float a = 1.0f) { return markerColor(r, g, b, a); }
 
-geometry_msgs::Point point(const Eigen::Vector2d& p, double z = 0.0) {
-  geometry_msgs::Point m;
-  m.x = p.x();
-  m.y = p.y();
-  m.z = z;
-  return m;
-}
+geometry_msgs::Point point(const Eigen::Vector2d& p, double z = 0.0) { return markerPoint(p, z); }
 
 class Builder {
  public:
@@ -91,6 +78,23 @@ class Builder {
 };
 
 }  // namespace
+
+std_msgs::ColorRGBA markerColor(float r, float g, float b, float a) {
+  std_msgs::ColorRGBA c;
+  c.r = r;
+  c.g = g;
+  c.b = b;
+  c.a = a;
+  return c;
+}
+
+geometry_msgs::Point markerPoint(const Eigen::Vector2d& p, double z) {
+  geometry_msgs::Point m;
+  m.x = p.x();
+  m.y = p.y();
+  m.z = z;
+  return m;
+}
 
 visualization_msgs::MarkerArray buildMarkers(const MarkerScene& scene) {
   Builder b(scene);

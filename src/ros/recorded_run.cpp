@@ -5,6 +5,7 @@
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/sim/json.h"
+#include "amigobot_tracking/world/geometry.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -14,9 +15,8 @@ std::string RecordedRunConfig::validate() const {
   if (!(std::isfinite(offset) && offset > 0.0)) return "offset must be > 0";
   if (!(std::isfinite(v_max) && v_max > 0.0)) return "v_max must be > 0";
   if (!(std::isfinite(w_max) && w_max > 0.0)) return "w_max must be > 0";
-  for (std::size_t i = 0; i < world.size(); ++i) {
-    if (!(world[i].radius > 0.0)) return "world obstacle " + std::to_string(i) + " needs a radius > 0";
-  }
+  const std::string bad_world = world::validateWorld(world);
+  if (!bad_world.empty()) return "world: " + bad_world;
   return "";
 }
 
@@ -39,7 +39,7 @@ void RecordedRun::addVirtualObstacles(std::vector<core::Disk> disks) {
 }
 
 std::vector<core::Disk> RecordedRun::allObstacles() const {
-  std::vector<core::Disk> all = config_.world;
+  std::vector<core::Disk> all = config_.world.obstacles;
   all.insert(all.end(), virtual_seen_.begin(), virtual_seen_.end());
   return all;
 }
@@ -66,11 +66,9 @@ void RecordedRun::addState(const TrackingState& s) {
   previous_t_ = t;
   have_previous_p_d_ = true;
 
-  std::vector<core::Disk> obstacles = config_.world;
-  obstacles.insert(obstacles.end(), virtual_.begin(), virtual_.end());
   const Eigen::Vector2d body = truth_.position();
   const Eigen::Vector2d p_r_true = core::offsetPoint(truth_, config_.offset);
-  const double clearance_world = core::clearance(body, config_.robot_radius, config_.world);
+  const double clearance_world = world::clearance(config_.world, body, config_.robot_radius);
   const double clearance_virtual = core::clearance(body, config_.robot_radius, virtual_);
   summary_.min_clearance_world = std::min(summary_.min_clearance_world, clearance_world);
   summary_.min_clearance_virtual = std::min(summary_.min_clearance_virtual, clearance_virtual);
@@ -83,7 +81,8 @@ void RecordedRun::addState(const TrackingState& s) {
   m.rho = s.rho;
   m.u = core::Twist2{s.v, s.omega};
   m.diamond_norm = std::abs(s.v) / config_.v_max + std::abs(s.omega) / config_.w_max;
-  m.clearance_offset = core::clearance(p_r_true, config_.robot_radius, obstacles);
+  m.clearance_offset = std::min(world::clearance(config_.world, p_r_true, config_.robot_radius),
+                                core::clearance(p_r_true, config_.robot_radius, virtual_));
   m.clearance_body = std::min(clearance_world, clearance_virtual);
   m.velocity_error = v_d - v_hat;
   m.estimator_settled = t > config_.settle_time;
@@ -155,6 +154,16 @@ std::string recordedRunJson(const RecordedRunSummary& summary, const RecordedRun
   s["rho_inf"] = jsonNumber(config.rho_inf);
   s["obstacles"] = sim::Json::array();
   for (const core::Disk& d : all_obstacles) s["obstacles"].push_back(sim::obstacleJson(d, Eigen::Vector2d::Zero()));
+  // The room for the plots: walls as [[x, y], [x, y]], polygons as their points.
+  const auto xy = [](const Eigen::Vector2d& p) { return sim::Json::array({jsonNumber(p.x()), jsonNumber(p.y())}); };
+  s["walls"] = sim::Json::array();
+  for (const world::Segment& w : config.world.walls) s["walls"].push_back(sim::Json::array({xy(w.from), xy(w.to)}));
+  s["polygons"] = sim::Json::array();
+  for (const world::Polygon& p : config.world.polygons) {
+    sim::Json points = sim::Json::array();
+    for (const Eigen::Vector2d& v : p.points) points.push_back(xy(v));
+    s["polygons"].push_back(points);
+  }
   return sim::dumpJson(j);
 }
 

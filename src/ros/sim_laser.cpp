@@ -16,7 +16,7 @@ const core::FieldTable<SimLaserConfig>& simLaserFields() {
   using S = SimLaserConfig;
   using core::field;
   static const core::FieldTable<S> table = {
-      field("world_file", &S::world_file, "-", "world YAML (obstacles: [{center, radius}]); required"),
+      field("world_file", &S::world_file, "-", "world YAML (obstacles, walls, polygons); required"),
       field("global_frame", &S::global_frame, "-", "frame of the world"),
       field("laser_frame", &S::laser_frame, "-", "frame of the scans"),
       field("beams", &S::beams, "-", "beams per scan", core::atLeast(2)),
@@ -46,7 +46,7 @@ std::string loadSimLaserConfig(const ros::NodeHandle& pnh, SimLaserConfig* confi
   return readParams(pnh, simLaserFields(), config);
 }
 
-sensor_msgs::LaserScan simulateScan(const core::Pose2& laser, const std::vector<core::Disk>& disks,
+sensor_msgs::LaserScan simulateScan(const core::Pose2& laser, const world::World& world,
                                     const SimLaserConfig& config, std::mt19937* rng) {
   core::ScanGeometry geometry;
   geometry.angle_min = config.angle_min;
@@ -62,7 +62,7 @@ sensor_msgs::LaserScan simulateScan(const core::Pose2& laser, const std::vector<
   scan.range_max = static_cast<float>(config.range_max);
   scan.scan_time = static_cast<float>(1.0 / config.rate);
   scan.time_increment = 0.0f;  // all beams at the stamp: the ray cast is instantaneous
-  scan.ranges = world::raycastScan(laser, disks, geometry, config.beams);
+  scan.ranges = world::raycastScan(laser, world, geometry, config.beams);
   if (config.noise_std > 0.0 && rng != nullptr) {
     std::normal_distribution<double> noise(0.0, config.noise_std);
     for (float& r : scan.ranges) {

@@ -16,8 +16,8 @@ void ScanSourceOptions::validate() const {
   if (!(dropout >= 0.0 && dropout <= 1.0)) throw std::invalid_argument("dropout: must be within [0, 1]");
 }
 
-ScanSource::ScanSource(LaserModel model, std::vector<core::Disk> obstacles, ScanSourceOptions options)
-    : model_(std::move(model)), obstacles_(std::move(obstacles)), options_(options), random_(options.seed) {
+ScanSource::ScanSource(LaserModel model, world::World world, ScanSourceOptions options)
+    : model_(std::move(model)), world_(std::move(world)), options_(options), random_(options.seed) {
   options_.validate();
 }
 
@@ -37,7 +37,7 @@ EmulatedScan ScanSource::cast(const core::Pose2& base, double t) {
     geometry.angle_increment = -geometry.angle_increment;
   }
   EmulatedScan scan;
-  scan.ranges = world::raycastScan(sensorPose(base), obstacles_, geometry, model_.beams());
+  scan.ranges = world::raycastScan(sensorPose(base), world_, geometry, model_.beams());
   scan.t = t;
   scan.index = index_++;
   std::normal_distribution<double> noise(0.0, options_.range_noise);

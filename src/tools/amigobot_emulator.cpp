@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--model", model, "amigo | amigo-sh (built-in parameters)")->capture_default_str();
   app.add_option("--robot-params", params_file, "robot parameter YAML instead of the built-in set");
-  app.add_option("--world", world_file, "world YAML (world/world.h): disks for the sonar, the initial pose");
+  app.add_option("--world", world_file, "world YAML (world/world.h): disks, walls, polygons for the sonar; the initial pose");
   app.add_option("--name", name, "SYNC2 robot name (default amigo-emulator, MobileSim in simulator mode)");
   app.add_option("--odometry-noise", robot.odometry_noise,
                  "relative std-dev of the wheel speeds the firmware integrates")->capture_default_str();
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     robot.robot = params_file.empty() ? builtinRobotParams(model) : loadRobotParams(params_file);
     if (!world_file.empty()) {
       const amigobot_tracking::world::World room = amigobot_tracking::world::loadWorld(world_file);
-      robot.obstacles = room.obstacles;
+      robot.world = room;
       if (room.initial_pose) robot.initial_pose = *room.initial_pose;
     }
     robot.name = !name.empty() ? name : (robot.simulator_mode ? "MobileSim" : "amigo-emulator");

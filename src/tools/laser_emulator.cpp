@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   app.add_option("--tcp-port", server.tcp_port, "TCP port (0 = any free port; -1 = none)")->capture_default_str();
   app.add_option("--bind", server.bind_address, "IPv4 address to listen on")->capture_default_str();
   app.add_option("--pty", server.pty_link, "hokuyo_urg: also serve a pseudo-terminal, symlinked at this path");
-  app.add_option("--world", world_file, "world YAML (world/world.h): the disks the laser sees");
+  app.add_option("--world", world_file, "world YAML (world/world.h): the disks, walls and polygons the laser sees");
   app.add_option("--status-port", status_port, "amigobot_emulator's status port: the robot's true pose (-1: --pose)")
       ->capture_default_str();
   app.add_option("--status-host", status_host, "host of the status socket")->capture_default_str();
@@ -65,8 +65,8 @@ int main(int argc, char** argv) {
   try {
     server.fault = sensors::parseFault(fault);
     const sensors::LaserModel model = sensors::laserModel(model_name);
-    std::vector<core::Disk> obstacles;
-    if (!world_file.empty()) obstacles = world::loadWorld(world_file).obstacles;
+    world::World room;
+    if (!world_file.empty()) room = world::loadWorld(world_file);
     const core::Pose2 fixed{pose[0], pose[1], pose[2]};
     std::unique_ptr<aria::StatusClient> status;
     if (status_port > 0) status = std::make_unique<aria::StatusClient>(status_host, status_port, 0.05, 0.5);
@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
       *t = robot.t;
       return true;
     };
-    sensors::LaserEmulatorServer io(model, sensors::ScanSource(model, obstacles, scan), source, server);
+    sensors::LaserEmulatorServer io(model, sensors::ScanSource(model, room, scan), source, server);
     io.open();
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);

@@ -21,22 +21,23 @@ namespace {
 const core::Pose2 kRobot{0.5, -0.2, 0.3};
 const core::Pose2 kMount{0.11, 0.02, 0.1};
 
-std::vector<core::Disk> room() {
-  std::vector<core::Disk> disks;
+// Disks, a wall to the right and a triangular table ahead-left.
+world::World room() {
+  world::World room;
   for (const auto& d : {std::array<double, 3>{2.0, 0.0, 0.3}, {0.0, 2.5, 0.5}, {-1.0, -1.0, 0.2}, {6.0, 3.0, 1.0}}) {
     core::Disk disk;
     disk.center = {d[0], d[1]};
     disk.radius = d[2];
-    disks.push_back(disk);
+    room.obstacles.push_back(disk);
   }
-  return disks;
+  room.walls.push_back({{-3.0, -2.0}, {4.0, -2.0}});
+  room.polygons.push_back({{{2.5, 1.0}, {3.0, 1.0}, {3.0, 1.6}}});
+  return room;
 }
 
 std::string worldFile() {
   const std::string path = "/tmp/amigobot_laser_test_world_" + std::to_string(::getpid()) + ".yaml";
-  std::ofstream out(path);
-  out << "obstacles:\n";
-  for (const core::Disk& d : room()) out << "  - {center: [" << d.center.x() << ", " << d.center.y() << "], radius: " << d.radius << "}\n";
+  std::ofstream(path) << world::worldYaml(room());
   return path;
 }
 

@@ -25,15 +25,21 @@ namespace {
 const core::Pose2 kRobot{0.3, 0.1, -0.4};
 const core::Pose2 kMount{0.11, 0.0, 0.0};
 
-std::vector<core::Disk> room() {
-  std::vector<core::Disk> disks(3);
-  disks[0].center = {2.0, -0.5};
-  disks[0].radius = 0.4;
-  disks[1].center = {-0.5, 2.0};
-  disks[1].radius = 0.3;
-  disks[2].center = {1.0, 1.5};
-  disks[2].radius = 0.2;
-  return disks;
+constexpr double kWallY = -1.5;  // [m] a wall along this line, to the robot's right
+
+// Three disks, the wall and a table ahead-left.
+world::World room() {
+  world::World room;
+  room.obstacles.resize(3);
+  room.obstacles[0].center = {2.0, -0.5};
+  room.obstacles[0].radius = 0.4;
+  room.obstacles[1].center = {-0.5, 2.0};
+  room.obstacles[1].radius = 0.3;
+  room.obstacles[2].center = {1.0, 1.5};
+  room.obstacles[2].radius = 0.2;
+  room.walls.push_back({{-2.0, kWallY}, {3.0, kWallY}});
+  room.polygons.push_back({{{1.6, 1.0}, {2.2, 1.0}, {2.2, 1.4}, {1.6, 1.4}}});
+  return room;
 }
 
 struct Received {
@@ -44,14 +50,10 @@ struct Received {
 };
 
 void runAgainst(const std::string& model) {
-  const std::string world = "/tmp/amigobot_laser_rostest_" + std::to_string(::getpid()) + ".yaml";
-  {
-    std::ofstream out(world);
-    out << "obstacles:\n";
-    for (const core::Disk& d : room()) out << "  - {center: [" << d.center.x() << ", " << d.center.y() << "], radius: " << d.radius << "}\n";
-  }
+  const std::string world_file = "/tmp/amigobot_laser_rostest_" + std::to_string(::getpid()) + ".yaml";
+  std::ofstream(world_file) << world::worldYaml(room());
   amigobot_test::ChildProcess emulator;
-  const std::string line = emulator.start({AMIGOBOT_LASER_EMULATOR, "--model", model, "--tcp-port", "0", "--world", world,
+  const std::string line = emulator.start({AMIGOBOT_LASER_EMULATOR, "--model", model, "--tcp-port", "0", "--world", world_file,
                                            "--pose", std::to_string(kRobot.x), std::to_string(kRobot.y),
                                            std::to_string(kRobot.theta), "--mount-x", std::to_string(kMount.x)});
   int port = 0;
@@ -115,6 +117,13 @@ void runAgainst(const std::string& model) {
       EXPECT_LT((s.header.stamp - in.scans[k - 1].header.stamp).toSec(), 3 * device.scanTime());
     }
     ASSERT_EQ(s.ranges.size(), truth.ranges.size());
+    // The beam nearest to straight down (-y in the world) meets the wall at the laser's
+    // height above it over the sine of its own bearing.
+    const double laser_y = kRobot.y + std::sin(kRobot.theta) * kMount.x;
+    const double down = -M_PI / 2 - kRobot.theta;
+    const auto beam = static_cast<std::size_t>(std::lround((down - s.angle_min) / s.angle_increment));
+    const double bearing = kRobot.theta + s.angle_min + beam * s.angle_increment;
+    EXPECT_NEAR(s.ranges[beam], (laser_y - kWallY) / -std::sin(bearing), 0.002) << "the wall, beam " << beam;
     for (std::size_t i = 0; i < s.ranges.size(); ++i) {
       if (std::isinf(truth.ranges[i])) {
         EXPECT_TRUE(std::isinf(s.ranges[i]) && s.ranges[i] > 0) << "beam " << i;

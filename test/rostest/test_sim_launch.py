@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """sim.launch runs: odom, scan and commands flow; map -> base_link equals the emulator's true
-pose (ground_truth_localization, REP 105); the tracking loop runs and moves the robot."""
+pose (ground_truth_localization, REP 105); the tracking loop runs and moves the robot; the laser
+and world_markers show the default world's walls."""
 import math
 import threading
 import time
@@ -12,6 +13,7 @@ import tf2_ros
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
+from visualization_msgs.msg import MarkerArray
 
 from amigobot_tracking.msg import TrackingState
 
@@ -45,6 +47,7 @@ class SimLaunch(unittest.TestCase):
         cls.cmd = Latest("/cmd_vel", Twist)
         cls.truth = Latest("/ground_truth", Odometry)
         cls.state = Latest("/tracking/state", TrackingState)
+        cls.world = Latest("/world_markers", MarkerArray)
         cls.tf = tf2_ros.Buffer()
         cls.listener = tf2_ros.TransformListener(cls.tf)
         # Generous: the whole stack starts on a shared 2-core machine.
@@ -56,8 +59,17 @@ class SimLaunch(unittest.TestCase):
         scan = self.scan.msg
         self.assertEqual(scan.header.frame_id, "laser")
         hits = [r for r in scan.ranges if math.isfinite(r)]
-        self.assertGreater(len(hits), 0, "the simulated laser sees none of the world's disks")
+        # sim.launch's world (config/worlds/lab.yaml) encloses the robot: every beam meets a
+        # wall except those through the 0.9 m doorway (< 35 degrees of the 270 seen).
+        self.assertGreater(len(hits), 0.8 * len(scan.ranges), "the laser does not see the room's walls")
         self.assertTrue(all(scan.range_min <= r <= scan.range_max for r in hits))
+
+    def test_world_markers_draw_the_room(self):
+        self.assertTrue(wait(lambda: self.world.msg is not None, 30), "no /world_markers")
+        kinds = [m.ns for m in self.world.msg.markers]
+        self.assertGreaterEqual(kinds.count("walls"), 9, "lab.yaml's outline has 9 wall segments")
+        self.assertGreaterEqual(kinds.count("polygons"), 2, "lab.yaml's table and cabinet")
+        self.assertTrue(all(m.header.frame_id == "map" for m in self.world.msg.markers[1:]))
 
     def test_map_to_base_link_is_the_true_pose(self):
         self.assertTrue(wait(lambda: self.truth.msg is not None, 30), "no /ground_truth")

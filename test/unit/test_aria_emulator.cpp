@@ -1,5 +1,5 @@
 // The emulator's firmware logic in-process (no I/O): handshake stages, OPEN/CLOSE, VEL2
-// decoding, the watchdog in both modes, sonar from disks, SIP tails per model.
+// decoding, the watchdog in both modes, sonar from disks, walls and polygons, SIP tails per model.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -133,7 +133,7 @@ TEST(AriaEmulator, SimulatorStartsWithMotorsOnAndAlwaysSends0x32) {
 
 TEST(AriaEmulator, SonarSeesADiskInFrontAndNothingBehind) {
   EmulatorOptions o;
-  o.obstacles.push_back({{1.0, 0.0}, 0.2});
+  o.world.obstacles.push_back({{1.0, 0.0}, 0.2});
   RobotEmulator robot(o);
   const auto ranges = robot.sonarRanges();
   ASSERT_EQ(ranges.size(), 8u);
@@ -141,6 +141,24 @@ TEST(AriaEmulator, SonarSeesADiskInFrontAndNothingBehind) {
   EXPECT_NEAR(ranges[2], std::hypot(1.0 - 0.15, 0.03) - 0.2, 1e-9);
   EXPECT_NEAR(ranges[3], ranges[2], 1e-9);
   EXPECT_DOUBLE_EQ(ranges[6], o.sonar_max_range);
+  EXPECT_DOUBLE_EQ(ranges[0], o.sonar_max_range);
+}
+
+TEST(AriaEmulator, SonarSeesAWallAndATable) {
+  EmulatorOptions o;
+  o.world.walls.push_back({{-3.0, 1.0}, {3.0, 1.0}});  // a wall 1 m to the left
+  RobotEmulator robot(o);
+  std::vector<double> ranges = robot.sonarRanges();
+  // Transducer 0 looks straight left (90 deg) from (0.076, 0.100): the wall is 0.9 m away.
+  EXPECT_NEAR(ranges[0], 1.0 - o.robot.sonars[0].y, 1e-9);
+  EXPECT_DOUBLE_EQ(ranges[5], o.sonar_max_range) << "the right side sees nothing";
+  // A table ahead instead: its near edge at x = 1.2. Transducer 2 (15 deg) sees it first
+  // along the edge of its cone nearest to the table's normal (15 deg - half cone).
+  o.world.walls.clear();
+  o.world.polygons.push_back({{{1.2, -0.5}, {2.0, -0.5}, {2.0, 0.5}, {1.2, 0.5}}});
+  ranges = RobotEmulator(o).sonarRanges();
+  const auto& front = o.robot.sonars[2];
+  EXPECT_NEAR(ranges[2], (1.2 - front.x) / std::cos(front.yaw - o.sonar_half_cone), 1e-9);
   EXPECT_DOUBLE_EQ(ranges[0], o.sonar_max_range);
 }
 
@@ -160,8 +178,8 @@ TEST(AriaEmulator, ConfigPacReportsTheLimitsAndSetaChangesThem) {
 
 TEST(AriaEmulator, InvalidOptionsAreRejectedByName) {
   EmulatorOptions o;
-  o.obstacles.push_back({{0.0, 0.0}, -1.0});
-  EXPECT_NE(o.validate().find("obstacles[0]"), std::string::npos);
+  o.world.obstacles.push_back({{0.0, 0.0}, -1.0});
+  EXPECT_NE(o.validate().find("world.obstacles[0].radius"), std::string::npos) << o.validate();
   EXPECT_THROW(RobotEmulator robot(o), std::invalid_argument);
 }
 
@@ -173,7 +191,7 @@ TEST(AriaEmulator, SonarScaleReadingsRoundTripAndAMismatchIsVisible) {
     EmulatorOptions o;
     o.simulator_mode = true;  // all eight transducers in every SIP
     o.robot.range_conv_factor = scale;
-    o.obstacles.push_back({{1.0, 0.0}, 0.2});
+    o.world.obstacles.push_back({{1.0, 0.0}, 0.2});
     RobotEmulator robot(o);
     openRobot(robot, 0.0);
     const auto sip = sipAt(robot, 0.0);

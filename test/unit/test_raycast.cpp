@@ -1,4 +1,4 @@
-// Ray casting for the simulated laser.
+// Ray casting for the simulated lasers: disks, walls and solid polygons, REP 117 values.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,7 +24,8 @@ TEST(Raycast, ScanFollowsRep117AndTheSensorPose) {
   g.angle_increment = M_PI / 2;
   g.range_min = 0.05;
   g.range_max = 5.0;
-  const std::vector<Disk> disks = {{{0.0, 3.0}, 0.5}, {{0.0, -10.0}, 0.5}};
+  World disks;
+  disks.obstacles = {{{0.0, 3.0}, 0.5}, {{0.0, -10.0}, 0.5}};
   // Sensor at the origin facing +x: the disk at +y is on the left beam.
   std::vector<float> r = raycastScan({0.0, 0.0, 0.0}, disks, g, 3);
   EXPECT_TRUE(std::isinf(r[0]) && r[0] > 0);  // beyond range_max: +inf
@@ -46,7 +47,7 @@ TEST(Raycast, RaycastScanTurnsBackIntoTheSameDisks) {
   g.range_min = 0.05;
   g.range_max = 8.0;
   const Disk pillar{{2.0, 0.0}, 0.1};
-  const std::vector<float> ranges = raycastScan({0.0, 0.0, 0.0}, {pillar}, g, 720);
+  const std::vector<float> ranges = raycastScan({0.0, 0.0, 0.0}, World{{pillar}}, g, 720);
   std::vector<Disk> disks;
   ASSERT_TRUE(scanToObstacles(g, ranges, Eigen::Affine2d::Identity(), ScanObstacleConfig(), &disks));
   ASSERT_FALSE(disks.empty());
@@ -58,6 +59,76 @@ TEST(Raycast, NearestOfOverlappingDisksWins) {
   g.angle_increment = 0.01;
   g.range_min = 0.05;
   g.range_max = 8.0;
-  const std::vector<float> r = raycastScan({0.0, 0.0, 0.0}, {{{4.0, 0.0}, 1.0}, {{2.0, 0.0}, 0.5}}, g, 1);
+  World overlapping;
+  overlapping.obstacles = {{{4.0, 0.0}, 1.0}, {{2.0, 0.0}, 0.5}};
+  const std::vector<float> r = raycastScan({0.0, 0.0, 0.0}, overlapping, g, 1);
   EXPECT_NEAR(r[0], 1.5f, 1e-6);
+}
+
+TEST(Raycast, RayMeetsASegmentAtItsAnalyticDistance) {
+  const Segment wall{{2.0, -1.0}, {2.0, 1.0}};
+  EXPECT_NEAR(raySegmentDistance({0.0, 0.0}, {1.0, 0.0}, wall), 2.0, 1e-12);
+  const Eigen::Vector2d diagonal = Eigen::Vector2d(1.0, 1.0).normalized();
+  EXPECT_NEAR(raySegmentDistance({0.0, 0.0}, diagonal, wall), 2.0 * std::sqrt(2.0), 1e-12);
+  EXPECT_LT(raySegmentDistance({0.0, 0.0}, {-1.0, 0.0}, wall), 0.0);               // behind
+  EXPECT_LT(raySegmentDistance({0.0, 0.0}, {0.0, 1.0}, wall), 0.0);                // parallel
+  EXPECT_LT(raySegmentDistance({0.0, 1.5}, {1.0, 0.0}, wall), 0.0);                // past its end
+  EXPECT_NEAR(raySegmentDistance({0.0, 1.0}, {1.0, 0.0}, wall), 2.0, 1e-12);       // its end point
+}
+
+TEST(Raycast, WallsInARoomFollowRep117) {
+  // A 4 m x 2 m room around the origin, a 0.5 m gap (doorway) in its east wall at y = 0.
+  World room;
+  room.walls = {{{-2.0, -1.0}, {2.0, -1.0}}, {{2.0, -1.0}, {2.0, -0.25}}, {{2.0, 0.25}, {2.0, 1.0}},
+                {{2.0, 1.0}, {-2.0, 1.0}}, {{-2.0, 1.0}, {-2.0, -1.0}}};
+  ScanGeometry g;  // 8 beams, 45 degrees apart, from straight back
+  g.angle_min = -M_PI;
+  g.angle_increment = M_PI / 4;
+  g.range_min = 0.05;
+  g.range_max = 8.0;
+  const std::vector<float> r = raycastScan({0.5, 0.0, 0.0}, room, g, 8);
+  EXPECT_NEAR(r[0], 2.5f, 1e-6);                                   // west wall, straight back
+  EXPECT_NEAR(r[1], static_cast<float>(std::sqrt(2.0)), 1e-6);     // south, 45 deg: 1 / sin 45
+  EXPECT_NEAR(r[2], 1.0f, 1e-6);                                   // south wall
+  EXPECT_NEAR(r[3], static_cast<float>(std::sqrt(2.0)), 1e-6);     // south-east: the south wall at x = 1.5
+  EXPECT_TRUE(std::isinf(r[4]) && r[4] > 0) << "through the doorway: nothing within range";
+  EXPECT_NEAR(r[6], 1.0f, 1e-6);                                   // north wall
+  // range_max short of the walls: +inf; a sensor on a wall: -inf.
+  g.range_max = 0.9;
+  EXPECT_TRUE(std::isinf(raycastScan({0.5, 0.0, 0.0}, room, g, 8)[2]));
+  g.range_max = 8.0;
+  const std::vector<float> touching = raycastScan({0.5, -0.99, 0.0}, room, g, 8);
+  EXPECT_TRUE(std::isinf(touching[2]) && touching[2] < 0) << touching[2];
+}
+
+TEST(Raycast, APolygonIsSolidFromOutsideAndInside) {
+  World table;
+  table.polygons = {{{{1.0, -0.5}, {2.0, -0.5}, {2.0, 0.5}, {1.0, 0.5}}}};
+  ScanGeometry g;  // 4 beams: back, right, ahead, left
+  g.angle_min = -M_PI;
+  g.angle_increment = M_PI / 2;
+  g.range_min = 0.05;
+  g.range_max = 8.0;
+  std::vector<float> r = raycastScan({0.0, 0.0, 0.0}, table, g, 4);
+  EXPECT_NEAR(r[2], 1.0f, 1e-6);  // its near edge, not its far one
+  EXPECT_TRUE(std::isinf(r[0]) && r[0] > 0);
+  // Seen from beyond, turned around: the far edge is now the near one.
+  r = raycastScan({3.0, 0.0, M_PI}, table, g, 4);
+  EXPECT_NEAR(r[2], 1.0f, 1e-6);
+  // A sensor inside the table sees it at range 0 on every beam: -inf.
+  r = raycastScan({1.5, 0.2, 0.3}, table, g, 4);
+  for (float range : r) EXPECT_TRUE(std::isinf(range) && range < 0) << range;
+}
+
+TEST(Raycast, NearestOfDisksAndWallsWins) {
+  World w;
+  w.obstacles = {{{3.0, 0.0}, 0.5}};
+  w.walls = {{{2.0, -1.0}, {2.0, 1.0}}};
+  ScanGeometry g;
+  g.angle_increment = 0.01;
+  g.range_min = 0.05;
+  g.range_max = 8.0;
+  EXPECT_NEAR(raycastScan({0.0, 0.0, 0.0}, w, g, 1)[0], 2.0f, 1e-6);
+  w.obstacles[0].center.x() = 1.0;  // the disk now in front of the wall
+  EXPECT_NEAR(raycastScan({0.0, 0.0, 0.0}, w, g, 1)[0], 0.5f, 1e-6);
 }

@@ -44,7 +44,7 @@ void drive(ros_layer::RecordedRun* run, double error, double rho) {
 
 TEST(RecordedRun, ScoresACleanRunLikeTheSimulator) {
   ros_layer::RecordedRunConfig config;
-  config.world = {disk(0.0, 3.0, 0.2)};
+  config.world.obstacles = {disk(0.0, 3.0, 0.2)};
   ros_layer::RecordedRun run(config);
   run.addTruth(99.0, core::Pose2{0, 0, 0});
   run.addState(state(-1.0, false, 5.0, 1.0));  // disabled: not scored
@@ -63,6 +63,25 @@ TEST(RecordedRun, ScoresACleanRunLikeTheSimulator) {
   EXPECT_FALSE(s.collided());
   ASSERT_EQ(run.rows().size(), 81u);
   EXPECT_NEAR(run.rows()[40][12], 0.1, 1e-9);  // v_d_x: the target's velocity by finite difference
+}
+
+TEST(RecordedRun, WallsAndPolygonsCountInTheTrueClearances) {
+  // The robot drives along y = 0 from x = 0 to 0.4: a wall along y = 0.5 leaves its body
+  // (R = 0.18) 0.32 m; a table whose corner the path enters is a collision.
+  ros_layer::RecordedRunConfig config;
+  config.world.walls = {{{-1.0, 0.5}, {2.0, 0.5}}};
+  {
+    ros_layer::RecordedRun run(config);
+    drive(&run, 0.05, 0.1);
+    EXPECT_NEAR(run.summary().min_clearance_world, 0.5 - config.robot_radius, 1e-9);
+    EXPECT_FALSE(run.summary().collided());
+  }
+  config.world.polygons = {{{{0.35, -0.1}, {1.0, -0.1}, {1.0, 0.1}, {0.35, 0.1}}}};
+  ros_layer::RecordedRun run(config);
+  drive(&run, 0.05, 0.1);
+  // At x = 0.4 the centre is 0.05 m deep inside the table: clearance -(0.05 + R).
+  EXPECT_NEAR(run.summary().min_clearance_world, -0.05 - config.robot_radius, 1e-9);
+  EXPECT_TRUE(run.summary().collided());
 }
 
 TEST(RecordedRun, CountsContactWithAVirtualObstacleFromTheGroundTruth) {
@@ -102,13 +121,16 @@ TEST(RecordedRun, ValidateNamesTheBadField) {
   c.v_max = 0.0;
   EXPECT_NE(c.validate().find("v_max"), std::string::npos);
   c = ros_layer::RecordedRunConfig{};
-  c.world = {disk(0, 0, -1)};
-  EXPECT_NE(c.validate().find("world obstacle 0"), std::string::npos);
+  c.world.obstacles = {disk(0, 0, -1)};
+  EXPECT_NE(c.validate().find("world: obstacles[0].radius"), std::string::npos) << c.validate();
+  c = ros_layer::RecordedRunConfig{};
+  c.world.walls = {{{1.0, 1.0}, {1.0, 1.0}}};
+  EXPECT_NE(c.validate().find("world: walls[0]: degenerate"), std::string::npos) << c.validate();
 }
 
 TEST(RecordedRun, JsonEscapesTheRunNameAndKeepsTheSharedKeys) {
   ros_layer::RecordedRunConfig config;
-  config.world = {disk(0.0, 3.0, 0.2)};
+  config.world.obstacles = {disk(0.0, 3.0, 0.2)};
   ros_layer::RecordedRun run(config);
   drive(&run, 0.05, 0.5);
   const std::string name = "demo \"quoted\" C:\\runs\\1";
@@ -120,4 +142,8 @@ TEST(RecordedRun, JsonEscapesTheRunNameAndKeepsTheSharedKeys) {
   EXPECT_EQ(j["steps"], run.summary().metrics.steps);
   EXPECT_TRUE(j["min_clearance_virtual"].is_null()) << "no virtual obstacle: an infinite clearance is null";
   EXPECT_DOUBLE_EQ(j["scenario"]["obstacles"][0]["center"][1].get<double>(), 3.0);
+  EXPECT_TRUE(j["scenario"]["walls"].empty());
+  config.world.walls = {{{0.0, -1.0}, {4.0, -1.0}}};
+  const nlohmann::json room = nlohmann::json::parse(ros_layer::recordedRunJson(run.summary(), config, {}, name));
+  EXPECT_DOUBLE_EQ(room["scenario"]["walls"][0][1][0].get<double>(), 4.0) << "the plots draw the walls";
 }

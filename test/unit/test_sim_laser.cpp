@@ -1,4 +1,4 @@
-// sim_laser: the scan of a known world from a known pose, REP 117 values, noise bounds,
+// sim_laser: the scan of a known world (disks, walls, polygons) from a known pose, REP 117 values, noise bounds,
 // and configuration errors naming the field.
 #include <cmath>
 #include <random>
@@ -33,7 +33,7 @@ TEST(SimLaser, SeesDiskAheadAtItsSurfaceAndNothingBehind) {
   disk.center = {2.0, 1.0};
   disk.radius = 0.25;
   core::Pose2 laser{1.0, 1.0, 0.0};
-  const auto scan = ros_layer::simulateScan(laser, {disk}, config(), nullptr);
+  const auto scan = ros_layer::simulateScan(laser, world::World{{disk}}, config(), nullptr);
   ASSERT_EQ(scan.ranges.size(), 361u);
   EXPECT_NEAR(scan.ranges[beamAt(scan, 0.0)], 0.75, 1e-4);
   EXPECT_TRUE(std::isinf(scan.ranges[beamAt(scan, M_PI / 2)]) && scan.ranges[beamAt(scan, M_PI / 2)] > 0);
@@ -42,12 +42,23 @@ TEST(SimLaser, SeesDiskAheadAtItsSurfaceAndNothingBehind) {
   EXPECT_NEAR(scan.angle_min + 360 * scan.angle_increment, scan.angle_max, 1e-5);
 }
 
+TEST(SimLaser, SeesAWallAndATableAtTheirSurfaces) {
+  world::World room;
+  room.walls = {{{-5.0, 2.0}, {5.0, 2.0}}};                                   // 2 m to the left
+  room.polygons = {{{{1.0, -0.5}, {1.5, -0.5}, {1.5, 0.5}, {1.0, 0.5}}}};     // 1 m ahead
+  const auto scan = ros_layer::simulateScan({0.0, 0.0, 0.0}, room, config(), nullptr);
+  EXPECT_NEAR(scan.ranges[beamAt(scan, M_PI / 2)], 2.0, 1e-4);
+  EXPECT_NEAR(scan.ranges[beamAt(scan, M_PI / 4)], 2.0 * std::sqrt(2.0), 1e-4);
+  EXPECT_NEAR(scan.ranges[beamAt(scan, 0.0)], 1.0, 1e-4);
+  EXPECT_TRUE(std::isinf(scan.ranges[beamAt(scan, -M_PI / 2)]));
+}
+
 TEST(SimLaser, BeamsAreInTheLaserFrame) {
   core::Disk disk;
   disk.center = {0.0, 2.0};
   disk.radius = 0.5;
   core::Pose2 laser{0.0, 0.0, M_PI / 2};  // facing the disk: it is straight ahead
-  const auto scan = ros_layer::simulateScan(laser, {disk}, config(), nullptr);
+  const auto scan = ros_layer::simulateScan(laser, world::World{{disk}}, config(), nullptr);
   EXPECT_NEAR(scan.ranges[beamAt(scan, 0.0)], 1.5, 1e-4);
   EXPECT_TRUE(std::isinf(scan.ranges[beamAt(scan, M_PI / 2)]));
 }
@@ -63,7 +74,7 @@ TEST(SimLaser, NoiseStaysInsideTheRangeLimitsAndLeavesInfAlone) {
   double sum = 0.0;
   int n = 0;
   for (int i = 0; i < 200; ++i) {
-    const auto scan = ros_layer::simulateScan({0, 0, 0}, {disk}, c, &rng);
+    const auto scan = ros_layer::simulateScan({0, 0, 0}, world::World{{disk}}, c, &rng);
     const float r = scan.ranges[beamAt(scan, 0.0)];
     ASSERT_GE(r, static_cast<float>(c.range_min));
     ASSERT_LE(r, static_cast<float>(c.range_max));

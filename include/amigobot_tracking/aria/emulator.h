@@ -1,6 +1,6 @@
 // The robot side of the protocol as an AmigoBot's firmware does it, without I/O: a
 // kinematic stub (unicycle with wheel-speed and acceleration limits), the firmware's own
-// odometry in its units and wrap, sonar from disk obstacles, the 2 s watchdog. With
+// odometry in its units and wrap, sonar from the world (disks, walls, polygons), the 2 s watchdog. With
 // `simulator_mode` it reproduces a MobileSim-like ARIA simulator instead.
 #pragma once
 
@@ -16,6 +16,7 @@
 #include "amigobot_tracking/aria/sip.h"
 #include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -25,7 +26,8 @@ struct EmulatorOptions {
   std::string name = "amigo-emulator";   // SYNC2 name
   bool simulator_mode = false;  // motors start enabled, SIPs always 0x32, watchdog only warns,
                                 // SYNC0 while open = PULSE, a client disconnect closes the robot
-  std::vector<core::Disk> obstacles;     // world (world/world.h), for sonar ranges
+  world::World world;   // the room (world/world.h) the sonar sees; its initial_pose is unused
+                        // (initial_pose below)
   core::Pose2 initial_pose;              // [m, m, rad] ground truth at start
   double odometry_noise = 0.0;  // [-] relative std-dev of the wheel speeds the firmware integrates
   std::uint32_t seed = 1;

@@ -14,12 +14,13 @@
 #include "amigobot_tracking/core/types.h"
 #include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/sim/simulator.h"
+#include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
 struct RecordedRunConfig {
-  std::vector<core::Disk> world;  // physical obstacles (the emulator's world file)
+  world::World world;             // physical obstacles (the emulator's world file)
   double robot_radius = 0.18;     // [m] R
   double offset = 0.3;            // [m] r, offset of the controlled point p_r
   double rho_inf = 0.1;           // [m] for the plots' metadata
@@ -38,7 +39,7 @@ struct RecordedRunSummary {
   std::uint64_t commands = 0;         // cmd_vel messages
   std::uint64_t command_violations = 0;  // cmd_vel outside the diamond
   double max_command_norm = 0.0;      // max |v|/v_max + |w|/w_max over cmd_vel
-  double min_clearance_world = std::numeric_limits<double>::infinity();    // [m] true body to physical disks
+  double min_clearance_world = std::numeric_limits<double>::infinity();    // [m] true body to the world (disks, walls, polygons)
   double min_clearance_virtual = std::numeric_limits<double>::infinity();  // [m] true body to virtual disks
   std::uint64_t virtual_obstacles = 0;  // most virtual obstacles present at once
   double within_rho_fraction = 0.0;   // share of enabled steps with |e| < rho
@@ -54,7 +55,7 @@ class RecordedRun {
 
   void addTruth(double t, const core::Pose2& pose);     // [s] stamp, true pose of base_link in map
   void addVirtualObstacles(std::vector<core::Disk> disks);
-  // Every obstacle seen: the world and each virtual obstacle ever present (for the plots).
+  // Every disk seen: the world's and each virtual obstacle ever present (for the plots).
   std::vector<core::Disk> allObstacles() const;
   void addCommand(double v, double w);                  // every cmd_vel
   void addState(const TrackingState& state);            // one control step

@@ -1,5 +1,5 @@
-// Simulated planar laser for the emulated robot: ray casts the emulator's world (disks of a
-// world YAML, aria/emulator.h) from the laser frame's pose in the global frame into a
+// Simulated planar laser for the emulated robot: ray casts the emulator's world (disks, walls
+// and polygons of a world YAML, world/world.h) from the laser frame's pose in the global frame into a
 // sensor_msgs/LaserScan (REP 117: +inf no return, -inf closer than range_min).
 #pragma once
 
@@ -12,12 +12,13 @@
 
 #include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
 struct SimLaserConfig {
-  std::string world_file;          // world YAML (obstacles: [{center, radius}]); required
+  std::string world_file;          // world YAML (world/world.h: obstacles, walls, polygons); required
   std::string global_frame = "map";
   std::string laser_frame = "laser";
   int beams = 360;                 // [-] beams per scan, >= 2
@@ -38,9 +39,9 @@ const core::FieldTable<SimLaserConfig>& simLaserFields();
 // Reads the private parameters (param_reader.h). "" or "~key: reason".
 std::string loadSimLaserConfig(const ros::NodeHandle& pnh, SimLaserConfig* config);
 
-// One scan of `disks` seen from `laser` (pose of the laser frame in the global frame).
+// One scan of `world` seen from `laser` (pose of the laser frame in the global frame).
 // Noise is added to finite ranges only and clamped into [range_min, range_max].
-sensor_msgs::LaserScan simulateScan(const core::Pose2& laser, const std::vector<core::Disk>& disks,
+sensor_msgs::LaserScan simulateScan(const core::Pose2& laser, const world::World& world,
                                     const SimLaserConfig& config, std::mt19937* rng);
 
 }  // namespace ros_layer

@@ -1,4 +1,4 @@
-// What the emulated laser sees: a ray-cast scan of the world's disks from the laser's mount
+// What the emulated laser sees: a ray-cast scan of the world (disks, walls, polygons) from the laser's mount
 // pose on the robot, with optional Gaussian range noise and dropouts.
 #pragma once
 
@@ -9,6 +9,7 @@
 #include "amigobot_tracking/core/types.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 #include "amigobot_tracking/sensors/laser_session.h"
+#include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -25,7 +26,7 @@ struct ScanSourceOptions {
 
 class ScanSource {
  public:
-  ScanSource(LaserModel model, std::vector<core::Disk> obstacles, ScanSourceOptions options);
+  ScanSource(LaserModel model, world::World world, ScanSourceOptions options);
   // The scan of the robot at `base` (base_link in the world) at emulator time t.
   EmulatedScan cast(const core::Pose2& base, double t);
   // The sensor pose in the world for a robot at `base`.
@@ -33,7 +34,7 @@ class ScanSource {
 
  private:
   LaserModel model_;
-  std::vector<core::Disk> obstacles_;
+  world::World world_;
   ScanSourceOptions options_;
   std::mt19937 random_;
   std::uint64_t index_ = 0;

@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   try {
-    config.world = world::loadWorld(world_path).obstacles;
+    config.world = world::loadWorld(world_path);
     const std::string error = config.validate();
     if (!error.empty()) throw std::invalid_argument("run_report: " + error);
 

@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
     ROS_FATAL_STREAM("sim_laser: " << e.what());
     return 1;
   }
-  ROS_INFO_STREAM("sim_laser: " << room.obstacles.size() << " obstacles from " << config.world_file << ", "
+  ROS_INFO_STREAM("sim_laser: " << room.obstacles.size() << " disks, " << room.walls.size() << " wall segments, "
+                                << room.polygons.size() << " polygons from " << config.world_file << ", "
                                 << config.beams << " beams in '" << config.laser_frame << "' at " << config.rate
                                 << " Hz");
 
@@ -54,7 +55,7 @@ int main(int argc, char** argv) {
     }
     if (pose.header.stamp == last_stamp) continue;  // no new pose: no new scan (tf stalled)
     last_stamp = pose.header.stamp;
-    sensor_msgs::LaserScan scan = ros_layer::simulateScan(ros_layer::toPose2(pose.transform), room.obstacles, config, &rng);
+    sensor_msgs::LaserScan scan = ros_layer::simulateScan(ros_layer::toPose2(pose.transform), room, config, &rng);
     scan.header.stamp = pose.header.stamp;
     pub.publish(scan);
   }

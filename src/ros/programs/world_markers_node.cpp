@@ -1,0 +1,38 @@
+// world_markers: publishes the world file (disks, walls, polygons) once, latched, as
+// visualization_msgs/MarkerArray on `world_markers`, for rviz.
+// Parameters (private): include/amigobot_tracking/ros/world_markers.h (WorldMarkersConfig).
+#include <ros/ros.h>
+
+#include "amigobot_tracking/ros/node_command_line.h"
+#include "amigobot_tracking/ros/param_reader.h"
+#include "amigobot_tracking/ros/world_markers.h"
+
+using namespace amigobot_tracking;
+
+const ros_layer::NodeHelp kHelp{
+    "Publishes the world file (disks, walls, polygons) latched as visualization_msgs/MarkerArray on "
+    "`world_markers`, for rviz.",
+    "include/amigobot_tracking/ros/world_markers.h (WorldMarkersConfig)."};
+
+int main(int argc, char** argv) {
+  ros_layer::initNode(argc, argv, "world_markers", kHelp);
+  ros::NodeHandle nh, pnh("~");
+  ros_layer::WorldMarkersConfig config;
+  if (!ros_layer::configLoaded("world_markers", ros_layer::readParams(pnh, ros_layer::worldMarkersFields(), &config))) {
+    return 1;
+  }
+  world::World room;
+  try {
+    room = world::loadWorld(config.world_file);
+  } catch (const std::exception& e) {
+    ROS_FATAL_STREAM("world_markers: " << e.what());
+    return 1;
+  }
+  ros::Publisher pub = nh.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
+  pub.publish(ros_layer::worldMarkers(room, config));
+  ROS_INFO_STREAM("world_markers: " << room.obstacles.size() << " disks, " << room.walls.size() << " wall segments, "
+                                    << room.polygons.size() << " polygons from " << config.world_file << " in '"
+                                    << config.frame_id << "'");
+  ros::spin();
+  return 0;
+}
