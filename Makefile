@@ -53,7 +53,7 @@ test: build ## build and run every test, ending with `N passed, N failed` (~10 m
 demo: build ## the whole stack on the emulated robot, headless, scored report in report/demo
 	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
-bench: build ## benchmarks: core, simulator speed, scan obstacles, world ray casting, laser chain, tracking cycle, ARIA
+bench: build ## benchmarks: core, simulator speed, scan obstacles, world ray casting, laser chain, tracking cycle, ARIA, localisation
 	$(CATKIN) bench_core
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_core --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(ROOT)/config/scenarios/paper_5_2_rose.yaml --benchmark 50
@@ -71,6 +71,8 @@ bench: build ## benchmarks: core, simulator speed, scan obstacles, world ray cas
 	$(SETUP) && $(ROOT)/scripts/test/with_private_roscore.sh $(WS)/devel/lib/amigobot_tracking/bench_tracking_cycle --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(CATKIN) bench_aria
 	$(WS)/devel/lib/amigobot_tracking/bench_aria
+	$(CATKIN) bench_localization
+	$(WS)/devel/lib/amigobot_tracking/bench_localization --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
 # Offline simulator: make sim SCENARIO=config/scenarios/paper_5_1.yaml OUT=out/paper_5_1 [ARGS="--variant fixed_rho"]
 SCENARIO ?= config/scenarios/paper_5_2_rose.yaml

@@ -20,7 +20,8 @@ ALLOWED = {
     "world": {"std", "eigen", "core", "yaml"},
     "aria": {"std", "posix", "eigen", "core", "world", "mrpt", "yaml"},
     "sensors": {"std", "posix", "eigen", "core", "world", "mrpt"},
-    "tools": {"std", "posix", "eigen", "core", "sim", "aria", "sensors", "world", "mrpt", "yaml", "json", "cli11"},
+    "localization": {"std", "eigen", "core", "world", "mrpt", "yaml"},
+    "tools": {"std", "posix", "eigen", "core", "sim", "aria", "sensors", "localization", "world", "mrpt", "yaml", "json", "cli11"},
     "ros": None,  # anything
 }
 LIBRARIES = {"Eigen": "eigen", "yaml-cpp": "yaml", "nlohmann": "json", "mrpt": "mrpt", "CLI": "cli11"}

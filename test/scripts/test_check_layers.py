@@ -63,6 +63,15 @@ class CheckLayers(unittest.TestCase):
         self.write("src/world/world.cpp", '#include "world.h"\n')
         self.assertIn('"world.h" (other)', self.only_violation())
 
+    def test_localization_may_use_mrpt_yaml_and_world_but_not_ros_nor_sensors(self):
+        self.write("src/localization/localizer.cpp",
+                   '#include <mrpt/slam/CICP.h>\n#include <yaml-cpp/yaml.h>\n#include "amigobot_tracking/world/world.h"\n'
+                   '#include "amigobot_tracking/sensors/laser_driver.h"\n#include <tf2_ros/buffer.h>\n')
+        messages, _, _ = check_layers.violations(self.root)
+        self.assertEqual([m.split(" (")[0] for m in messages],
+                         ['src/localization/localizer.cpp:4: "amigobot_tracking/sensors/laser_driver.h"',
+                          "src/localization/localizer.cpp:5: <tf2_ros/buffer.h>"])
+
     def test_tools_may_not_include_ros(self):
         self.write("src/tools/tool.cpp", '#include <CLI/CLI.hpp>\n#include "amigobot_tracking/ros/conversions.h"\n')
         self.assertIn("src/tools/tool.cpp:2:", self.only_violation())

@@ -1,0 +1,25 @@
+# Layer 2, localization: mapping (ICP-SLAM) and localisation on a known map (ICP, global
+# relocalisation) over MRPT, and map_server's map files. Core + world + MRPT + yaml-cpp; no ROS.
+amigobot_add_library(amigobot_tracking_localization
+  src/localization/localization_config.cpp
+  src/localization/occupancy_map.cpp
+  src/localization/range_scan.cpp
+  src/localization/distance_field.cpp
+  src/localization/localizer.cpp
+  src/localization/mapper.cpp
+)
+target_include_directories(amigobot_tracking_localization PUBLIC include)
+target_link_libraries(amigobot_tracking_localization PUBLIC amigobot_tracking_core amigobot_tracking_world mrpt::slam mrpt::maps yaml-cpp)
+
+if(CATKIN_ENABLE_TESTING)
+  foreach(unit map_file localizer mapper)
+    amigobot_add_unit_test(test_localization_${unit} test/unit/test_localization_${unit}.cpp)
+    target_link_libraries(test_localization_${unit} amigobot_tracking_localization)
+  endforeach()
+endif()
+
+# `make bench`: localisation update per scan (360 and 720 beams), mapping update per scan.
+amigobot_add_benchmark(bench_localization test/bench/bench_localization.cpp amigobot_tracking_localization)
+if(TARGET bench_localization)
+  target_include_directories(bench_localization PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
+endif()

@@ -1,0 +1,80 @@
+#include "amigobot_tracking/localization/localization_config.h"
+
+#include <cmath>
+
+namespace amigobot_tracking {
+namespace localization {
+
+const core::FieldTable<LocalizationConfig>& localizationFields() {
+  using C = LocalizationConfig;
+  using core::field;
+  static const core::FieldTable<C> table = [] {
+    core::FieldTable<C> t;
+    t.push_back(field("mode", &C::mode, "-", "mapping (ICP-SLAM) or localization (on map_file)",
+                      core::oneOf({"mapping", "localization"})));
+    t.push_back(field("map_file", &C::map_file, "-", "map YAML (map_server format) to load; mapping: ~save_map's default"));
+    core::include(&t, "initial_pose/", &C::initial_pose,
+                  core::FieldTable<core::Pose2>{
+                      field("x", &core::Pose2::x, "m", "initial map -> base x", core::anyValue()),
+                      field("y", &core::Pose2::y, "m", "initial map -> base y", core::anyValue()),
+                      field("yaw", &core::Pose2::theta, "rad", "initial map -> base heading", core::anyValue()),
+                  });
+    t.push_back(field("global_frame", &C::global_frame, "-", "map frame (parent of odom_frame)"));
+    t.push_back(field("odom_frame", &C::odom_frame, "-", "odometry frame"));
+    t.push_back(field("base_frame", &C::base_frame, "-", "robot base frame"));
+    t.push_back(field("transform_tolerance", &C::transform_tolerance, "s", "map -> odom stamped this far ahead",
+                      core::interval(0.0, false, 2.0, false)));
+    t.push_back(field("tf_rate", &C::tf_rate, "Hz", "map -> odom republish rate (>= 20)", core::interval(20.0, false, 1000.0, false)));
+    t.push_back(field("map_publish_period", &C::map_publish_period, "s", "mapping: the map republished this often",
+                      core::interval(0.1, false, 3600.0, false)));
+    t.push_back(field("resolution", &C::resolution, "m", "mapping: cell size of the built grid", core::interval(0.01, false, 1.0, false)));
+    t.push_back(field("min_travel", &C::min_travel, "m", "travel between scan matches", core::nonNegative()));
+    t.push_back(field("min_rotation", &C::min_rotation, "rad", "rotation between scan matches", core::interval(0.0, false, M_PI, false)));
+    t.push_back(field("match_distance", &C::match_distance, "m", "a beam this close to an occupied cell matches the map",
+                      core::interval(0.0, true, 1.0, false)));
+    t.push_back(field("min_match", &C::min_match, "-", "matching fraction below which the pose is lost", core::interval(0.0, false, 1.0, false)));
+    t.push_back(field("range_max", &C::range_max, "m", "farther echoes are ignored", core::positive()));
+    core::include(&t, "icp/", &C::icp,
+                  core::FieldTable<IcpConfig>{
+                      field("max_iterations", &IcpConfig::max_iterations, "-", "ICP iterations per alignment",
+                            core::interval(1, false, 1000, false)),
+                      field("max_correspondence", &IcpConfig::max_correspondence, "m", "first ICP pairing distance", core::positive()),
+                      field("min_correspondence", &IcpConfig::min_correspondence, "m", "final ICP pairing distance", core::positive()),
+                      field("max_points", &IcpConfig::max_points, "-", "scan points used per match (decimated)",
+                            core::interval(10, false, 100000, false)),
+                  });
+    core::include(&t, "global/", &C::global,
+                  core::FieldTable<GlobalConfig>{
+                      field("xy_step", &GlobalConfig::xy_step, "m", "relocalisation: candidate position spacing",
+                            core::interval(0.01, false, 5.0, false)),
+                      field("yaw_step", &GlobalConfig::yaw_step, "rad", "relocalisation: candidate heading spacing",
+                            core::interval(0.005, false, 1.0, false)),
+                      field("clearance", &GlobalConfig::clearance, "m", "relocalisation: candidates this far from walls", core::nonNegative()),
+                      field("candidates", &GlobalConfig::candidates, "-", "relocalisation: best candidates refined by ICP",
+                            core::interval(1, false, 1000, false)),
+                      field("min_match", &GlobalConfig::min_match, "-", "relocalisation: matching fraction to accept",
+                            core::interval(0.0, false, 1.0, false)),
+                  });
+    return t;
+  }();
+  return table;
+}
+
+std::string LocalizationConfig::validate() const {
+  const std::string bounds = core::checkFields(localizationFields(), *this);
+  if (!bounds.empty()) return bounds;
+  if (mode == "localization" && map_file.empty()) return "map_file: required in localization mode";
+  if (!initial_pose.isFinite()) return "initial_pose: must be finite";
+  if (global_frame.empty()) return "global_frame: must not be empty";
+  if (odom_frame.empty()) return "odom_frame: must not be empty";
+  if (base_frame.empty()) return "base_frame: must not be empty";
+  if (global_frame == odom_frame) return "odom_frame: must differ from global_frame '" + global_frame + "'";
+  if (odom_frame == base_frame) return "base_frame: must differ from odom_frame '" + odom_frame + "'";
+  if (icp.min_correspondence > icp.max_correspondence)
+    return "icp/min_correspondence: must be <= icp/max_correspondence (" + std::to_string(icp.max_correspondence) + ")";
+  if (1.0 / tf_rate > map_publish_period) return "map_publish_period: must be at least one tf period";
+  return "";
+}
+
+}  // namespace localization
+}  // namespace amigobot_tracking
