@@ -17,7 +17,7 @@ CATKIN := catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUIL
 SETUP := source $(WS)/devel/setup.bash
 RESULTS := $(WS)/build/test_results
 
-PHONY := deps deps-robot build test demo bench fuzz clean sim reproduce help
+PHONY := deps deps-robot build test demo map bench fuzz clean sim reproduce help
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
@@ -52,6 +52,13 @@ test: build ## build and run every test, ending with `N passed, N failed` (~10 m
 # diamond, or a run that did not happen). DEMO_ARGS="--paper-law": the paper's law alone.
 demo: build ## the whole stack on the emulated robot, headless, scored report in report/demo
 	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
+
+# A world's map built by ICP-SLAM on the emulated robot (scripts/reports/make_map.py): the
+# stack follows the tour config/maps/WORLD_tour.yaml while the Localization nodelet maps;
+# writes config/maps/WORLD.yaml + .pgm (the shipped lab map is made by `make map`).
+WORLD ?= lab
+map: build ## build a world's map by ICP-SLAM on the emulated robot: config/maps/WORLD.yaml + .pgm (WORLD=lab)
+	$(ROOT)/scripts/reports/make_map.py --ws $(WS) --world $(ROOT)/config/worlds/$(WORLD).yaml
 
 bench: build ## benchmarks: core, simulator speed, scan obstacles, world ray casting, laser chain, tracking cycle, ARIA, localisation
 	$(CATKIN) bench_core

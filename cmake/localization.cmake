@@ -23,3 +23,7 @@ amigobot_add_benchmark(bench_localization test/bench/bench_localization.cpp amig
 if(TARGET bench_localization)
   target_include_directories(bench_localization PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
 endif()
+
+# world_map: a world file drawn into a map_server map (the e2e tests' surveyed maps).
+amigobot_add_tool(world_map src/tools/world_map.cpp)
+target_link_libraries(world_map amigobot_tracking_localization)

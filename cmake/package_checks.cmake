@@ -29,7 +29,17 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(launch_sim_hokuyo ${check_launch}/sim.launch laser:=hokuyo_urg)
   amigobot_add_check(launch_sim_tim ${check_launch}/sim.launch laser:=sick_tim5xx laser_port:=10941)
   amigobot_add_check(launch_sim_pty_rviz ${check_launch}/sim.launch pty:=/tmp/amigobot controller:=sim rviz:=true tracking_params:=${PROJECT_SOURCE_DIR}/config/demo_tracking.yaml)
+  amigobot_add_check(launch_sim_slam ${check_launch}/sim.launch localization:=slam map_file:=/tmp/new_map.yaml)
+  amigobot_add_check(launch_sim_ground_truth ${check_launch}/sim.launch localization:=ground_truth laser:=sim)
   amigobot_add_check(launch_two_robots ${check_launch}/two_robots.launch)
+  # Maps: the e2e room's map is world_map's drawing of its world (never stale); the shipped
+  # lab map, built by SLAM (`make map`), agrees with the lab world (>= 90 % of its occupied
+  # cells within 0.1 m of a wall, table or pole).
+  amigobot_add_check(e2e_room_map_fresh ${PROJECT_SOURCE_DIR}/scripts/test/check_world_map.sh
+                     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/world_map
+                     ${PROJECT_SOURCE_DIR}/test/e2e/worlds/room.yaml ${PROJECT_SOURCE_DIR}/test/e2e/worlds/room_map.yaml)
+  amigobot_add_check(lab_map_matches_world ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/world_map
+                     --world ${PROJECT_SOURCE_DIR}/config/worlds/lab.yaml --compare ${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
   amigobot_add_check(launch_rviz ${check_launch}/rviz.launch ns:=tracker)
   add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization
               trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)

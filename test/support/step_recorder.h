@@ -2,6 +2,8 @@
 // end-to-end tests (test_e2e.cpp, test_avoidance.cpp).
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <mutex>
 #include <string>
 #include <utility>
@@ -26,6 +28,9 @@ struct Step {
   bool widened = false;
   EmulatorStatus truth;  // the robot's true state at that step
   Eigen::Vector2d p_d = Eigen::Vector2d::Zero();  // [m] the target's position (tf) at that step
+  // [m] |believed - true| position of base_link: tf map -> base_link (the localisation the
+  // stack runs on, newest) against the ground truth; NaN when tf has no such pose yet.
+  double loc_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Records every valid control step of /tracking/state with the true error at that moment.
@@ -61,6 +66,12 @@ class StepRecorder {
       return count(&no_target_);
     }
     const Eigen::Vector2d p_d(target.transform.translation.x, target.transform.translation.y);
+    double loc_error = std::numeric_limits<double>::quiet_NaN();
+    try {
+      const auto believed = tf_.lookupTransform("map", "base_link", ros::Time(0));
+      loc_error = std::hypot(believed.transform.translation.x - s.pose.x, believed.transform.translation.y - s.pose.y);
+    } catch (const tf2::TransformException&) {
+    }
     std::lock_guard<std::mutex> lock(mutex_);
     if (steps_.empty()) t0_ = state->header.stamp.toSec();
     Step step;
@@ -71,6 +82,7 @@ class StepRecorder {
     step.widened = state->envelope_widened;
     step.truth = s;
     step.p_d = p_d;
+    step.loc_error = loc_error;
     steps_.push_back(step);
   }
 
