@@ -31,6 +31,7 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(launch_sim_pty_rviz ${check_launch}/sim.launch pty:=/tmp/amigobot controller:=sim rviz:=true tracking_params:=${PROJECT_SOURCE_DIR}/config/demo_tracking.yaml)
   amigobot_add_check(launch_two_robots ${check_launch}/two_robots.launch)
   amigobot_add_check(launch_rviz ${check_launch}/rviz.launch ns:=tracker)
+  amigobot_add_check(launch_localization ${check_launch}/include/localization.launch map_file:=/tmp/map.yaml)
   add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization
               trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
 
