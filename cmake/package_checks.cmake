@@ -43,6 +43,7 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(lab_map_matches_world ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/world_map
                      --world ${PROJECT_SOURCE_DIR}/config/worlds/lab.yaml --compare ${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
   amigobot_add_check(launch_rviz ${check_launch}/rviz.launch ns:=tracker)
+  amigobot_add_check(launch_localization ${check_launch}/include/localization.launch map_file:=/tmp/map.yaml)
   add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization
               trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
 

@@ -15,6 +15,7 @@
 #include "amigobot_tracking/core/controller_config.h"
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/localization/localization_config.h"
 #include "amigobot_tracking/ros/driver.h"
 #include "amigobot_tracking/ros/laser_scan.h"
 #include "amigobot_tracking/ros/tracking_params.h"
@@ -54,6 +55,13 @@ std::map<std::string, Row> laserRows() {
   return rows;
 }
 
+std::map<std::string, Row> localizationRows() {
+  std::map<std::string, Row> rows;
+  add(&rows, "", localization::localizationFields());
+  return rows;
+}
+
+const char kLocalizationHeader[] = "| Localization parameter |";
 const char kTrackingHeader[] = "| Parameter | Type | Unit | Default | Meaning |";
 const char kDriverHeader[] = "| Parameter | Type | Default | Meaning |";
 
@@ -153,6 +161,21 @@ TEST(ParamCoverage, EveryLaserFieldIsInItsYamlAndTheReadme) {
     EXPECT_TRUE(readme.count(key)) << key << " is in no README parameter table";
   }
   for (const auto& [key, comment] : keys) EXPECT_TRUE(laserRows().count(key)) << "config/laser.yaml: " << key;
+}
+
+TEST(ParamCoverage, EveryLocalizationFieldIsInItsYamlAndTheReadme) {
+  const std::map<std::string, std::string> keys = yamlKeys("config/localization.yaml");
+  const std::set<std::string> readme = readmeNames(kLocalizationHeader);
+  const std::map<std::string, Row> fields = localizationRows();
+  for (const auto& [key, row] : fields) {
+    const auto it = keys.find(key);
+    ASSERT_NE(it, keys.end()) << key << " is not in config/localization.yaml";
+    EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
+    EXPECT_TRUE(readme.count(key)) << key << " is in no row of the README's Localization parameter table";
+  }
+  for (const auto& [key, comment] : keys)
+    EXPECT_TRUE(fields.count(key) || key == "initial_pose" || key == "icp" || key == "global") << "config/localization.yaml: " << key;
+  for (const std::string& name : readme) EXPECT_TRUE(fields.count(name)) << "README localization row `" << name << "` names no field";
 }
 
 TEST(ParamCoverage, EveryFieldIsInTheReadmeAndEveryRowNamesOne) {

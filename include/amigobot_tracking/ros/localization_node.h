@@ -1,0 +1,111 @@
+// ROS wiring of the localisation layer (nodelet amigobot_tracking/Localization, node
+// localization_node): scans through a tf2 MessageFilter (odom -> laser at the scan's stamp),
+// odometry from tf odom -> base; each scan is handed to a worker thread that runs the
+// Localizer (mode localization, on map_file) or the Mapper (mode mapping, ICP-SLAM). A tf
+// thread publishes map -> odom at tf_rate, stamped transform_tolerance ahead (as amcl does),
+// so lookups at "now" succeed between scans. Publishes `map` (latched OccupancyGrid; mapping:
+// every map_publish_period), ~pose and /diagnostics; takes /initialpose; serves ~save_map
+// and ~global_localization.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <message_filters/subscriber.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/message_filter.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "amigobot_tracking/localization/localizer.h"
+#include "amigobot_tracking/localization/mapper.h"
+#include "amigobot_tracking/ros/rate_monitor.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+// Reads the private parameters; throws std::runtime_error naming the bad one.
+localization::LocalizationConfig loadLocalizationConfig(const ros::NodeHandle& pnh);
+
+class LocalizationNode {
+ public:
+  // Throws std::runtime_error naming a bad parameter or map file; then nothing is started.
+  LocalizationNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+  ~LocalizationNode();
+  LocalizationNode(const LocalizationNode&) = delete;
+  LocalizationNode& operator=(const LocalizationNode&) = delete;
+
+ private:
+  struct Work {  // one scan for the worker
+    localization::RangeScan scan;
+    core::Pose2 odom_base;
+    ros::Time stamp;
+  };
+  struct Estimate {  // of either engine
+    core::Pose2 map_to_odom, pose;
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
+    double match = 0.0, icp_goodness = 0.0;
+    bool lost = false;
+  };
+  struct Output {  // what the publishers and diagnostics read
+    bool ready = false;  // a map -> odom exists (after the first scan)
+    Estimate estimate;
+    std::uint64_t scans = 0, matches = 0, dropped = 0, relocalisations = 0;
+    std::string last_error;
+  };
+
+  void onScan(const sensor_msgs::LaserScan::ConstPtr& msg);
+  void onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg);
+  bool onSaveMap(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  bool onGlobalLocalization(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  void workLoop();
+  void tfLoop();
+  void process(const Work& work);
+  void publishTransform(const core::Pose2& map_to_odom);
+  void publishPose(const ros::Time& stamp);
+  void publishMap(const localization::OccupancyMap& map);
+  bool lookup(const std::string& parent, const std::string& child, const ros::Time& stamp, core::Pose2* out);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  localization::LocalizationConfig config_;
+  ros::NodeHandle nh_, pnh_;
+  tf2_ros::Buffer buffer_;
+  tf2_ros::TransformListener listener_;
+  tf2_ros::TransformBroadcaster broadcaster_;
+  message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
+  std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> filter_;
+  ros::Subscriber initial_pose_sub_;
+  ros::Publisher map_pub_, pose_pub_;
+  ros::ServiceServer save_map_srv_, global_srv_;
+  diagnostic_updater::Updater updater_;
+  ros::Timer diagnostics_timer_;
+
+  std::mutex engine_mutex_;  // guards the engines below (worker, services, /initialpose)
+  std::unique_ptr<localization::Localizer> localizer_;  // mode localization
+  std::unique_ptr<localization::Mapper> mapper_;        // mode mapping
+  bool initial_pose_applied_ = false;
+  std::optional<Work> last_work_;  // the last scan processed, for ~global_localization
+  double last_map_publish_ = -1.0;
+
+  std::mutex mutex_;  // guards output_, pending_, rate_
+  std::condition_variable wake_;
+  std::optional<Work> pending_;
+  Output output_;
+  std::unique_ptr<RateMonitor> rate_;
+
+  std::atomic<bool> stop_{false};
+  std::thread worker_, tf_thread_;
+};
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

@@ -1,0 +1,307 @@
+#include "amigobot_tracking/ros/localization_node.h"
+
+#include <diagnostic_msgs/DiagnosticStatus.h>
+#include <nav_msgs/OccupancyGrid.h>
+
+#include "amigobot_tracking/localization/poses.h"
+#include "amigobot_tracking/ros/localization_messages.h"
+#include "amigobot_tracking/ros/param_reader.h"
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+using localization::LocalizationConfig;
+
+LocalizationConfig loadLocalizationConfig(const ros::NodeHandle& pnh) {
+  LocalizationConfig config;
+  const std::string error = readParams(pnh, localization::localizationFields(), &config);
+  if (!error.empty()) throw std::runtime_error("parameter " + error);
+  return config;
+}
+
+LocalizationNode::LocalizationNode(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : config_(loadLocalizationConfig(pnh)), nh_(nh), pnh_(pnh), listener_(buffer_), updater_(nh, pnh) {
+  if (config_.mode == "localization") {
+    try {
+      localizer_ = std::make_unique<localization::Localizer>(config_, localization::loadMap(config_.map_file));
+    } catch (const std::exception& e) {
+      throw std::runtime_error("parameter ~map_file: " + std::string(e.what()));
+    }
+  } else {
+    mapper_ = std::make_unique<localization::Mapper>(config_);
+  }
+  // Any laser's rate: the window only shows a stall (0 Hz) or a worker that falls behind.
+  rate_ = std::make_unique<RateMonitor>("scans", "scans processed [Hz]", 1.0, 100.0, 0.1, 10);
+  map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+  pose_pub_ = pnh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 5);
+  if (localizer_) publishMap(localizer_->map());
+  worker_ = std::thread([this] { workLoop(); });
+  tf_thread_ = std::thread([this] { tfLoop(); });
+  initial_pose_sub_ = nh_.subscribe("initialpose", 2, &LocalizationNode::onInitialPose, this);
+  save_map_srv_ = pnh_.advertiseService("save_map", &LocalizationNode::onSaveMap, this);
+  global_srv_ = pnh_.advertiseService("global_localization", &LocalizationNode::onGlobalLocalization, this);
+  updater_.setHardwareID("none");
+  updater_.add("Localization (" + config_.mode + ")", this, &LocalizationNode::diagnose);
+  diagnostics_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
+  // Scans only when odom -> laser is known at their stamp.
+  scan_sub_.subscribe(nh_, "scan", 5);
+  filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(scan_sub_, buffer_, config_.odom_frame, 10, nh_);
+  filter_->registerCallback(&LocalizationNode::onScan, this);
+}
+
+LocalizationNode::~LocalizationNode() {
+  filter_.reset();
+  scan_sub_.unsubscribe();
+  stop_ = true;
+  wake_.notify_all();
+  if (worker_.joinable()) worker_.join();
+  if (tf_thread_.joinable()) tf_thread_.join();
+  diagnostics_timer_.stop();
+}
+
+bool LocalizationNode::lookup(const std::string& parent, const std::string& child, const ros::Time& stamp, core::Pose2* out) {
+  try {
+    *out = toPose2(buffer_.lookupTransform(parent, child, stamp, ros::Duration(0.05)).transform);
+    return true;
+  } catch (const tf2::TransformException& e) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    output_.last_error = e.what();
+    return false;
+  }
+}
+
+void LocalizationNode::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+  Work work;
+  core::Pose2 mount;
+  if (!lookup(config_.odom_frame, config_.base_frame, msg->header.stamp, &work.odom_base) ||
+      !lookup(config_.base_frame, msg->header.frame_id, msg->header.stamp, &mount)) {
+    return;
+  }
+  work.scan = toRangeScan(*msg, mount);
+  work.stamp = msg->header.stamp;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (pending_) ++output_.dropped;  // the worker is behind: only the newest scan counts
+  pending_ = std::move(work);
+  wake_.notify_one();
+}
+
+void LocalizationNode::workLoop() {
+  while (!stop_) {
+    Work work;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [this] { return stop_ || pending_; });
+      if (stop_) return;
+      work = std::move(*pending_);
+      pending_.reset();
+    }
+    process(work);
+  }
+}
+
+void LocalizationNode::process(const Work& work) {
+  std::optional<localization::OccupancyMap> map_to_publish;
+  Estimate update;
+  bool matched = true;  // ICP-SLAM aligns every scan it inserts
+  {
+    std::lock_guard<std::mutex> engine(engine_mutex_);
+    if (localizer_) {
+      if (!initial_pose_applied_) {  // initial_pose is where the robot is at the first scan
+        localizer_->setPose(config_.initial_pose, work.odom_base);
+        initial_pose_applied_ = true;
+      }
+      const localization::LocalizationEstimate& e = localizer_->update(work.scan, work.odom_base);
+      update = Estimate{e.map_to_odom, e.pose, e.covariance, e.match, e.icp_goodness, e.lost};
+      matched = e.matched;
+    } else {
+      const localization::MappingEstimate& e = mapper_->update(work.scan, work.odom_base);
+      update = Estimate{e.map_to_odom, e.pose, e.covariance, 0.0, 0.0, false};
+      const double now = ros::WallTime::now().toSec();
+      if (last_map_publish_ < 0.0 || now - last_map_publish_ >= config_.map_publish_period) {
+        last_map_publish_ = now;
+        map_to_publish = mapper_->map();
+      }
+    }
+    last_work_ = work;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    output_.ready = true;
+    output_.estimate = update;
+    output_.matches += matched;
+    ++output_.scans;
+    rate_->tick();
+  }
+  publishTransform(update.map_to_odom);
+  publishPose(work.stamp);
+  if (map_to_publish) publishMap(*map_to_publish);
+}
+
+void LocalizationNode::tfLoop() {
+  ros::WallRate rate(config_.tf_rate);
+  while (!stop_ && ros::ok()) {
+    std::optional<core::Pose2> map_to_odom;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (output_.ready) map_to_odom = output_.estimate.map_to_odom;
+    }
+    if (map_to_odom) publishTransform(*map_to_odom);
+    rate.sleep();
+  }
+}
+
+void LocalizationNode::publishTransform(const core::Pose2& map_to_odom) {
+  geometry_msgs::TransformStamped t;
+  t.header.stamp = ros::Time::now() + ros::Duration(config_.transform_tolerance);
+  t.header.frame_id = config_.global_frame;
+  t.child_frame_id = config_.odom_frame;
+  t.transform = toTransform(map_to_odom);
+  broadcaster_.sendTransform(t);
+}
+
+void LocalizationNode::publishPose(const ros::Time& stamp) {
+  geometry_msgs::PoseWithCovarianceStamped msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = config_.global_frame;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    msg.pose = toPoseWithCovariance(output_.estimate.pose, output_.estimate.covariance);
+  }
+  pose_pub_.publish(msg);
+}
+
+void LocalizationNode::publishMap(const localization::OccupancyMap& map) {
+  if (map.empty()) return;
+  nav_msgs::OccupancyGrid msg;
+  msg.header.stamp = ros::Time::now();
+  msg.header.frame_id = config_.global_frame;
+  msg.info.map_load_time = msg.header.stamp;
+  toOccupancyGrid(map, &msg);
+  map_pub_.publish(msg);
+}
+
+void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
+  if (!localizer_) {
+    ROS_WARN_STREAM_NAMED("localization", "/initialpose ignored: mode is " << config_.mode);
+    return;
+  }
+  if (!msg->header.frame_id.empty() && msg->header.frame_id != config_.global_frame) {
+    ROS_WARN_STREAM_NAMED("localization", "/initialpose ignored: frame '" << msg->header.frame_id << "' is not '"
+                                                                          << config_.global_frame << "'");
+    return;
+  }
+  core::Pose2 odom_base;
+  if (!lookup(config_.odom_frame, config_.base_frame, ros::Time(0), &odom_base)) return;
+  const core::Pose2 pose = toPose2(msg->pose.pose);
+  core::Pose2 map_to_odom;
+  {
+    std::lock_guard<std::mutex> engine(engine_mutex_);
+    localizer_->setPose(pose, odom_base);
+    initial_pose_applied_ = true;
+    map_to_odom = localizer_->estimate().map_to_odom;
+  }
+  ROS_INFO_STREAM_NAMED("localization", "initial pose (" << pose.x << ", " << pose.y << ", " << pose.theta << ")");
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    output_.ready = true;
+    output_.estimate.map_to_odom = map_to_odom;
+    output_.estimate.pose = pose;
+  }
+  publishTransform(map_to_odom);
+}
+
+bool LocalizationNode::onSaveMap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  if (!mapper_) {
+    response.message = "nothing to save: mode is localization (the map is " + config_.map_file + ")";
+    return true;
+  }
+  if (config_.map_file.empty()) {
+    response.message = "~map_file is empty: no path to save the map to";
+    return true;
+  }
+  localization::OccupancyMap map;
+  {
+    std::lock_guard<std::mutex> engine(engine_mutex_);
+    map = mapper_->map();
+  }
+  try {
+    localization::saveMap(config_.map_file, map);
+    response.success = true;
+    response.message = "saved " + config_.map_file + " (" + std::to_string(map.width) + " x " + std::to_string(map.height) + " cells)";
+    publishMap(map);
+  } catch (const std::exception& e) {
+    response.message = e.what();
+  }
+  ROS_INFO_STREAM_NAMED("localization", "~save_map: " << response.message);
+  return true;
+}
+
+bool LocalizationNode::onGlobalLocalization(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  if (!localizer_) {
+    response.message = "global localization needs mode localization (mode is " + config_.mode + ")";
+    return true;
+  }
+  localization::RelocalizationResult result;
+  core::Pose2 map_to_odom;
+  {
+    std::lock_guard<std::mutex> engine(engine_mutex_);
+    if (!last_work_) {
+      response.message = "no scan yet";
+      return true;
+    }
+    result = localizer_->relocalize(last_work_->scan, last_work_->odom_base);
+    map_to_odom = localizer_->estimate().map_to_odom;
+    if (result.found) initial_pose_applied_ = true;
+  }
+  char text[200];
+  std::snprintf(text, sizeof text, "%s (%.3f, %.3f, %.3f) matching %.0f %% of the beams, %d candidates",
+                result.found ? "relocalised at" : "not found; best", result.pose.x, result.pose.y, result.pose.theta,
+                100.0 * result.match, result.candidates);
+  response.success = result.found;
+  response.message = text;
+  ROS_INFO_STREAM_NAMED("localization", "~global_localization: " << text);
+  if (result.found) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      output_.ready = true;
+      output_.estimate.map_to_odom = map_to_odom;
+      output_.estimate.pose = result.pose;
+      ++output_.relocalisations;
+    }
+    publishTransform(map_to_odom);  // the jump, in one step
+  }
+  return true;
+}
+
+void LocalizationNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!output_.ready) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for scans (and tf " + config_.odom_frame + " -> laser)");
+  } else if (output_.estimate.lost) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "lost: the scans do not fit the map");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, config_.mode == "mapping" ? "mapping" : "localized");
+  }
+  rate_->report(status, output_.ready);
+  status.add("mode", config_.mode);
+  status.add("map file", config_.map_file);
+  if (localizer_) {  // the Mapper's map is made of its own scans: no match to report
+    status.add("match (fraction of beams on the map)", output_.estimate.match);
+    status.add("ICP goodness", output_.estimate.icp_goodness);
+  }
+  const Estimate& e = output_.estimate;
+  status.add("covariance xx [m^2]", e.covariance(0, 0));
+  status.add("covariance yy [m^2]", e.covariance(1, 1));
+  status.add("covariance yaw [rad^2]", e.covariance(2, 2));
+  status.add("pose x [m]", e.pose.x);
+  status.add("pose y [m]", e.pose.y);
+  status.add("pose yaw [rad]", e.pose.theta);
+  status.add("scans processed", output_.scans);
+  status.add("scans matched", output_.matches);
+  status.add("scans dropped (worker busy)", output_.dropped);
+  status.add("relocalisations", output_.relocalisations);
+  status.add("last tf error", output_.last_error);
+}
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking
