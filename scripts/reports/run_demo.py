@@ -9,7 +9,7 @@ screenshots rviz, stops everything it started, and writes REPORT/: run.bag, traj
 metrics.json, the paper's Figs 3-8 (scripts/reports/plot_run.py), rviz_*.png, summary.md, logs/.
 Exit 0: safe run; 3: collision or a command outside the diamond; 4: the run did not happen.
 Tracking runs with config/demo_tracking.yaml (tangential escape) unless --paper-law.
-Usage: run_demo.py [--ws .ws] [--out report/demo] [--paper-law]
+Usage: run_demo.py [--ws .ws] [--out report/demo] [--world config/worlds/lab.yaml] [--paper-law]
 """
 import argparse
 import json
@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import stack_processes as sp  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-WORLD = os.path.join(ROOT, "config", "worlds", "lab.yaml")  # the room of the run and of its scoring
+WORLD = os.path.join(ROOT, "config", "worlds", "lab.yaml")  # default room of the run and of its scoring
 COURSE_S = 80.0       # the reference's duration (config/references/experiment_5_3.yaml)
 START_DELAY_S = 10.0  # the target waits this long after the launch (startup on a loaded machine)
 SETTLE_S = 4.0        # after the course ends
@@ -54,6 +54,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--ws", default=os.path.join(ROOT, ".ws"), help="catkin workspace (built)")
     parser.add_argument("--out", default=os.path.join(ROOT, "report", "demo"), help="report folder (replaced)")
+    parser.add_argument("--world", default=WORLD, help="world YAML of the run and its scoring (default: lab.yaml)")
     parser.add_argument("--paper-law", action="store_true",
                         help="the paper's law alone (without config/demo_tracking.yaml's tangential escape)")
     args = parser.parse_args()
@@ -76,7 +77,7 @@ def main():
         tcp, status, laser = sp.free_port(), sp.free_port(), sp.free_port()
         launch = procs.start("sim_launch", ["roslaunch", "amigobot_tracking", "sim.launch", f"tcp_port:={tcp}",
                                             f"status_port:={status}", f"laser_port:={laser}",
-                                            f"start_delay:={START_DELAY_S}", f"world:={WORLD}", "rviz:=true"]
+                                            f"start_delay:={START_DELAY_S}", f"world:={os.path.abspath(args.world)}", "rviz:=true"]
                              + ([] if args.paper_law else [f"tracking_params:={DEMO_PARAMS}"]),
                              env)
         t_launch = time.time()
@@ -118,7 +119,7 @@ def main():
     log(f"stack stopped after {time.time() - started:.0f} s; scoring the run")
 
     report = subprocess.run([os.path.join(args.ws, "devel", "lib", "amigobot_tracking", "run_report"), "--bag", bag,
-                             "--world", WORLD, "--out", out, "--name", "make demo (sim.launch, Section 5.3-like)"],
+                             "--world", os.path.abspath(args.world), "--out", out, "--name", "make demo (sim.launch, Section 5.3-like)"],
                             env=env, capture_output=True, text=True)
     sys.stdout.write(report.stdout)
     sys.stderr.write(report.stderr)

@@ -34,7 +34,7 @@ void BM_LaserChain(benchmark::State& state, const std::string& model_name) {
   const double sweep = model.timeIncrement() * (model.beams() - 1);
   LaserServerOptions options;
   options.tcp_port = 0;
-  LaserEmulatorServer server(model, ScanSource(model, world::World{room}, ScanSourceOptions{}), pose, options);
+  LaserEmulatorServer server(model, ScanSource(model, world::disksOnly(room), ScanSourceOptions{}), pose, options);
   server.open();
   std::atomic<bool> stop{false};
   std::thread io([&] { server.run(stop); });

@@ -47,7 +47,7 @@ TEST(Raycast, RaycastScanTurnsBackIntoTheSameDisks) {
   g.range_min = 0.05;
   g.range_max = 8.0;
   const Disk pillar{{2.0, 0.0}, 0.1};
-  const std::vector<float> ranges = raycastScan({0.0, 0.0, 0.0}, World{{pillar}}, g, 720);
+  const std::vector<float> ranges = raycastScan({0.0, 0.0, 0.0}, disksOnly({pillar}), g, 720);
   std::vector<Disk> disks;
   ASSERT_TRUE(scanToObstacles(g, ranges, Eigen::Affine2d::Identity(), ScanObstacleConfig(), &disks));
   ASSERT_FALSE(disks.empty());
@@ -66,14 +66,14 @@ TEST(Raycast, NearestOfOverlappingDisksWins) {
 }
 
 TEST(Raycast, RayMeetsASegmentAtItsAnalyticDistance) {
-  const Segment wall{{2.0, -1.0}, {2.0, 1.0}};
+  const Segment wall{{2.0, -1.0}, {2.0, 3.0}};
   EXPECT_NEAR(raySegmentDistance({0.0, 0.0}, {1.0, 0.0}, wall), 2.0, 1e-12);
   const Eigen::Vector2d diagonal = Eigen::Vector2d(1.0, 1.0).normalized();
   EXPECT_NEAR(raySegmentDistance({0.0, 0.0}, diagonal, wall), 2.0 * std::sqrt(2.0), 1e-12);
   EXPECT_LT(raySegmentDistance({0.0, 0.0}, {-1.0, 0.0}, wall), 0.0);               // behind
   EXPECT_LT(raySegmentDistance({0.0, 0.0}, {0.0, 1.0}, wall), 0.0);                // parallel
-  EXPECT_LT(raySegmentDistance({0.0, 1.5}, {1.0, 0.0}, wall), 0.0);                // past its end
-  EXPECT_NEAR(raySegmentDistance({0.0, 1.0}, {1.0, 0.0}, wall), 2.0, 1e-12);       // its end point
+  EXPECT_LT(raySegmentDistance({0.0, 3.5}, {1.0, 0.0}, wall), 0.0);                // past its end
+  EXPECT_NEAR(raySegmentDistance({0.0, 3.0}, {1.0, 0.0}, wall), 2.0, 1e-12);       // its end point
 }
 
 TEST(Raycast, WallsInARoomFollowRep117) {

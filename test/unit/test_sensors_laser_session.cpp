@@ -133,13 +133,13 @@ TEST(ScanSource, CastsFromTheMountPoseAndUpsideDownMirrors) {
   wall.radius = 0.5;
   ScanSourceOptions options;
   options.mount = {0.11, 0.0, 0.0};
-  ScanSource source(tim, world::World{{wall}}, options);
+  ScanSource source(tim, world::disksOnly({wall}), options);
   const core::Pose2 base{0.0, 1.0, 0.0};
   const EmulatedScan scan = source.cast(base, 1.0);
   const std::size_t front = 405;  // -135 deg + 405 * 0.3333 deg = -0.0135 deg
   EXPECT_NEAR(scan.ranges[front], 3.0 - 0.5 - 0.11, 1e-3);
   options.upside_down = true;
-  ScanSource mirrored(tim, world::World{{wall}}, options);
+  ScanSource mirrored(tim, world::disksOnly({wall}), options);
   EXPECT_NEAR(mirrored.cast(base, 1.0).ranges[front], scan.ranges[front], 1e-3);
   options.dropout = 2.0;
   EXPECT_THROW(ScanSource(tim, world::World{}, options), std::invalid_argument);

@@ -33,7 +33,7 @@ TEST(SimLaser, SeesDiskAheadAtItsSurfaceAndNothingBehind) {
   disk.center = {2.0, 1.0};
   disk.radius = 0.25;
   core::Pose2 laser{1.0, 1.0, 0.0};
-  const auto scan = ros_layer::simulateScan(laser, world::World{{disk}}, config(), nullptr);
+  const auto scan = ros_layer::simulateScan(laser, world::disksOnly({disk}), config(), nullptr);
   ASSERT_EQ(scan.ranges.size(), 361u);
   EXPECT_NEAR(scan.ranges[beamAt(scan, 0.0)], 0.75, 1e-4);
   EXPECT_TRUE(std::isinf(scan.ranges[beamAt(scan, M_PI / 2)]) && scan.ranges[beamAt(scan, M_PI / 2)] > 0);
@@ -58,7 +58,7 @@ TEST(SimLaser, BeamsAreInTheLaserFrame) {
   disk.center = {0.0, 2.0};
   disk.radius = 0.5;
   core::Pose2 laser{0.0, 0.0, M_PI / 2};  // facing the disk: it is straight ahead
-  const auto scan = ros_layer::simulateScan(laser, world::World{{disk}}, config(), nullptr);
+  const auto scan = ros_layer::simulateScan(laser, world::disksOnly({disk}), config(), nullptr);
   EXPECT_NEAR(scan.ranges[beamAt(scan, 0.0)], 1.5, 1e-4);
   EXPECT_TRUE(std::isinf(scan.ranges[beamAt(scan, M_PI / 2)]));
 }
@@ -74,7 +74,7 @@ TEST(SimLaser, NoiseStaysInsideTheRangeLimitsAndLeavesInfAlone) {
   double sum = 0.0;
   int n = 0;
   for (int i = 0; i < 200; ++i) {
-    const auto scan = ros_layer::simulateScan({0, 0, 0}, world::World{{disk}}, c, &rng);
+    const auto scan = ros_layer::simulateScan({0, 0, 0}, world::disksOnly({disk}), c, &rng);
     const float r = scan.ranges[beamAt(scan, 0.0)];
     ASSERT_GE(r, static_cast<float>(c.range_min));
     ASSERT_LE(r, static_cast<float>(c.range_max));

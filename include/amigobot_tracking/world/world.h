@@ -14,6 +14,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "amigobot_tracking/core/types.h"
@@ -40,6 +41,13 @@ struct World {
 
   bool empty() const { return obstacles.empty() && walls.empty() && polygons.empty(); }
 };
+
+// A world of these disks only (no walls, polygons or start pose).
+inline World disksOnly(std::vector<core::Disk> disks) {
+  World world;
+  world.obstacles = std::move(disks);
+  return world;
+}
 
 // Reads a world file. Throws std::runtime_error "FILE:LINE: KEY: what is wrong" for an
 // unreadable file, a malformed entry or an unknown key.
