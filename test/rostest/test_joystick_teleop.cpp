@@ -44,6 +44,12 @@ class JoystickTeleopNode : public testing::Test {
     for (std::uint8_t b = 0; b < 6; ++b) send(JS_EVENT_BUTTON | JS_EVENT_INIT, b, 0);
     for (std::uint8_t a = 0; a < 4; ++a) send(JS_EVENT_AXIS | JS_EVENT_INIT, a, 0);
     ASSERT_TRUE(node_.waitForOutput("connected", 10.0)) << node_.output();
+    // A FIFO reader sees the hang-up (POLLHUP, then end of file) only of a writer that came
+    // after its open: write through a new one from now on, as a device the node opened.
+    const int writer = ::open(fifo_.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(writer, 0);
+    ::close(writer_);
+    writer_ = writer;
   }
   void TearDown() override {
     node_.stop(SIGINT, 10.0);
@@ -52,8 +58,9 @@ class JoystickTeleopNode : public testing::Test {
     ::rmdir(dir_.c_str());
   }
 
-  // O_RDWR: never blocks, and keeps the FIFO open for the node's reads.
-  void openDevice() { writer_ = ::open(fifo_.c_str(), O_RDWR | O_NONBLOCK); ASSERT_GE(writer_, 0); }
+  // O_RDWR: never blocks, and keeps the FIFO open for the node's reads; O_CLOEXEC: the node
+  // must not inherit a writer, or the FIFO never hangs up.
+  void openDevice() { writer_ = ::open(fifo_.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC); ASSERT_GE(writer_, 0); }
   void closeDevice() {
     ::close(writer_);
     writer_ = -1;
@@ -117,7 +124,7 @@ TEST_F(JoystickTeleopNode, DeviceClosedSendsZeroLogsItAndReconnects) {
 
   const double t = now();
   closeDevice();  // the pad unplugged: the node's read ends
-  ASSERT_FALSE(std::isnan(waitFor(0.0, 0.0, t))) << "a zero when the device goes away";
+  ASSERT_FALSE(std::isnan(waitFor(0.0, 0.0, t))) << "a zero when the device goes away\n" << node_.output();
   EXPECT_TRUE(node_.waitForOutput("device " + fifo_ + ": closed", 5.0)) << node_.output();
   ros::WallDuration(1.0).sleep();
   for (const Received& m : since(t)) EXPECT_EQ(m.v, 0.0) << "nothing but zeros while it is gone";

@@ -109,8 +109,8 @@ TEST(KeyboardTeleopNode, StopsAfterKeyTimeout) {
 TEST(KeyboardTeleopNode, SigintSendsZeroAndRestoresTheTerminal) {
   CmdVelLog log;
   NodeProcess node;
-  const termios before = node.terminalSettings();  // not yet started: a fresh pty's defaults
   startOnPty(&node, log);
+  const termios before = node.initialTerminalSettings();  // the fresh pty's, before the node ran
   node.type("i");
   ASSERT_FALSE(std::isnan(log.waitFor(0.15, 0.0, now() - 1.0)));
   node.type("i");

@@ -34,6 +34,7 @@ class NodeProcess {
     reading_ = false;
     if (reader_.joinable()) reader_.join();
     if (fd_ >= 0) ::close(fd_);
+    if (slave_fd_ >= 0) ::close(slave_fd_);
   }
 
   void start(std::vector<std::string> args, Terminal terminal) {
@@ -42,6 +43,9 @@ class NodeProcess {
       fd_ = ::posix_openpt(O_RDWR | O_NOCTTY);
       if (fd_ < 0 || ::grantpt(fd_) != 0 || ::unlockpt(fd_) != 0) throw std::runtime_error("posix_openpt");
       slave_ = ::ptsname(fd_);
+      // Held open here too, so the terminal's settings can still be read after the child exits.
+      slave_fd_ = ::open(slave_.c_str(), O_RDWR | O_NOCTTY);
+      if (slave_fd_ < 0 || ::tcgetattr(slave_fd_, &initial_) != 0) throw std::runtime_error("open " + slave_);
     } else {
       int out[2];
       if (::pipe(out) < 0) throw std::runtime_error("pipe");
@@ -57,6 +61,8 @@ class NodeProcess {
       } else {
         in = ::open("/dev/null", O_RDONLY);
       }
+      ::close(fd_);
+      if (slave_fd_ >= 0) ::close(slave_fd_);
       ::dup2(in, STDIN_FILENO);
       ::dup2(child_fd, STDOUT_FILENO);
       ::dup2(child_fd, STDERR_FILENO);
@@ -75,12 +81,14 @@ class NodeProcess {
   void type(const std::string& keys) const {
     if (::write(fd_, keys.data(), keys.size()) != static_cast<ssize_t>(keys.size())) throw std::runtime_error("type");
   }
-  // The terminal's settings as the child sees them (a master shares its slave's termios).
+  // The terminal's settings as the child sees them (pty mode).
   termios terminalSettings() const {
     termios t{};
-    ::tcgetattr(fd_, &t);
+    if (::tcgetattr(slave_fd_, &t) != 0) throw std::runtime_error("tcgetattr on " + slave_);
     return t;
   }
+  // The settings of the fresh pty, before the child started.
+  const termios& initialTerminalSettings() const { return initial_; }
   std::string output() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return output_;
@@ -139,7 +147,8 @@ class NodeProcess {
   }
 
   pid_t pid_ = -1;
-  int fd_ = -1;
+  int fd_ = -1, slave_fd_ = -1;
+  termios initial_{};
   std::string slave_;
   std::thread reader_;
   std::atomic<bool> reading_{false};

@@ -4,6 +4,7 @@
 // released, when the device disappears (then reopened every reconnect_period), when it has
 // been silent for stale_timeout (if set) and on exit. Mapping: teleop/joystick.h.
 #include <algorithm>
+#include <cstdio>
 #include <thread>
 
 #include <geometry_msgs/Twist.h>
@@ -49,6 +50,8 @@ int main(int argc, char** argv) {
   ros::Publisher publisher = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
   if (config.enable_motors) ros_layer::enableMotors(nh, "joystick_teleop");
 
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // log lines reach a pipe or a file at once
+  const std::string retry = core::formatValue(config.reconnect_period);
   teleop::JoystickDevice device(config.device);
   teleop::JoystickTeleop joystick(config);
   const double period = 1.0 / config.rate;
@@ -59,7 +62,7 @@ int main(int argc, char** argv) {
   while (ros::ok() && ros_layer::stopSignal() == 0) {
     if (!device.isOpen() && now() >= next_open) {
       const std::string problem = device.open();
-      if (!problem.empty()) reportProblem(problem + "; retrying every " + std::to_string(config.reconnect_period) + " s", &last_problem);
+      if (!problem.empty()) reportProblem(problem + "; retrying every " + retry + " s", &last_problem);
       next_open = now() + config.reconnect_period;
     }
     const int wait_ms = static_cast<int>(std::max(0.0, next_tick - now()) * 1000.0);
@@ -68,7 +71,7 @@ int main(int argc, char** argv) {
       if (!problem.empty()) {
         joystick.onDeviceLost();
         bytes.clear();
-        if (connected) ROS_ERROR_STREAM("joystick_teleop: " << problem << "; zero sent, reopening every " << config.reconnect_period << " s");
+        if (connected) ROS_ERROR_STREAM("joystick_teleop: " << problem << "; zero sent, reopening every " << retry << " s");
         else reportProblem(problem, &last_problem);
         last_problem = problem;
         connected = false;
