@@ -42,6 +42,9 @@ if(CATKIN_ENABLE_TESTING)
                      ${PROJECT_SOURCE_DIR}/test/e2e/worlds/room.yaml ${PROJECT_SOURCE_DIR}/test/e2e/worlds/room_map.yaml)
   amigobot_add_check(lab_map_matches_world ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/world_map
                      --world ${PROJECT_SOURCE_DIR}/config/worlds/lab.yaml --compare ${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
+  amigobot_add_check(launch_two_robots_teleop ${check_launch}/two_robots.launch target_teleop:=keyboard)
+  amigobot_add_check(launch_teleop ${check_launch}/teleop.launch)
+  amigobot_add_check(launch_teleop_joystick ${check_launch}/teleop.launch ns:=target device:=/dev/input/js0)
   amigobot_add_check(launch_rviz ${check_launch}/rviz.launch ns:=tracker)
   amigobot_add_check(launch_localization ${check_launch}/include/localization.launch map_file:=/tmp/map.yaml)
   add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization

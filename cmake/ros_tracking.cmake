@@ -43,6 +43,7 @@ if(CATKIN_ENABLE_TESTING)
   # Every table field in config/*.yaml (with its comment), the README's tables and cfg/*.cfg.
   amigobot_add_unit_test(test_param_coverage test/unit/test_param_coverage.cpp)
   target_link_libraries(test_param_coverage amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser amigobot_tracking_localization)
+  # (and config/teleop.yaml: cmake/teleop.cmake links the teleop tables in)
   target_compile_definitions(test_param_coverage PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 

@@ -21,10 +21,12 @@ ALLOWED = {
     "aria": {"std", "posix", "eigen", "core", "world", "mrpt", "yaml"},
     "sensors": {"std", "posix", "eigen", "core", "world", "mrpt"},
     "localization": {"std", "eigen", "core", "world", "mrpt", "yaml"},
+    "teleop": {"std", "posix", "linux", "eigen", "core"},
     "tools": {"std", "posix", "eigen", "core", "sim", "aria", "sensors", "localization", "world", "mrpt", "yaml", "json", "cli11"},
     "ros": None,  # anything
 }
-LIBRARIES = {"Eigen": "eigen", "yaml-cpp": "yaml", "nlohmann": "json", "mrpt": "mrpt", "CLI": "cli11"}
+LIBRARIES = {"Eigen": "eigen", "yaml-cpp": "yaml", "nlohmann": "json", "mrpt": "mrpt", "CLI": "cli11",
+             "linux": "linux"}  # linux: the kernel's user-space API headers (linux/joystick.h)
 POSIX_FOLDERS = {"sys", "netinet", "arpa"}
 STD = set("""
 algorithm any array atomic bitset cassert cctype cerrno cfloat charconv chrono cinttypes climits

@@ -59,6 +59,15 @@ class CheckLayers(unittest.TestCase):
         self.write("src/core/posix.cpp", "#include <unistd.h>\n")
         self.assertTrue(self.only_violation().startswith("src/core/posix.cpp:1: <unistd.h> (posix)"))
 
+    def test_teleop_may_use_termios_and_linux_headers_but_not_ros_nor_aria(self):
+        self.write("src/teleop/device.cpp", "#include <termios.h>\n#include <linux/joystick.h>\n"
+                   '#include "amigobot_tracking/core/types.h"\n#include "amigobot_tracking/aria/client.h"\n')
+        self.write("src/core/joystick.cpp", "#include <linux/joystick.h>\n")
+        messages, _, _ = check_layers.violations(self.root)
+        self.assertEqual([m.split(" is not")[0] for m in messages],
+                         ["src/core/joystick.cpp:1: <linux/joystick.h> (linux)",
+                          'src/teleop/device.cpp:4: "amigobot_tracking/aria/client.h" (aria)'])
+
     def test_relative_quoted_include_outside_ros_fails(self):
         self.write("src/world/world.cpp", '#include "world.h"\n')
         self.assertIn('"world.h" (other)', self.only_violation())

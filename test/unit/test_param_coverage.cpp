@@ -19,6 +19,8 @@
 #include "amigobot_tracking/ros/driver.h"
 #include "amigobot_tracking/ros/laser_scan.h"
 #include "amigobot_tracking/ros/tracking_params.h"
+#include "amigobot_tracking/teleop/joystick.h"
+#include "amigobot_tracking/teleop/keyboard.h"
 
 using namespace amigobot_tracking;
 
@@ -176,6 +178,24 @@ TEST(ParamCoverage, EveryLocalizationFieldIsInItsYamlAndTheReadme) {
   for (const auto& [key, comment] : keys)
     EXPECT_TRUE(fields.count(key) || key == "initial_pose" || key == "icp" || key == "global") << "config/localization.yaml: " << key;
   for (const std::string& name : readme) EXPECT_TRUE(fields.count(name)) << "README localization row `" << name << "` names no field";
+}
+
+// The teleop nodes: config/teleop.yaml has one block per node, each field with its comment,
+// nothing else; every field is in the README's teleop tables.
+TEST(ParamCoverage, EveryTeleopFieldIsInItsYamlAndTheReadme) {
+  const std::map<std::string, std::string> keys = yamlKeys("config/teleop.yaml");
+  const std::set<std::string> readme = readmeNames();
+  std::map<std::string, Row> rows;
+  add(&rows, "keyboard_teleop/", teleop::keyboardFields());
+  add(&rows, "joystick_teleop/", teleop::joystickFields());
+  for (const auto& [key, row] : rows) {
+    const auto it = keys.find(key);
+    ASSERT_NE(it, keys.end()) << key << " is not in config/teleop.yaml";
+    EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
+    EXPECT_TRUE(readme.count(key.substr(key.find('/') + 1))) << key << " is in no README parameter table";
+  }
+  for (const auto& [key, comment] : keys)
+    EXPECT_TRUE(rows.count(key) || key == "keyboard_teleop" || key == "joystick_teleop") << "config/teleop.yaml: " << key;
 }
 
 TEST(ParamCoverage, EveryFieldIsInTheReadmeAndEveryRowNamesOne) {

@@ -4,6 +4,7 @@
 // else is refused by name.
 #pragma once
 
+#include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <string>
@@ -22,8 +23,10 @@ struct NodeHelp {
 };
 
 // Returns when the command line is empty; exits 0 after --help, 2 on anything else.
-inline void initNode(int& argc, char** argv, const std::string& node_name, const NodeHelp& help) {
-  ros::init(argc, argv, node_name);
+// `options`: ros::init_options (NoSigintHandler for a node that stops the robot itself).
+inline void initNode(int& argc, char** argv, const std::string& node_name, const NodeHelp& help,
+                     uint32_t options = 0) {
+  ros::init(argc, argv, node_name, options);
   const std::string program = argv[0];
   CLI::App app(help.about, program.substr(program.find_last_of('/') + 1));
   app.footer(std::string("Parameters (private ROS parameters, ~name): ") + help.parameters);
