@@ -23,6 +23,7 @@ TEST(LaserDriver, ScipOverTcpGivesTheRayCastTruthAtTheDeviceGeometry) {
   EXPECT_NEAR(scan.angle_min, -340 * 2 * M_PI / 1024, 1e-9);  // not MRPT's -aperture / 2
   EXPECT_NEAR(scan.angleMax(), 341 * 2 * M_PI / 1024, 1e-9);
   EXPECT_NEAR(scan.stamp, systemSeconds(), 1.0);
+  EXPECT_EQ(driver.counters().damaged, 0u) << driver.lastError();  // every SCIP sum checked and right
 }
 
 TEST(LaserDriver, ScipOverAPseudoTerminal) {

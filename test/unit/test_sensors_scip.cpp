@@ -86,7 +86,8 @@ TEST(Scip, ScanRequestsAreParsedAndChecked) {
 TEST(Scip, ReplySumCheckFindsAWrongSumInAStreamReadInPieces) {
   const std::string good = scip::scanReply("MD0044004801000", "99", 1234, {500, 600, 0, 1, 4000}, 3);
   scip::ReplySumCheck check;
-  const std::string stream = scip::reply("BM", "00") + good + good;
+  const std::string info = scip::infoReply("VV", {"VEND:Hokuyo Automatic Co.,Ltd.", "SERI:H0000001"});
+  const std::string stream = scip::reply("BM", "00") + info + good + good;
   for (std::size_t at = 0; at < stream.size(); at += 7) check.feed(stream.data() + at, std::min<std::size_t>(7, stream.size() - at));
   EXPECT_EQ(check.badLines(), 0u);
   std::string bad = good;

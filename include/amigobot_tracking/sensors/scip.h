@@ -49,7 +49,8 @@ std::string parseScanRequest(const std::string& line, ScanRequest* request);
 
 // Checks the sums of the replies in a byte stream as it is read: in each reply (lines up to
 // an empty line) every line after the echo whose length is at least 2 ends with the sum of
-// the rest (status and data lines; SCIP 1.1's one-character status has none).
+// the rest (status and data lines; SCIP 1.1's one-character status has none), an info line
+// "LABEL:value;" with the sum of "LABEL:value".
 class ReplySumCheck {
  public:
   void feed(const char* bytes, std::size_t count);
