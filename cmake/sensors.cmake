@@ -1,4 +1,4 @@
-# Layer 2, sensors: the lasers' own protocols (SCIP 2.0, CoLa-A), the laser emulator and the
+# Layer 2, sensors: the lasers' own protocols (SCIP 2.0, CoLa-A, RPLIDAR), the laser emulator and the
 # ROS-free laser driver over MRPT. Core + world + MRPT; no ROS.
 amigobot_add_library(amigobot_tracking_sensors
   src/sensors/scip.cpp
@@ -9,7 +9,11 @@ amigobot_add_library(amigobot_tracking_sensors
   src/sensors/laser_emulator_server.cpp
   src/sensors/transport_address.cpp
   src/sensors/hokuyo_device.cpp
-  src/sensors/tim_device.cpp
+  src/sensors/cola_device.cpp
+  src/sensors/cola_session.cpp
+  src/sensors/rplidar.cpp
+  src/sensors/rplidar_session.cpp
+  src/sensors/rplidar_device.cpp
   src/sensors/laser_driver.cpp
 )
 target_include_directories(amigobot_tracking_sensors PUBLIC include)
@@ -20,16 +24,18 @@ target_link_libraries(laser_emulator amigobot_tracking_sensors amigobot_tracking
 
 if(CATKIN_ENABLE_TESTING)
   # The encoders against the specifications' examples, the sessions' conversations.
-  foreach(unit scip cola_a laser_session)
+  foreach(unit scip cola_a laser_session rplidar)
     amigobot_add_unit_test(test_sensors_${unit} test/unit/test_sensors_${unit}.cpp)
     target_link_libraries(test_sensors_${unit} amigobot_tracking_sensors)
   endforeach()
 endif()
 
 if(CATKIN_ENABLE_TESTING)
-  # The driver against the emulator executable over real TCP sockets and a real pty.
-  amigobot_add_unit_test(test_sensors_driver_emulator test/integration/test_sensors_driver_emulator.cpp)
-  target_link_libraries(test_sensors_driver_emulator amigobot_tracking_sensors)
-  target_compile_definitions(test_sensors_driver_emulator PRIVATE AMIGOBOT_LASER_EMULATOR="$<TARGET_FILE:laser_emulator>")
-  add_dependencies(test_sensors_driver_emulator laser_emulator)
+  # The driver against the emulator executable over real TCP sockets and real ptys, by device.
+  foreach(device driver lms1xx rplidar)
+    amigobot_add_unit_test(test_sensors_${device}_emulator test/integration/test_sensors_${device}_emulator.cpp)
+    target_link_libraries(test_sensors_${device}_emulator amigobot_tracking_sensors)
+    target_compile_definitions(test_sensors_${device}_emulator PRIVATE AMIGOBOT_LASER_EMULATOR="$<TARGET_FILE:laser_emulator>")
+    add_dependencies(test_sensors_${device}_emulator laser_emulator)
+  endforeach()
 endif()

@@ -18,7 +18,7 @@ const core::FieldTable<LaserParams>& laserFields() {
     core::FieldTable<P> t;
     core::include(&t, "", &P::driver,
                   core::FieldTable<D>{
-                      field("model", &D::model, "-", "the laser's protocol", core::oneOf({"hokuyo_urg", "sick_tim5xx"})),
+                      field("model", &D::model, "-", "the laser's protocol", core::oneOf({"hokuyo_urg", "sick_tim5xx", "sick_lms1xx", "rplidar"})),
                       field("port", &D::port, "-", "serial device, or host:port for TCP"),
                       field("reconnect_period", &D::reconnect_period, "s", "first wait before reopening (doubles up to 8x)",
                             core::interval(0.0, true, 60.0, false)),

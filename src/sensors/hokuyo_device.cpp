@@ -1,18 +1,63 @@
 // SCIP 2.0 through MRPT's CHokuyoURG. MRPT spreads the N beams evenly over its aperture;
 // the beam angles here come from the PP reply instead: (step - AFRT) 2 pi / ARES.
+// MRPT drops each line's sum character unchecked, so the link is bound to CHokuyoURG as a
+// stream that checks the sums of what MRPT reads (scip::ReplySumCheck): a scan read while a
+// wrong sum went by is dropped as damaged. Over TCP that stream is not MRPT's socket class,
+// so CHokuyoURG treats it as an already open port and leaves reconnecting to LaserDriver.
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include <mrpt/comms/CClientTCPSocket.h>
+#include <mrpt/comms/CSerialPort.h>
 #include <mrpt/hwdrivers/CHokuyoURG.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include "amigobot_tracking/sensors/laser_device.h"
+#include "amigobot_tracking/sensors/scip.h"
 #include "amigobot_tracking/sensors/transport_address.h"
 
 namespace amigobot_tracking {
 namespace sensors {
 namespace {
+
+// A serial port that checks the SCIP sums of what it reads (CHokuyoURG still sets its baud).
+class SumCheckedSerialPort : public mrpt::comms::CSerialPort {
+ public:
+  SumCheckedSerialPort(const std::string& port, scip::ReplySumCheck* check) : CSerialPort(port, true), check_(check) {}
+  size_t Read(void* buffer, size_t count) override {
+    const size_t n = CSerialPort::Read(buffer, count);
+    check_->feed(static_cast<const char*>(buffer), n);
+    return n;
+  }
+
+ private:
+  scip::ReplySumCheck* check_;
+};
+
+// A TCP connection as a plain stream that checks the SCIP sums of what it reads. Read waits
+// up to 100 ms for the first byte, as CHokuyoURG's serial timeouts do.
+class SumCheckedSocket : public mrpt::io::CStream {
+ public:
+  SumCheckedSocket(const std::string& host, int port, scip::ReplySumCheck* check) : check_(check) {
+    socket_.connect(host, static_cast<unsigned short>(port), 2000);
+    socket_.setTCPNoDelay(1);
+  }
+  size_t Read(void* buffer, size_t count) override {
+    if (!socket_.isConnected()) throw std::runtime_error("connection closed");
+    const size_t n = socket_.readAsync(buffer, count, 100, 1);
+    check_->feed(static_cast<const char*>(buffer), n);
+    return n;
+  }
+  size_t Write(const void* buffer, size_t count) override { return socket_.writeAsync(buffer, count, 1000); }
+  uint64_t Seek(int64_t, CStream::TSeekOrigin) override { throw std::logic_error("SumCheckedSocket: no seek"); }
+  uint64_t getTotalBytesCount() const override { return 0; }
+  uint64_t getPosition() const override { return 0; }
+
+ private:
+  mrpt::comms::CClientTCPSocket socket_;
+  scip::ReplySumCheck* check_;
+};
 
 // CHokuyoURG keeps the PP reply in a protected member: read it from a subclass.
 class Urg : public mrpt::hwdrivers::CHokuyoURG {
@@ -29,13 +74,14 @@ class HokuyoDevice : public LaserDevice {
     urg_.useReceptionTime();
     std::string host;
     int tcp_port = 0;
-    if (splitTcpAddress(port, &host, &tcp_port)) {
-      urg_.setIPandPort(host, static_cast<unsigned>(tcp_port));
-    } else {
-      urg_.setSerialPort(port);
-    }
     bool ok = false;
     try {
+      if (splitTcpAddress(port, &host, &tcp_port)) {
+        urg_.bindIO(std::make_shared<SumCheckedSocket>(host, tcp_port, &sums_));
+      } else {
+        urg_.setSerialPort(port);
+        urg_.bindIO(std::make_shared<SumCheckedSerialPort>(port, &sums_));
+      }
       ok = urg_.turnOn();
     } catch (const std::exception& e) {
       throw std::runtime_error("hokuyo_urg " + port + ": cannot open: " + std::string(e.what()).substr(0, 200));
@@ -60,6 +106,10 @@ class HokuyoDevice : public LaserDevice {
     bool have = false, error = false;
     mrpt::obs::CObservation2DRangeScan obs;
     urg_.doProcessSimple(have, obs, error);
+    if (sums_.badLines() > bad_lines_) {
+      bad_lines_ = sums_.badLines();
+      throw ScanError("hokuyo_urg " + port_ + ": SCIP checksum wrong in line '" + sums_.lastBad().substr(0, 70) + "'");
+    }
     // MRPT does not tell a damaged reply from a lost link: the driver reopens after a stall.
     if (error && !have) throw ScanError("hokuyo_urg " + port_ + ": damaged reply, device error or link lost");
     if (!have) return false;
@@ -89,6 +139,8 @@ class HokuyoDevice : public LaserDevice {
 
  private:
   std::string port_, identity_;
+  scip::ReplySumCheck sums_;  // before urg_: the streams bound to it point here
+  std::uint64_t bad_lines_ = 0;
   Urg urg_;
   LaserScanData geometry_;
 };

@@ -16,14 +16,18 @@ double systemSeconds() {
 }
 
 void LaserDriverConfig::validate() const {
-  if (model != "hokuyo_urg" && model != "sick_tim5xx") {
-    throw std::invalid_argument("model: '" + model + "' has no driver here (hokuyo_urg | sick_tim5xx)");
+  if (model != "hokuyo_urg" && model != "sick_tim5xx" && model != "sick_lms1xx" && model != "rplidar") {
+    throw std::invalid_argument("model: '" + model + "' has no driver here (hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar)");
   }
   if (port.empty()) throw std::invalid_argument("port: empty (expected /dev/ttyACM0 or host:port)");
   std::string host;
   int tcp = 0;
-  if (!splitTcpAddress(port, &host, &tcp) && model == "sick_tim5xx") {
-    throw std::invalid_argument("port: sick_tim5xx speaks CoLa-A over TCP: expected host:port, got '" + port + "'");
+  const bool is_tcp = splitTcpAddress(port, &host, &tcp);
+  if (!is_tcp && (model == "sick_tim5xx" || model == "sick_lms1xx")) {
+    throw std::invalid_argument("port: " + model + " speaks CoLa-A over TCP: expected host:port, got '" + port + "'");
+  }
+  if (is_tcp && model == "rplidar") {
+    throw std::invalid_argument("port: rplidar (A1/A2) is a serial device: expected e.g. /dev/ttyUSB0, got '" + port + "'");
   }
   if (!(reconnect_period > 0.0 && reconnect_period <= 60.0)) throw std::invalid_argument("reconnect_period: must be within (0, 60] s");
   if (!(stall_timeout > 0.0 && stall_timeout <= 60.0)) throw std::invalid_argument("stall_timeout: must be within (0, 60] s");
@@ -51,7 +55,13 @@ bool LaserDriver::poll(LaserScanData* scan, double timeout) {
       return false;
     }
     try {
-      device_ = config_.model == "hokuyo_urg" ? openHokuyo(config_.port) : openTim(config_.port);
+      if (config_.model == "hokuyo_urg") {
+        device_ = openHokuyo(config_.port);
+      } else if (config_.model == "rplidar") {
+        device_ = openRplidar(config_.port);
+      } else {
+        device_ = openCola(config_.model, config_.port);
+      }
     } catch (const std::exception& e) {
       fail(e.what());
       return false;

@@ -68,7 +68,7 @@ void LaserServerOptions::validate(const LaserModel& model) const {
   if (fault == Fault::kChecksum && model.protocol != Protocol::kScip) {
     throw std::invalid_argument("fault: checksum needs a SCIP model (CoLa-A has no checksum)");
   }
-  if (!pty_link.empty() && model.protocol != Protocol::kScip) throw std::invalid_argument("pty: only SCIP lasers have a serial port");
+  if (!pty_link.empty() && model.protocol == Protocol::kColaA) throw std::invalid_argument("pty: the SICK lasers have no serial port");
   if (!(stall_time > 0.0)) throw std::invalid_argument("stall_time: must be > 0");
 }
 
@@ -135,6 +135,8 @@ void LaserEmulatorServer::drop(Link& link) {
   if (link.fd >= 0) ::close(link.fd);
   link.fd = -1;
   link.session.reset();
+  link.paced.clear();
+  link.paced_sent = 0;
 }
 
 void LaserEmulatorServer::serve(Link& link) {
@@ -151,6 +153,10 @@ void LaserEmulatorServer::serve(Link& link) {
 
 std::string LaserEmulatorServer::damage(std::string telegram) {
   const bool scip = model_.protocol == Protocol::kScip;
+  if (model_.protocol == Protocol::kRplidar && options_.fault == Fault::kMalformed) {
+    if (telegram.size() > 52) telegram[51] = static_cast<char>(telegram[51] & ~0x01);  // node 10's check bit
+    return telegram;
+  }
   switch (options_.fault) {
     case Fault::kMalformed: {
       // SCIP: a data line one character short; CoLa-A: a range that is not a number.
@@ -180,7 +186,8 @@ void LaserEmulatorServer::tick() {
   double t = 0.0;
   if (!pose_(&base, &t)) return;
   pending_ = source_.cast(base, t);
-  pending_due_ = now + model_.timeIncrement() * (model_.beams() - 1);
+  // A RPLIDAR streams each node as it is measured: its revolution leaves at once, paced.
+  pending_due_ = model_.protocol == Protocol::kRplidar ? now : now + model_.timeIncrement() * (model_.beams() - 1);
   has_pending_ = true;
 }
 
@@ -200,8 +207,24 @@ void LaserEmulatorServer::send(double now) {
       }
       telegram = damage(std::move(telegram));
     }
-    sendAll(link->fd, telegram);
+    if (model_.protocol == Protocol::kRplidar) {
+      link->paced.erase(0, link->paced_sent);  // a late revolution: the rest of the last one goes first
+      link->paced += telegram;
+      link->paced_sent = 0;
+      link->paced_from = now;
+      link->paced_rate = static_cast<double>(link->paced.size()) / model_.scanTime();
+    } else {
+      sendAll(link->fd, telegram);
+    }
   }
+}
+
+void LaserEmulatorServer::drain(Link& link, double now) {
+  if (link.fd < 0 || link.paced_sent >= link.paced.size()) return;
+  const auto due = std::min(link.paced.size(), static_cast<std::size_t>((now - link.paced_from) * link.paced_rate));
+  if (due <= link.paced_sent) return;
+  sendAll(link.fd, link.paced.substr(link.paced_sent, due - link.paced_sent));
+  link.paced_sent = due;
 }
 
 void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
@@ -222,6 +245,8 @@ void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
       }
     }
     tick();
+    drain(tcp_, steadySeconds());
+    drain(pty_, steadySeconds());
   }
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "amigobot_tracking/sensors/cola_a.h"
 #include "amigobot_tracking/sensors/scip.h"
 
 namespace amigobot_tracking {
@@ -114,65 +113,6 @@ class ScipSession : public LaserSession {
   std::uint64_t skip_ = 0;
 };
 
-// CoLa-A (TiM5xx).
-class ColaSession : public LaserSession {
- public:
-  ColaSession(LaserModel model, std::string serial) : model_(std::move(model)), serial_(std::move(serial)) {}
-
-  std::string receive(const std::string& bytes, const EmulatedScan& latest) override {
-    buffer_ += bytes;
-    std::string out, body;
-    while (cola::nextTelegram(&buffer_, &body)) {
-      requests_.push_back(body);
-      out += cola::frame(answer(body, latest));
-    }
-    return out;
-  }
-
-  std::string stream(const EmulatedScan& scan) override {
-    return streaming_ ? cola::frame(telegram("sSN", scan)) : "";
-  }
-
- private:
-  std::string answer(const std::string& body, const EmulatedScan& latest) {
-    if (body == "sRN LMDscandata") return telegram("sRA", latest);
-    if (body == "sEN LMDscandata 1" || body == "sEN LMDscandata 0") {
-      streaming_ = body.back() == '1';
-      return "sEA LMDscandata " + std::string(1, body.back());
-    }
-    if (body.rfind("sRI", 0) == 0 || body == "sRN DeviceIdent") return "sRA 0 B TiM5xx-emul 4 V1.0";
-    if (body == "sRN SerialNumber") return "sRA SerialNumber " + cola::hex(static_cast<std::uint32_t>(serial_.size())) + " " + serial_;
-    if (body == "sRN FirmwareVersion") return "sRA FirmwareVersion 4 V1.0";
-    if (body == "sRN SCdevicestate") return "sRA SCdevicestate 1";
-    if (body.rfind("sMN SetAccessMode", 0) == 0) return "sAN SetAccessMode 1";
-    if (body == "sMN LMCstartmeas" || body == "sMN LMCstopmeas") return "sAN " + body.substr(4) + " 0";
-    if (body == "sMN Run") return "sAN Run 1";
-    if (body == "sMN mSCreboot") return "sAN mSCreboot";
-    return "sFA 2";  // SICK error 2: unknown command
-  }
-
-  std::string telegram(const char* command, const EmulatedScan& scan) {
-    cola::ScanTelegram t;
-    t.command = command;
-    t.serial = 0x1234567;
-    t.telegram_counter = ++telegrams_;
-    t.scan_counter = static_cast<std::uint32_t>(scan.index);
-    t.time_since_start_us = static_cast<std::uint32_t>(std::llround(scan.t * 1e6));
-    t.time_of_transmission_us = static_cast<std::uint32_t>(std::llround((scan.t + model_.scanTime()) * 1e6));
-    t.scan_frequency = static_cast<std::uint32_t>(model_.cola.scan_frequency);
-    t.measurement_frequency = static_cast<std::uint32_t>(std::lround(1.0 / model_.timeIncrement() / 100.0));
-    t.start_angle = model_.cola.start_angle;
-    t.angular_step = static_cast<std::uint32_t>(model_.cola.angular_step);
-    t.ranges = deviceRanges(model_, scan.ranges);
-    return cola::encodeScan(t);
-  }
-
-  LaserModel model_;
-  std::string serial_, buffer_;
-  bool streaming_ = false;
-  std::uint32_t telegrams_ = 0;
-};
-
 }  // namespace
 
 std::vector<std::uint32_t> deviceRanges(const LaserModel& model, const std::vector<float>& ranges) {
@@ -190,8 +130,11 @@ std::vector<std::uint32_t> deviceRanges(const LaserModel& model, const std::vect
 }
 
 std::unique_ptr<LaserSession> makeSession(const LaserModel& model, const std::string& serial) {
-  if (model.protocol == Protocol::kScip) return std::make_unique<ScipSession>(model, serial);
-  return std::make_unique<ColaSession>(model, serial);
+  switch (model.protocol) {
+    case Protocol::kScip: return std::make_unique<ScipSession>(model, serial);
+    case Protocol::kColaA: return makeColaSession(model, serial);
+    default: return makeRplidarSession(model, serial);
+  }
 }
 
 }  // namespace sensors

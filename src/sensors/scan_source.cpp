@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "amigobot_tracking/sensors/rplidar.h"
 #include "amigobot_tracking/world/raycast.h"
 
 namespace amigobot_tracking {
@@ -30,6 +31,24 @@ core::Pose2 ScanSource::sensorPose(const core::Pose2& base) const {
   return sensor;
 }
 
+std::vector<float> ScanSource::revolution(const core::Pose2& sensor, const core::ScanGeometry& grid, std::vector<float>* angles) {
+  // The sample clock and the motor are not locked: the step between samples varies from one
+  // revolution to the next, and each revolution starts where the last one left off.
+  const RplidarGeometry& g = model_.rplidar;
+  std::uniform_real_distribution<double> jitter(-g.speed_jitter, g.speed_jitter);
+  const double step = 360.0 * model_.rate * (1.0 + jitter(random_)) / g.sample_rate;  // [deg]
+  std::vector<float> ranges;
+  for (; phase_ < 360.0; phase_ += step) {
+    const double angle = rplidar::nodeAngle(static_cast<std::uint16_t>(std::lround(phase_ * 64.0) % (360 * 64)));
+    core::ScanGeometry beam = grid;
+    beam.angle_min = options_.upside_down ? -angle : angle;  // looks at -angle in the mount frame
+    angles->push_back(static_cast<float>(angle));
+    ranges.push_back(world::raycastScan(sensor, world_, beam, 1)[0]);
+  }
+  phase_ -= 360.0;
+  return ranges;
+}
+
 EmulatedScan ScanSource::cast(const core::Pose2& base, double t) {
   core::ScanGeometry geometry = model_.geometry();
   if (options_.upside_down) {  // beam i looks at -angle_i in the mount frame
@@ -37,7 +56,11 @@ EmulatedScan ScanSource::cast(const core::Pose2& base, double t) {
     geometry.angle_increment = -geometry.angle_increment;
   }
   EmulatedScan scan;
-  scan.ranges = world::raycastScan(sensorPose(base), world_, geometry, model_.beams());
+  if (model_.protocol == Protocol::kRplidar) {
+    scan.ranges = revolution(sensorPose(base), geometry, &scan.angles);
+  } else {
+    scan.ranges = world::raycastScan(sensorPose(base), world_, geometry, model_.beams());
+  }
   scan.t = t;
   scan.index = index_++;
   std::normal_distribution<double> noise(0.0, options_.range_noise);

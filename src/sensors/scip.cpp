@@ -92,6 +92,26 @@ std::string parseScanRequest(const std::string& line, ScanRequest* request) {
   return "";
 }
 
+void ReplySumCheck::feed(const char* bytes, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (bytes[i] != '\n') {
+      line_ += bytes[i];
+      continue;
+    }
+    if (line_.empty()) {
+      echo_next_ = true;  // end of a reply
+    } else if (echo_next_) {
+      echo_next_ = false;
+    } else if (line_.size() >= 2 && line_.back() != checksum(line_.substr(0, line_.size() - 1)) &&
+               !(line_.size() >= 3 && line_[line_.size() - 2] == ';' &&
+                 line_.back() == checksum(line_.substr(0, line_.size() - 2)))) {
+      ++bad_;  // (an info line "LABEL:value;" + sum is summed without its ';')
+      last_bad_ = line_;
+    }
+    line_.clear();
+  }
+}
+
 }  // namespace scip
 }  // namespace sensors
 }  // namespace amigobot_tracking

@@ -1,7 +1,8 @@
 // laser_emulator: a ROS-free laser stand-in, the sensor-side twin of amigobot_emulator. It
 // speaks a real laser's protocol (SCIP 2.0 over TCP and a pseudo-terminal for hokuyo_urg,
-// CoLa-A over TCP for sick_tim5xx) and serves ray-cast scans of a world file from the
-// robot's true pose, read from amigobot_emulator's status socket.
+// CoLa-A over TCP for sick_tim5xx and sick_lms1xx, Slamtec's binary protocol over a
+// pseudo-terminal for rplidar) and serves ray-cast scans of a world file from the robot's
+// true pose, read from amigobot_emulator's status socket.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -31,16 +32,20 @@ void onSignal(int) { g_stop = true; }
 int main(int argc, char** argv) {
   std::string model_name = "hokuyo_urg", world_file, status_host = "127.0.0.1", fault = "none";
   int status_port = -1;
+  double lms_frequency = 25.0, lms_resolution = 0.5;
   std::vector<double> pose{0.0, 0.0, 0.0};
   sensors::ScanSourceOptions scan;
   sensors::LaserServerOptions server;
-  CLI::App app("A ROS-free laser stand-in: SCIP 2.0 (Hokuyo URG-04LX) or CoLa-A (SICK TiM5xx) scans of a world file.",
+  CLI::App app("A ROS-free laser stand-in: SCIP 2.0 (Hokuyo URG-04LX), CoLa-A (SICK TiM5xx, LMS1xx) or RPLIDAR "
+               "(Slamtec A1) scans of a world file.",
                "laser_emulator");
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-  app.add_option("--model", model_name, "hokuyo_urg | sick_tim5xx")->capture_default_str();
+  app.add_option("--model", model_name, "hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar")->capture_default_str();
+  app.add_option("--scan-frequency", lms_frequency, "sick_lms1xx: 25 | 50 [Hz]")->capture_default_str();
+  app.add_option("--resolution", lms_resolution, "sick_lms1xx: 0.5 | 0.25 [deg] (0.25 at 25 Hz only)")->capture_default_str();
   app.add_option("--tcp-port", server.tcp_port, "TCP port (0 = any free port; -1 = none)")->capture_default_str();
   app.add_option("--bind", server.bind_address, "IPv4 address to listen on")->capture_default_str();
-  app.add_option("--pty", server.pty_link, "hokuyo_urg: also serve a pseudo-terminal, symlinked at this path");
+  app.add_option("--pty", server.pty_link, "hokuyo_urg, rplidar: also serve a pseudo-terminal, symlinked at this path");
   app.add_option("--world", world_file, "world YAML (world/world.h): the disks, walls and polygons the laser sees");
   app.add_option("--status-port", status_port, "amigobot_emulator's status port: the robot's true pose (-1: --pose)")
       ->capture_default_str();
@@ -64,7 +69,12 @@ int main(int argc, char** argv) {
   }
   try {
     server.fault = sensors::parseFault(fault);
-    const sensors::LaserModel model = sensors::laserModel(model_name);
+    sensors::LaserModel model = sensors::laserModel(model_name);
+    if (model_name == "sick_lms1xx") {
+      sensors::setLms1xxScanConfig(&model, lms_frequency, lms_resolution);
+    } else if (lms_frequency != 25.0 || lms_resolution != 0.5) {
+      throw std::invalid_argument("--scan-frequency, --resolution: sick_lms1xx only");
+    }
     world::World room;
     if (!world_file.empty()) room = world::loadWorld(world_file);
     const core::Pose2 fixed{pose[0], pose[1], pose[2]};

@@ -143,6 +143,8 @@ TEST(LaserRos, HokuyoUrgOverScip) { runAgainst("hokuyo_urg"); }
 
 TEST(LaserRos, SickTim5xxOverColaA) { runAgainst("sick_tim5xx"); }
 
+TEST(LaserRos, SickLms1xxOverColaA) { runAgainst("sick_lms1xx"); }
+
 TEST(LaserRos, BadParameterStartsNothing) {
   ros::param::set("/bad_laser/model", "urg9");
   nodelet::Loader loader(false);

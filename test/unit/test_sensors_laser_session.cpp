@@ -56,7 +56,7 @@ TEST(LaserModel, DeviceGeometryComesFromTheProtocolNumbers) {
   EXPECT_NEAR(tim.angleMin(), -135.0 * M_PI / 180, 1e-12);
   EXPECT_NEAR(tim.angleIncrement(), 0.3333 * M_PI / 180, 1e-12);
   EXPECT_DOUBLE_EQ(tim.rate, 15.0);
-  EXPECT_THROW(laserModel("rplidar"), std::invalid_argument);
+  EXPECT_THROW(laserModel("lidar9000"), std::invalid_argument);
 }
 
 TEST(ScipSession, AnswersWhatMrptsDriverSendsAndStreamsScans) {
@@ -143,4 +143,33 @@ TEST(ScanSource, CastsFromTheMountPoseAndUpsideDownMirrors) {
   EXPECT_NEAR(mirrored.cast(base, 1.0).ranges[front], scan.ranges[front], 1e-3);
   options.dropout = 2.0;
   EXPECT_THROW(ScanSource(tim, world::World{}, options), std::invalid_argument);
+}
+
+TEST(ColaSession, Lms1xxNeedsTheClientLoginToMeasureAndReportsItsConfiguration) {
+  const LaserModel lms = laserModel("sick_lms1xx");
+  EXPECT_EQ(lms.beams(), 541);
+  EXPECT_NEAR(lms.angleMin(), -135.0 * M_PI / 180, 1e-12);
+  EXPECT_DOUBLE_EQ(lms.rate, 25.0);
+  auto session = makeSession(lms, "LMS1");
+  const EmulatedScan scan = rampScan(lms.beams());
+  auto ask = [&](const std::string& body) { return session->receive(cola::frame(body), scan); };
+  EXPECT_EQ(ask("sRN LMPscancfg"), cola::frame("sRA LMPscancfg 9C4 1 1388 FFF92230 225510"));  // 25 Hz, 0.5 deg, -45..225 deg
+  EXPECT_EQ(ask("sRN STlms").substr(0, 12), cola::frame("sRA STlms 3").substr(0, 12));           // idle
+  EXPECT_EQ(ask("sMN LMCstartmeas"), cola::frame("sFA 1"));                                    // not logged in
+  EXPECT_EQ(ask("sMN SetAccessMode 03 00000000"), cola::frame("sAN SetAccessMode 0"));           // wrong password
+  EXPECT_EQ(ask("sMN SetAccessMode 03 F4724744"), cola::frame("sAN SetAccessMode 1"));
+  EXPECT_EQ(ask("sEN LMDscandata 1"), cola::frame("sEA LMDscandata 1"));
+  EXPECT_EQ(session->stream(scan), "");  // enabled, but not measuring yet
+  EXPECT_EQ(ask("sMN LMCstartmeas"), cola::frame("sAN LMCstartmeas 0"));
+  EXPECT_EQ(ask("sMN Run"), cola::frame("sAN Run 1"));
+  EXPECT_EQ(ask("sRN STlms").substr(0, 12), cola::frame("sRA STlms 5").substr(0, 12));  // preparing
+  EXPECT_EQ(ask("sRN STlms").substr(0, 12), cola::frame("sRA STlms 7").substr(0, 12));  // ready
+  std::string buffer = session->stream(scan), body;
+  ASSERT_TRUE(cola::nextTelegram(&buffer, &body));
+  cola::ScanTelegram telegram;
+  ASSERT_EQ(cola::decodeScan(body, &telegram), "");
+  EXPECT_EQ(telegram.ranges.size(), 541u);
+  EXPECT_EQ(telegram.angular_step, 5000u);
+  EXPECT_EQ(telegram.scan_frequency, 2500u);
+  EXPECT_EQ(telegram.measurement_frequency, 180u);  // 720 beams per turn at 25 Hz, in 100 Hz
 }

@@ -1,6 +1,7 @@
 // SCIP 2.0 encoders against the specification's examples and a URG-04LX's own replies.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "amigobot_tracking/sensors/scip.h"
@@ -80,4 +81,20 @@ TEST(Scip, ScanRequestsAreParsedAndChecked) {
   EXPECT_NE(scip::parseScanRequest("MD0725004401000", &r), "");  // start after end
   EXPECT_NE(scip::parseScanRequest("MD00x4072501000", &r), "");
   EXPECT_NE(scip::parseScanRequest("VV", &r), "");
+}
+
+TEST(Scip, ReplySumCheckFindsAWrongSumInAStreamReadInPieces) {
+  const std::string good = scip::scanReply("MD0044004801000", "99", 1234, {500, 600, 0, 1, 4000}, 3);
+  scip::ReplySumCheck check;
+  const std::string info = scip::infoReply("VV", {"VEND:Hokuyo Automatic Co.,Ltd.", "SERI:H0000001"});
+  const std::string stream = scip::reply("BM", "00") + info + good + good;
+  for (std::size_t at = 0; at < stream.size(); at += 7) check.feed(stream.data() + at, std::min<std::size_t>(7, stream.size() - at));
+  EXPECT_EQ(check.badLines(), 0u);
+  std::string bad = good;
+  bad[bad.size() - 3] ^= 0x01;  // the last data line's sum, as laser_emulator --fault checksum
+  check.feed(bad.data(), bad.size());
+  EXPECT_EQ(check.badLines(), 1u);
+  EXPECT_EQ(check.lastBad().back(), bad[bad.size() - 3]);
+  check.feed("SCIP2.0\n0\n\n", 11);  // SCIP 1.1's status line has no sum
+  EXPECT_EQ(check.badLines(), 1u);
 }

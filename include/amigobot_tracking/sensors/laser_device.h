@@ -1,5 +1,6 @@
 // One connection to a laser, opened by its model's driver: MRPT's CHokuyoURG for SCIP 2.0
-// (serial or TCP), a CoLa-A client over MRPT's TCP socket for the SICK TiM5xx. A device
+// (serial or TCP), a CoLa-A client over MRPT's TCP socket for the SICK TiM5xx and LMS1xx,
+// a client of Slamtec's binary protocol over a POSIX serial port for the RPLIDAR. A device
 // reports scans with its own geometry and throws std::runtime_error once the link is broken;
 // LaserDriver (laser_driver.h) then drops it and opens a new one.
 #pragma once
@@ -41,9 +42,11 @@ class LaserDevice {
 };
 
 // Opens (connects, configures, starts the measurement) or throws std::runtime_error naming
-// the port. model: hokuyo_urg | sick_tim5xx; port: a serial device or "host:port".
+// the port. model: hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar; port: a serial device
+// or "host:port".
 std::unique_ptr<LaserDevice> openHokuyo(const std::string& port);
-std::unique_ptr<LaserDevice> openTim(const std::string& port);
+std::unique_ptr<LaserDevice> openCola(const std::string& model, const std::string& port);  // sick_tim5xx | sick_lms1xx
+std::unique_ptr<LaserDevice> openRplidar(const std::string& port);
 
 double systemSeconds();
 

@@ -13,7 +13,7 @@ namespace amigobot_tracking {
 namespace sensors {
 
 struct LaserDriverConfig {
-  std::string model = "hokuyo_urg";    // hokuyo_urg | sick_tim5xx
+  std::string model = "hokuyo_urg";    // hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar
   std::string port = "/dev/ttyACM0";   // serial device or host:port
   double reconnect_period = 1.0;       // [s] first wait before reopening
   double stall_timeout = 1.0;          // [s] no scan for this long: the link is reopened

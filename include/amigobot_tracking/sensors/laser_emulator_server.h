@@ -1,7 +1,9 @@
 // I/O of the laser emulator: one client at a time over TCP (a new connection replaces the
-// old one, as a device with one host) and, for SCIP, over a pseudo-terminal with a stable
-// symlink (the URG's USB-ACM port). A scan is cast at the model's rate from the robot pose
-// the status source gives, and streamed to the client that asked for it. Faults on request
+// old one, as a device with one host) and, for SCIP and RPLIDAR, over a pseudo-terminal with
+// a stable symlink (the URG's USB-ACM port, the RPLIDAR's USB-serial adapter). A scan is cast
+// at the model's rate from the robot pose the status source gives, and streamed to the
+// client that asked for it: at once when its last beam is measured, or for a RPLIDAR, whose
+// nodes leave as they are measured, paced over the revolution. Faults on request
 // damage every n-th streamed scan telegram. Plain POSIX sockets and poll().
 #pragma once
 
@@ -25,7 +27,7 @@ Fault parseFault(const std::string& name);
 struct LaserServerOptions {
   int tcp_port = 10940;  // 0 = any free port; -1 = none
   std::string bind_address = "127.0.0.1";
-  std::string pty_link;  // SCIP only; empty = none
+  std::string pty_link;  // SCIP and RPLIDAR only; empty = none
   Fault fault = Fault::kNone;
   int fault_every = 0;        // damage scan telegram n, 2n, ... (0 = never)
   double stall_time = 2.0;    // [s] silence of a stall
@@ -53,12 +55,16 @@ class LaserEmulatorServer {
   struct Link {
     int fd = -1;
     std::unique_ptr<LaserSession> session;
+    std::string paced;             // RPLIDAR: the revolution being sent
+    std::size_t paced_sent = 0;    // bytes of it already sent
+    double paced_from = 0.0, paced_rate = 0.0;  // [s], [bytes/s]
   };
   void accept();
   void drop(Link& link);
   void serve(Link& link);
   void tick();
   void send(double now);  // streams latest_ to the clients that asked for scans
+  void drain(Link& link, double now);  // sends the paced bytes that are due
   std::string damage(std::string telegram);
 
   LaserModel model_;

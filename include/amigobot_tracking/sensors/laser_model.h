@@ -1,7 +1,8 @@
 // The lasers the emulator imitates and the driver knows: their geometry in the sensor frame
 // (REP 103: x forward, angles counter-clockwise), rate and range, and the protocol numbers
 // behind that geometry. The SCIP numbers are what a URG-04LX answers to PP; the CoLa-A
-// numbers what a TiM5xx puts in its scan telegram.
+// numbers what a TiM5xx or an LMS1xx puts in its scan telegram (and the LMS1xx in its
+// LMPscancfg reply); the RPLIDAR numbers its sample rate and motor speed.
 #pragma once
 
 #include <string>
@@ -11,7 +12,7 @@
 namespace amigobot_tracking {
 namespace sensors {
 
-enum class Protocol { kScip, kColaA };
+enum class Protocol { kScip, kColaA, kRplidar };
 
 struct ScipGeometry {
   int ares = 1024;  // steps per revolution
@@ -27,17 +28,27 @@ struct ColaGeometry {
   int scan_frequency = 1500;  // [1/100 Hz]
 };
 
+// A RPLIDAR turns clockwise seen from above and samples at its own clock, so the angles of
+// one revolution are uneven and differ from the next one's. The driver publishes them on a
+// fixed grid of `bins` over 360 deg (REP 117: +inf where no sample fell).
+struct RplidarGeometry {
+  double sample_rate = 2000.0;  // [1/s] standard SCAN mode (GET_SAMPLERATE: 500 us)
+  double speed_jitter = 0.02;   // emulator: revolution speed varies by up to this fraction
+  int bins = 360;               // published grid: 1 deg, bin 0 at -180 deg
+};
+
 struct LaserModel {
-  std::string name;  // hokuyo_urg | sick_tim5xx
+  std::string name;  // hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar
   Protocol protocol = Protocol::kScip;
   ScipGeometry scip;
   ColaGeometry cola;
+  RplidarGeometry rplidar;
   double range_min = 0.02, range_max = 4.0;  // [m]
   double rate = 10.0;                        // [Hz] scans per second
 
   int beams() const;
   // The device's own angles: SCIP (step - AFRT) 2 pi / ARES; CoLa-A start + i step, turned
-  // by -90 deg from SICK's frame to REP 103.
+  // by -90 deg from SICK's frame to REP 103; RPLIDAR the published grid, -pi + i 2 pi / bins.
   double angleMin() const;
   double angleIncrement() const;
   double angleMax() const { return angleMin() + angleIncrement() * (beams() - 1); }
@@ -47,9 +58,14 @@ struct LaserModel {
   core::ScanGeometry geometry() const;
 };
 
-// hokuyo_urg (URG-04LX: 240 deg, 0.352 deg, 10 Hz, 4 m) or sick_tim5xx (TiM5xx: 270 deg,
-// 0.333 deg, 15 Hz, 10 m). Throws std::invalid_argument naming the model otherwise.
+// hokuyo_urg (URG-04LX: 240 deg, 0.352 deg, 10 Hz, 4 m), sick_tim5xx (TiM5xx: 270 deg,
+// 0.333 deg, 15 Hz, 10 m), sick_lms1xx (LMS111: 270 deg, 0.5 deg, 25 Hz, 20 m) or rplidar
+// (A1M8: 360 deg, ~1 deg, 5.5 Hz, 12 m). Throws std::invalid_argument naming the model
+// otherwise.
 LaserModel laserModel(const std::string& name);
+// The LMS1xx's scan configurations (mLMPsetscancfg): 25 Hz at 0.25 or 0.5 deg, 50 Hz at
+// 0.5 deg. Throws std::invalid_argument naming the bad value for another combination.
+void setLms1xxScanConfig(LaserModel* model, double frequency_hz, double resolution_deg);
 
 }  // namespace sensors
 }  // namespace amigobot_tracking

@@ -1,6 +1,7 @@
 // The sensor side of one client connection of the laser emulator: parses the client's
 // requests and answers as the device would (SCIP 2.0 for hokuyo_urg, CoLa-A for
-// sick_tim5xx), and streams scans once the client has asked for them. No I/O: the server
+// sick_tim5xx and sick_lms1xx, Slamtec's binary protocol for rplidar), and streams scans
+// once the client has asked for them. No I/O: the server
 // moves the bytes, which keeps the protocol logic testable.
 #pragma once
 
@@ -18,6 +19,7 @@ namespace sensors {
 // NaN a dropout. `t` [s] is the emulator's clock when the first beam was measured.
 struct EmulatedScan {
   std::vector<float> ranges;
+  std::vector<float> angles;  // [rad] sensor frame, one per range (RPLIDAR); empty: the model's grid
   double t = 0.0;
   std::uint64_t index = 0;
 };
@@ -42,6 +44,9 @@ class LaserSession {
 };
 
 std::unique_ptr<LaserSession> makeSession(const LaserModel& model, const std::string& serial);
+// The protocols' sessions (cola_session.cpp, rplidar_session.cpp); makeSession picks one.
+std::unique_ptr<LaserSession> makeColaSession(const LaserModel& model, const std::string& serial);
+std::unique_ptr<LaserSession> makeRplidarSession(const LaserModel& model, const std::string& serial);
 
 }  // namespace sensors
 }  // namespace amigobot_tracking

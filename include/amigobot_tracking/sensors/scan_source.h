@@ -1,5 +1,6 @@
 // What the emulated laser sees: a ray-cast scan of the world (disks, walls, polygons) from the laser's mount
 // pose on the robot, with optional Gaussian range noise and dropouts.
+// A RPLIDAR's scan is one revolution of samples at its own, uneven angles (EmulatedScan::angles).
 #pragma once
 
 #include <cstdint>
@@ -33,11 +34,14 @@ class ScanSource {
   core::Pose2 sensorPose(const core::Pose2& base) const;
 
  private:
+  std::vector<float> revolution(const core::Pose2& sensor, const core::ScanGeometry& grid, std::vector<float>* angles);
+
   LaserModel model_;
   world::World world_;
   ScanSourceOptions options_;
   std::mt19937 random_;
   std::uint64_t index_ = 0;
+  double phase_ = 0.0;  // [deg] RPLIDAR: device angle of the next sample
 };
 
 }  // namespace sensors

@@ -47,6 +47,22 @@ struct ScanRequest {
 // Empty when `line` (without its line feed) is a well-formed scan request, else what is wrong.
 std::string parseScanRequest(const std::string& line, ScanRequest* request);
 
+// Checks the sums of the replies in a byte stream as it is read: in each reply (lines up to
+// an empty line) every line after the echo whose length is at least 2 ends with the sum of
+// the rest (status and data lines; SCIP 1.1's one-character status has none), an info line
+// "LABEL:value;" with the sum of "LABEL:value".
+class ReplySumCheck {
+ public:
+  void feed(const char* bytes, std::size_t count);
+  std::uint64_t badLines() const { return bad_; }
+  const std::string& lastBad() const { return last_bad_; }  // the last line with a wrong sum
+
+ private:
+  std::string line_, last_bad_;
+  bool echo_next_ = true;  // the next line is a command echo
+  std::uint64_t bad_ = 0;
+};
+
 }  // namespace scip
 }  // namespace sensors
 }  // namespace amigobot_tracking

@@ -1,0 +1,109 @@
+// The CoLa-A side of the emulated SICK lasers. The TiM5xx answers what it is asked and
+// streams once LMDscandata is enabled. The LMS1xx, as its telegram listing describes, also
+// reports its scan configuration (LMPscancfg) and status (STlms), and measures only after
+// an authorised client (SetAccessMode 03 with the client password) started it (LMCstartmeas).
+#include <cmath>
+#include <memory>
+
+#include "amigobot_tracking/sensors/cola_a.h"
+#include "amigobot_tracking/sensors/laser_session.h"
+
+namespace amigobot_tracking {
+namespace sensors {
+namespace {
+
+constexpr const char* kClientPassword = "F4724744";  // SICK's default for "authorised client"
+
+class ColaSession : public LaserSession {
+ public:
+  ColaSession(LaserModel model, std::string serial)
+      : model_(std::move(model)), serial_(std::move(serial)), lms_(model_.name == "sick_lms1xx"),
+        measuring_(!lms_) {}
+
+  std::string receive(const std::string& bytes, const EmulatedScan& latest) override {
+    buffer_ += bytes;
+    std::string out, body;
+    while (cola::nextTelegram(&buffer_, &body)) {
+      requests_.push_back(body);
+      out += cola::frame(answer(body, latest));
+    }
+    return out;
+  }
+
+  std::string stream(const EmulatedScan& scan) override {
+    return streaming_ && measuring_ ? cola::frame(telegram("sSN", scan)) : "";
+  }
+
+ private:
+  std::string answer(const std::string& body, const EmulatedScan& latest) {
+    if (body == "sRN LMDscandata") return measuring_ ? telegram("sRA", latest) : "sFA 4";  // local condition failed
+    if (body == "sEN LMDscandata 1" || body == "sEN LMDscandata 0") {
+      streaming_ = body.back() == '1';
+      return "sEA LMDscandata " + std::string(1, body.back());
+    }
+    if (body.rfind("sRI", 0) == 0 || body == "sRN DeviceIdent") {
+      return lms_ ? "sRA DeviceIdent B LMS111-emul 5 V1.80" : "sRA 0 B TiM5xx-emul 4 V1.0";
+    }
+    if (body == "sRN SerialNumber") return "sRA SerialNumber " + cola::hex(static_cast<std::uint32_t>(serial_.size())) + " " + serial_;
+    if (body == "sRN FirmwareVersion") return "sRA FirmwareVersion 4 V1.0";
+    if (body == "sRN SCdevicestate") return "sRA SCdevicestate 1";
+    if (body.rfind("sMN SetAccessMode", 0) == 0) {
+      authorised_ = body == std::string("sMN SetAccessMode 03 ") + kClientPassword;
+      return lms_ && !authorised_ ? "sAN SetAccessMode 0" : "sAN SetAccessMode 1";
+    }
+    if (body == "sMN LMCstartmeas" || body == "sMN LMCstopmeas") {
+      if (lms_ && !authorised_) return "sFA 1";  // access denied
+      measuring_ = body == "sMN LMCstartmeas";
+      status_queries_ = 0;
+      return "sAN " + body.substr(4) + " 0";
+    }
+    if (body == "sMN Run") {
+      authorised_ = false;  // Run ends the configuration session
+      return "sAN Run 1";
+    }
+    if (body == "sMN mSCreboot") return "sAN mSCreboot";
+    if (lms_ && body == "sRN LMPscancfg") {
+      const ColaGeometry& g = model_.cola;
+      return "sRA LMPscancfg " + cola::hex(static_cast<std::uint32_t>(g.scan_frequency)) + " 1 " +
+             cola::hex(static_cast<std::uint32_t>(g.angular_step)) + " " + cola::hexSigned(g.start_angle) + " " +
+             cola::hexSigned(g.start_angle + g.angular_step * (g.beams - 1));
+    }
+    if (lms_ && body == "sRN STlms") {
+      // 3 idle; once started, 5 (preparing) for the first query, then 7 (ready for measurement).
+      const int status = !measuring_ ? 3 : (status_queries_++ == 0 ? 5 : 7);
+      return "sRA STlms " + std::to_string(status) + " 0 8 00:00:00 A 01.01.2000 0 0 0";
+    }
+    return "sFA 2";  // SICK error 2: unknown command
+  }
+
+  std::string telegram(const char* command, const EmulatedScan& scan) {
+    cola::ScanTelegram t;
+    t.command = command;
+    t.serial = 0x1234567;
+    t.telegram_counter = ++telegrams_;
+    t.scan_counter = static_cast<std::uint32_t>(scan.index);
+    t.time_since_start_us = static_cast<std::uint32_t>(std::llround(scan.t * 1e6));
+    t.time_of_transmission_us = static_cast<std::uint32_t>(std::llround((scan.t + model_.scanTime()) * 1e6));
+    t.scan_frequency = static_cast<std::uint32_t>(model_.cola.scan_frequency);
+    t.measurement_frequency = static_cast<std::uint32_t>(std::lround(1.0 / model_.timeIncrement() / 100.0));
+    t.start_angle = model_.cola.start_angle;
+    t.angular_step = static_cast<std::uint32_t>(model_.cola.angular_step);
+    t.ranges = deviceRanges(model_, scan.ranges);
+    return cola::encodeScan(t);
+  }
+
+  LaserModel model_;
+  std::string serial_, buffer_;
+  bool lms_, measuring_, streaming_ = false, authorised_ = false;
+  int status_queries_ = 0;
+  std::uint32_t telegrams_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<LaserSession> makeColaSession(const LaserModel& model, const std::string& serial) {
+  return std::make_unique<ColaSession>(model, serial);
+}
+
+}  // namespace sensors
+}  // namespace amigobot_tracking
