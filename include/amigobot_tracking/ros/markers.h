@@ -26,9 +26,10 @@ struct MarkerScene {
   std::string status;                          // shown in the text line
 };
 
-// The first marker is DELETEALL, so obstacles that disappeared vanish from rviz.
-// Namespaces: rho, target, target_velocity, offset_point, body, safety_disk, laser_obstacles,
-// virtual_obstacles, virtual_obstacle_ids, u_c, diamond, diamond_u, diamond_u_d, text.
+// The first marker is DELETEALL (in global_frame), so obstacles that disappeared vanish from
+// rviz. Ids count from 0 within each namespace. Namespaces: rho, target, target_velocity,
+// offset_point, body, safety_disk, laser_obstacles, virtual_obstacles, virtual_obstacle_ids,
+// u_c, diamond, diamond_u, diamond_u_d, text (status line), legend (what the shapes mean).
 visualization_msgs::MarkerArray buildMarkers(const MarkerScene& scene);
 
 }  // namespace ros_layer
