@@ -66,7 +66,7 @@ def main():
                         help="the paper's law alone (without config/demo_tracking.yaml's tangential escape)")
     parser.add_argument("--tolerance", type=float, default=0.05,
                         help="[m] tracking verdict: true |e| within rho_inf + this (localisation error, sampling skew)")
-    parser.add_argument("--recovery-time", type=float, default=20.0,
+    parser.add_argument("--recovery-time", type=float, default=15.0,
                         help="[s] tracking verdict: not judged this long after the start and after each obstacle")
     args = parser.parse_args()
     course_s = course_duration(REFERENCE)
@@ -89,7 +89,8 @@ def main():
         tcp, status, laser = sp.free_port(), sp.free_port(), sp.free_port()
         launch = procs.start("sim_launch", ["roslaunch", "amigobot_tracking", "sim.launch", f"tcp_port:={tcp}",
                                             f"status_port:={status}", f"laser_port:={laser}",
-                                            f"start_delay:={START_DELAY_S}", "rviz:=true"]
+                                            f"start_delay:={START_DELAY_S}", f"world:={WORLD}",
+                                            f"reference:={REFERENCE}", "rviz:=true"]
                              + ([] if args.paper_law else [f"tracking_params:={DEMO_PARAMS}"]),
                              env)
         t_launch = time.time()
