@@ -123,6 +123,8 @@ def fig5_error(d, meta, out_dir, dpi, title):
     ax.plot(d["t"], d["e_norm"], "r-", lw=0.9, label=r"$\|e\|$ (controller)")
     if "p_r_true_x" in d and np.any(d["p_r_true_x"] != 0):
         true_e = np.hypot(d["p_d_x"] - d["p_r_true_x"], d["p_d_y"] - d["p_r_true_y"])
+        # A recorded step without a controller output (stale input) has no target: a gap, not a spike.
+        true_e[(d["p_d_x"] == 0) & (d["p_d_y"] == 0) & (d["e_norm"] == 0)] = np.nan
         ax.plot(d["t"], true_e, color="tab:orange", lw=0.6, label=r"$\|e^*\|$ (true offset point)")
     if np.any(d["rho"] > 0):
         ax.plot(d["t"], d["rho"], "k-", lw=1.0, label=r"$\rho(t)$")

@@ -171,6 +171,11 @@ def tracking_params(env):
     return yaml.safe_load(res.stdout) or {}
 
 
+def num(value, digits=3):
+    """Floats to `digits` significant figures for the tables; anything else as it is."""
+    return f"{value:.{digits}g}" if isinstance(value, float) else value
+
+
 def write_summary(out, report, shots, wall, law):
     metrics = {}
     path = os.path.join(out, "metrics.json")
@@ -188,7 +193,7 @@ def write_summary(out, report, shots, wall, law):
                   f"{tracking['recovery_time_s']:g} s after the start and after each obstacle episode (a true "
                   f"clearance of the effective disk around p_r or around the target inside δ = {tracking['band']:g} m), "
                   f"and at the end. Judged {100 * (tracking['judged_fraction'] or 0):.0f} % of the run: max "
-                  f"{tracking['max_judged_true_error']} m; final {tracking['final_true_error']} m. "
+                  f"{num(tracking['max_judged_true_error'])} m; final {num(tracking['final_true_error'])} m. "
                   + (tracking["reason"] or "Passed."), "",
                   "| obstacle episode [s] | peak ‖e*‖ [m] | back under the bound after [s] |", "|---|---|---|"]
         lines += [f"| {e['start_s']:.1f}–{e['end_s']:.1f} | {e['peak_true_error']:.3f} | "
@@ -198,7 +203,7 @@ def write_summary(out, report, shots, wall, law):
     lines += ["```", report.stdout.strip(), report.stderr.strip(), "```", ""]
     if metrics:
         lines += ["| metric | value |", "|---|---|"]
-        lines += [f"| {k} | {v} |" for k, v in metrics.items() if k not in ("scenario", "tracking")]
+        lines += [f"| {k} | {num(v, 4)} |" for k, v in metrics.items() if k not in ("scenario", "tracking")]
         lines.append("")
     lines += [f"![{os.path.basename(s)}]({os.path.basename(s)})" for s in shots]
     lines += [f"![{f}]({f})" for f in sorted(os.listdir(out)) if f.startswith("fig") and f.endswith(".png")]

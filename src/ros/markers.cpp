@@ -171,12 +171,12 @@ visualization_msgs::MarkerArray buildMarkers(const MarkerScene& scene) {
     line << scene.status;
     b.text("text", scene.pose.position() + Eigen::Vector2d(0.0, -0.5), line.str());
     // What the shapes are (untick the "legend" namespace in rviz's Displays panel to hide it).
-    b.text("legend", scene.pose.position() + Eigen::Vector2d(0.0, -0.95),
+    b.text("legend", scene.pose.position() + Eigen::Vector2d(0.0, -1.0),
            "white diamond: (v, w) limits U, green dot applied, red desired\n"
            "cyan circle: safety disk R+r around the offset point (cyan dot)\n"
            "yellow arrow: repulsion k_o u_c; red dot + pink arrow: target, v_hat\n"
            "ring around the target: rho (green: |e| << rho, red: near it)",
-           0.07, color(0.85f, 0.85f, 0.85f));
+           0.09, color(0.85f, 0.85f, 0.85f));
   }
   return b.take();
 }

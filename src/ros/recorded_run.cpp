@@ -99,8 +99,9 @@ void RecordedRun::addState(const TrackingState& s) {
   m.passing_side = s.passing_side;
   if (s.valid && s.rho > 0.0 && e.norm() < s.rho) ++within_rho_;
 
+  // A step without a controller output (stale pose or target) carries no target: not judged.
   const double effective_radius = config_.body_safe ? config_.robot_radius + config_.offset : config_.robot_radius;
-  tracking_.push_back(sim::TrackingSample{t, m.e_true.norm(), core::clearance(p_r_true, effective_radius, obstacles),
+  if (s.valid) tracking_.push_back(sim::TrackingSample{t, m.e_true.norm(), core::clearance(p_r_true, effective_radius, obstacles),
                                           core::clearance(p_d, effective_radius, obstacles)});
   // v_d_x/y (col 12, 13) and h (col 26) are filled by finish().
   step.row = {t,          truth_.x,      truth_.y,      truth_.theta, s.p_r.x,      s.p_r.y,      p_d.x(),

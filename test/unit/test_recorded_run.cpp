@@ -127,6 +127,10 @@ static ros_layer::RecordedRunSummary obstacleRun(const ros_layer::RecordedRunCon
     run.addTruth(100.0 + t, core::Pose2{0.1 * t, 0.0, 0.0});
     TrackingState s = state(t, true, 0.05, 0.5);
     s.p_d.x = 0.1 * t + 0.3 + (t >= 15.0 - 1e-9 && t < 27.0 - 1e-9 ? 0.8 : 0.05);
+    if (k == 700) {  // a stale input at t = 35 s: zero command, no output, p_d left at 0 by the node
+      s.valid = false;
+      s.p_d.x = 0.0;
+    }
     run.addState(s);
   }
   run.finish();
