@@ -66,7 +66,7 @@ def main():
                         help="the paper's law alone (without config/demo_tracking.yaml's tangential escape)")
     parser.add_argument("--tolerance", type=float, default=0.05,
                         help="[m] tracking verdict: true |e| within rho_inf + this (localisation error, sampling skew)")
-    parser.add_argument("--recovery-time", type=float, default=15.0,
+    parser.add_argument("--recovery-time", type=float, default=10.0,
                         help="[s] tracking verdict: not judged this long after the start and after each obstacle")
     args = parser.parse_args()
     course_s = course_duration(REFERENCE)

@@ -21,7 +21,7 @@ namespace sim {
 struct TrackingVerdictConfig {
   double rho_inf = 0.1;         // [m] the law's steady-state bound
   double tolerance = 0.05;      // [m] added to rho_inf: localisation error, sampling skew
-  double recovery_time = 15.0;  // [s] after the start and after each episode, not judged
+  double recovery_time = 10.0;  // [s] after the start and after each episode, not judged
   double band = 0.25;           // [m] detection band delta: an episode while a clearance < band
 
   std::string validate() const;  // empty when valid, else "key: reason"
