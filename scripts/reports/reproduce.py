@@ -223,6 +223,13 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
             best = min(("paper", "fixed_rho", "proportional"), key=lambda law: results[n][law][key])
             wins.append(f"{n}: {LAW_NAMES[best]}")
         w(f"- Lowest {label} (proposed, fixed ρ, proportional): " + "; ".join(wins) + ".")
+    beats = [n for n in results if results[n]["paper"]["ise"] < results[n]["proportional"]["ise"]]
+    loses = [n for n in results if n not in beats]
+    frugal = [n for n in results if results[n]["paper"]["tec"] <= min(results[n][law]["tec"] for law in LAW_NAMES)]
+    w("- Which law wins where, plainly: on the integral error ∫‖e‖²dt the proposed law beats the proportional baseline on "
+      + (", ".join(beats) or "no scenario") + " and loses to it on " + (", ".join(loses) or "none")
+      + "; it spends the least control energy (TEC) on " + (", ".join(frugal) or "no scenario")
+      + ". Fixed ρ's error is low only with the envelope rule rescuing it (widenings above).")
     every = [m for r in results.values() for m in r.values()]
     bad = sum(int(m["diamond_violations"]) + int(m["nan_count"]) for m in every)
     offset_hits = sum(int(m["offset_collisions"]) for m in every)
