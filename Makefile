@@ -48,8 +48,10 @@ test: build ## build and run every test, ending with `N passed, N failed` (~10 m
 
 # The whole stack on the emulated robot, headless (scripts/reports/run_demo.py): private master,
 # sim.launch with rviz under Xvfb, a virtual obstacle through the topic, a rosbag, and a
-# scored report in report/demo (non-zero exit on a collision, a command outside the
-# diamond, or a run that did not happen). DEMO_ARGS="--paper-law": the paper's law alone.
+# scored report in report/demo. Exit 0: safe and tracked; 3: a collision or a command outside
+# the diamond; 4: the run did not happen; 5: safe, but the true error was not back within
+# rho_inf + tolerance after the obstacles (or at the end). DEMO_ARGS="--paper-law": the paper's
+# law alone; DEMO_ARGS="--tolerance 0.05 --recovery-time 10": the tracking verdict's margins.
 demo: build ## the whole stack on the emulated robot, headless, scored report in report/demo
 	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 

@@ -13,6 +13,7 @@ amigobot_add_library(amigobot_tracking_sim
   src/sim/simulator.cpp
   src/sim/monte_carlo.cpp
   src/sim/json.cpp
+  src/sim/tracking_verdict.cpp
 )
 target_include_directories(amigobot_tracking_sim PUBLIC include)
 target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML_CPP_LIBRARIES} nlohmann_json::nlohmann_json)
@@ -22,7 +23,7 @@ target_link_libraries(amigobot_sim amigobot_tracking_sim)
 target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/reports/plot_run.py")
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit closed_loop metrics baselines controller_extensions)
+  foreach(unit closed_loop metrics tracking_verdict baselines controller_extensions)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_sim)
   endforeach()

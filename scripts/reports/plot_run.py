@@ -12,6 +12,7 @@ import csv
 import json
 import os
 import sys
+import textwrap
 
 import matplotlib
 
@@ -37,6 +38,28 @@ def load_meta(csv_path):
         return {}
     with open(path) as f:
         return json.load(f).get("scenario", {})
+
+
+def titled(ax, text):
+    """Long run names wrap instead of being cut at the figure's edge."""
+    ax.set_title(textwrap.fill(text, 70), fontsize=9)
+
+
+def offset_point(d):
+    """The true offset point when the CSV has it (older recorded runs left it zero)."""
+    if "p_r_true_x" in d and np.any(d["p_r_true_x"] != 0) or "p_r_true_y" in d and np.any(d["p_r_true_y"] != 0):
+        return d["p_r_true_x"], d["p_r_true_y"], "offset point $p_r$ (true)"
+    return d["p_r_x"], d["p_r_y"], "offset point $p_r$ (controller)"
+
+
+def moving_average(t, x, window):
+    """Centred moving average over `window` seconds (samples need not be even)."""
+    out = np.empty_like(x)
+    lo = np.searchsorted(t, t - window / 2, side="left")
+    hi = np.searchsorted(t, t + window / 2, side="right")
+    csum = np.concatenate([[0.0], np.cumsum(x)])
+    out[:] = (csum[hi] - csum[lo]) / np.maximum(hi - lo, 1)
+    return out
 
 
 def save(fig, out_dir, name, dpi):
@@ -66,7 +89,8 @@ def fig3_xy(d, meta, out_dir, dpi, title):
     ax.plot(d["p_d_x"], d["p_d_y"], "g-", lw=1.2, label="reference $p_d$")
     ax.plot(d["x"], d["y"], "r-", lw=1.0, label="robot centre $p$")
     # The true offset point (p_r_x is the controller's belief, late when the pose is).
-    ax.plot(d.get("p_r_true_x", d["p_r_x"]), d.get("p_r_true_y", d["p_r_y"]), "b--", lw=0.6, label="offset point $p_r$")
+    p_r_x, p_r_y, p_r_label = offset_point(d)
+    ax.plot(p_r_x, p_r_y, "b--", lw=0.6, label=p_r_label)
     radius = meta.get("robot_radius")
     if radius:
         ax.add_patch(plt.Circle((d["x"][worst], d["y"][worst]), radius, fill=False, color="r", lw=0.8,
@@ -79,7 +103,7 @@ def fig3_xy(d, meta, out_dir, dpi, title):
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
-    ax.set_title(f"Fig. 3: path — {title}", fontsize=9)
+    titled(ax, f"Fig. 3: path — {title}")
     ax.legend(fontsize=7, loc="best")
     ax.grid(alpha=0.3)
     save(fig, out_dir, "fig3_xy.png", dpi)
@@ -90,22 +114,29 @@ def fig4_xy_time(d, out_dir, dpi, title):
     for ax, axis in zip(axes, "xy"):
         ax.plot(d["t"], d[f"p_d_{axis}"], "g-", label=f"${axis}_d$")
         ax.plot(d["t"], d[axis], "r-", lw=0.9, label=f"${axis}$ (centre)")
-        ax.set_ylabel(f"{axis} [m]")
+        ax.set_ylabel(f"position {axis} [m]")
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("t [s]")
-    axes[0].set_title(f"Fig. 4: position against time — {title}", fontsize=9)
+    titled(axes[0], f"Fig. 4: position against time — {title}")
     save(fig, out_dir, "fig4_xy_time.png", dpi)
 
 
-def fig5_error(d, out_dir, dpi, title):
+def fig5_error(d, meta, out_dir, dpi, title):
     fig, ax = plt.subplots(figsize=(7, 3.5))
-    ax.plot(d["t"], d["e_norm"], "r-", lw=0.9, label=r"$\|e\|$")
+    ax.plot(d["t"], d["e_norm"], "r-", lw=0.9, label=r"$\|e\|$ (controller)")
+    if "p_r_true_x" in d and np.any(d["p_r_true_x"] != 0):
+        true_e = np.hypot(d["p_d_x"] - d["p_r_true_x"], d["p_d_y"] - d["p_r_true_y"])
+        # A recorded step without a controller output (stale input) has no target: a gap, not a spike.
+        true_e[(d["p_d_x"] == 0) & (d["p_d_y"] == 0) & (d["e_norm"] == 0)] = np.nan
+        ax.plot(d["t"], true_e, color="tab:orange", lw=0.6, label=r"$\|e^*\|$ (true offset point)")
     if np.any(d["rho"] > 0):
         ax.plot(d["t"], d["rho"], "k-", lw=1.0, label=r"$\rho(t)$")
+    if meta.get("rho_inf"):
+        ax.axhline(meta["rho_inf"], color="0.4", ls=":", lw=0.8, label=r"$\rho_\infty$")
     ax.set_xlabel("t [s]")
-    ax.set_ylabel("[m]")
-    ax.set_title(f"Fig. 5: tracking error against the performance function — {title}", fontsize=9)
+    ax.set_ylabel(r"error $\|e\|$, bound $\rho$ [m]")
+    titled(ax, f"Fig. 5: tracking error against the performance function — {title}")
     ax.legend(fontsize=7)
     ax.grid(alpha=0.3)
     save(fig, out_dir, "fig5_error_rho.png", dpi)
@@ -115,15 +146,15 @@ def fig6_commands(d, out_dir, dpi, title):
     fig, axes = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
     axes[0].plot(d["t"], d["v_d"], "c-", lw=0.7, label="$v_d$ desired")
     axes[0].plot(d["t"], d["v"], "b-", lw=0.9, label="$v$ applied")
-    axes[0].set_ylabel("v [m/s]")
+    axes[0].set_ylabel("forward speed v [m/s]")
     axes[1].plot(d["t"], d["omega_d"], "c-", lw=0.7, label=r"$\omega_d$ desired")
     axes[1].plot(d["t"], d["omega"], "b-", lw=0.9, label=r"$\omega$ applied")
-    axes[1].set_ylabel(r"$\omega$ [rad/s]")
+    axes[1].set_ylabel(r"turn rate $\omega$ [rad/s]")
     for ax in axes:
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("t [s]")
-    axes[0].set_title(f"Fig. 6: commands — {title}", fontsize=9)
+    titled(axes[0], f"Fig. 6: commands — {title}")
     save(fig, out_dir, "fig6_commands.png", dpi)
 
 
@@ -133,29 +164,32 @@ def fig7_diamond(d, meta, out_dir, dpi, title):
     fig, ax = plt.subplots(figsize=(5, 5))
     ax.fill([v_max, 0, -v_max, 0], [0, w_max, 0, -w_max], color="tab:blue", alpha=0.15, label="U")
     ax.plot(d["v"], d["omega"], "r.", ms=1.5, label="applied $u$")
-    ax.set_xlabel("v [m/s]")
-    ax.set_ylabel(r"$\omega$ [rad/s]")
-    ax.set_title(f"Fig. 7: u inside the diamond U — {title}", fontsize=9)
+    ax.set_xlabel("forward speed v [m/s]")
+    ax.set_ylabel(r"turn rate $\omega$ [rad/s]")
+    titled(ax, f"Fig. 7: u inside the diamond U — {title}")
     ax.legend(fontsize=7)
     ax.grid(alpha=0.3)
     save(fig, out_dir, "fig7_diamond.png", dpi)
 
 
 def fig8_estimator(d, meta, out_dir, dpi, title):
-    fig, axes = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
+    # The raw error is drawn light (a sampled target makes it jitter), its 1 s average dark.
+    truth = meta.get("velocity_truth", "the reference's own velocity")
+    fig, axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
     for ax, axis in zip(axes, "xy"):
         err = d[f"v_d_{axis}"] - d[f"v_hat_{axis}"]
-        ax.plot(d["t"], err, "m-", lw=0.8, label=rf"$\dot{{{axis}}}_d - \hat v_{axis}$")
-        ax.set_ylabel("[m/s]")
-        ax.legend(fontsize=7)
+        ax.plot(d["t"], err, color="m", alpha=0.3, lw=0.5, label=rf"$\dot{{{axis}}}_d - \hat v_{axis}$")
+        ax.plot(d["t"], moving_average(d["t"], err, 1.0), "k-", lw=0.9, label="1 s average")
+        ax.set_ylabel(f"velocity error {axis} [m/s]")
+        ax.legend(fontsize=7, loc="upper right")
         ax.grid(alpha=0.3)
         settled = d["t"] > 0.5
         if np.any(settled):
-            lim = max(1e-3, 1.2 * float(np.max(np.abs(err[settled]))))
+            lim = max(1e-3, 1.2 * float(np.percentile(np.abs(err[settled]), 99)))
             ax.set_ylim(-lim, lim)
     axes[-1].set_xlabel("t [s]")
-    axes[0].set_title(f"Fig. 8: velocity estimation error ({meta.get('estimator', 'paper')}; "
-                      f"transient t < 0.5 s clipped) — {title}", fontsize=9)
+    titled(axes[0], f"Fig. 8: velocity estimation error ({meta.get('estimator', 'paper')} estimator; truth: {truth}; "
+                    f"t < 0.5 s and the top 1 % clipped) — {title}")
     save(fig, out_dir, "fig8_estimator.png", dpi)
 
 
@@ -174,7 +208,7 @@ def main():
     title = f"{meta.get('name', os.path.basename(out_dir))} [{meta.get('variant', '?')}]"
     fig3_xy(d, meta, out_dir, args.dpi, title)
     fig4_xy_time(d, out_dir, args.dpi, title)
-    fig5_error(d, out_dir, args.dpi, title)
+    fig5_error(d, meta, out_dir, args.dpi, title)
     fig6_commands(d, out_dir, args.dpi, title)
     fig7_diamond(d, meta, out_dir, args.dpi, title)
     fig8_estimator(d, meta, out_dir, args.dpi, title)

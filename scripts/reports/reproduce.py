@@ -26,6 +26,7 @@ SCENARIOS = {
     "paper_5_2_rose": "Section 5.2: rose curve, Table 1 with v̄ = ω̄ = 15, three disks on the curve (ours)",
     "experiment_5_3": "Section 5.3: real-robot gains, tele-operated target, square virtual obstacle, 10 Hz noisy delayed samples",
 }
+LAW_NAMES = {"paper": "proposed", "fixed_rho": "fixed ρ", "proportional": "proportional"}
 BASELINES = [
     ("paper", []),
     ("fixed_rho", ["--variant", "fixed_rho"]),
@@ -178,6 +179,9 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
     w("")
     w("- **ASE** = (1/T) Σ h_k ‖e_k‖² [m²] — time-average squared tracking error (left Riemann sum of (1/T)∫‖e‖²dt).")
     w("- **AAE** = (1/T) Σ h_k ‖e_k‖ [m] — time-average absolute (Euclidean) tracking error.")
+    w("- **ISE** = Σ h_k ‖e_k‖² = T·ASE [m² s] and **IAE** = Σ h_k ‖e_k‖ = T·AAE [m s] — the integrals ∫‖e‖²dt and")
+    w("  ∫‖e‖dt themselves (the paper's indices may be these; T is the same for every law of a scenario, so the ratios")
+    w("  between laws are the same as for ASE and AAE).")
     w("- **TEC** = Σ h_k (v_k² + ω_k²) [m²/s and rad²/s added numerically] — control energy of the applied command.")
     w("- Clearances: offset = distance from the disk of radius R around p_r to the nearest obstacle surface (what")
     w("  the paper guarantees); body = the same for the disk of radius R around the centre p (the real robot).")
@@ -213,6 +217,19 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
     better = [n for n in results if results[n]["proportional"]["ase"] < results[n]["paper"]["ase"]]
     w("- The proportional baseline has the lower ASE on: " + (", ".join(better) if better else "none") +
       " (the scenario's gains; k_p = k_d/ρ_∞).")
+    for key, label in (("ise", "ISE ∫‖e‖²dt"), ("iae", "IAE ∫‖e‖dt"), ("tec", "TEC")):
+        wins = []
+        for n in results:
+            best = min(("paper", "fixed_rho", "proportional"), key=lambda law: results[n][law][key])
+            wins.append(f"{n}: {LAW_NAMES[best]}")
+        w(f"- Lowest {label} (proposed, fixed ρ, proportional): " + "; ".join(wins) + ".")
+    beats = [n for n in results if results[n]["paper"]["ise"] < results[n]["proportional"]["ise"]]
+    loses = [n for n in results if n not in beats]
+    frugal = [n for n in results if results[n]["paper"]["tec"] <= min(results[n][law]["tec"] for law in LAW_NAMES)]
+    w("- Which law wins where, plainly: on the integral error ∫‖e‖²dt the proposed law beats the proportional baseline on "
+      + (", ".join(beats) or "no scenario") + " and loses to it on " + (", ".join(loses) or "none")
+      + "; it spends the least control energy (TEC) on " + (", ".join(frugal) or "no scenario")
+      + ". Fixed ρ's error is low only with the envelope rule rescuing it (widenings above).")
     every = [m for r in results.values() for m in r.values()]
     bad = sum(int(m["diamond_violations"]) + int(m["nan_count"]) for m in every)
     offset_hits = sum(int(m["offset_collisions"]) for m in every)
@@ -235,7 +252,8 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
         w("")
         w("| index | proposed | fixed ρ | ratio | proportional | ratio |")
         w("|---|---|---|---|---|---|")
-        for key, label in [("ase", "ASE [m²]"), ("aae", "AAE [m]"), ("tec", "TEC")]:
+        for key, label in [("ase", "ASE [m²]"), ("aae", "AAE [m]"), ("ise", "ISE ∫‖e‖²dt [m² s]"),
+                           ("iae", "IAE ∫‖e‖dt [m s]"), ("tec", "TEC")]:
             w(f"| {label} | {f(p[key])} | {f(fx[key])} | {ratio(p[key], fx[key])} | {f(pr[key])} | {ratio(p[key], pr[key])} |")
         w("")
         w("| run | max ‖e‖/ρ | envelope widenings | min clearance offset [m] | min clearance body [m] | offset collisions | body collisions | diamond violations | NaN | saturated steps |")
@@ -251,13 +269,13 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
         w("")
         w("Velocity estimators (same law):")
         w("")
-        w("| estimator | RMS ‖ṗ_d − v̂‖ [m/s] | max after 0.5 s [m/s] | ASE [m²] | AAE [m] | TEC |")
-        w("|---|---|---|---|---|---|")
+        w("| estimator | RMS ‖ṗ_d − v̂‖ [m/s] | max after 0.5 s [m/s] | ASE [m²] | AAE [m] | ISE [m² s] | IAE [m s] | TEC |")
+        w("|---|---|---|---|---|---|---|---|")
         for label, title_e in [("paper", "paper (3)–(4)"), ("finite_difference", "finite differences + low-pass τ = 0.05 s"),
                                ("kalman", "constant-velocity Kalman")]:
             m = r[label]
             w(f"| {title_e} | {f(m['estimator_rms_error'])} | {f(m['estimator_max_error_settled'])} | {f(m['ase'])} | "
-              f"{f(m['aae'])} | {f(m['tec'])} |")
+              f"{f(m['aae'])} | {f(m['ise'])} | {f(m['iae'])} | {f(m['tec'])} |")
         w("")
         w(f"Figures (proposed law): [Fig. 3 path](figures/{name}/fig3_xy.png) · "
           f"[Fig. 3 with body_safe](figures/{name}/fig3_xy_body_safe.png) · [Fig. 4 x, y](figures/{name}/fig4_xy_time.png) · "

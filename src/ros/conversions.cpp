@@ -88,6 +88,8 @@ void fillState(const core::ControllerOutput& out, TrackingState* s) {
   s->v = out.u.v;
   s->omega = out.u.omega;
   s->u_c = vector3(out.u_c);
+  s->u_t = vector3(out.u_t);
+  s->passing_side = out.passing_side;
   s->saturated = out.active.saturated;
   s->avoiding = out.active.avoiding;
   s->conflict = out.active.conflict;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace amigobot_tracking {
@@ -17,7 +18,12 @@ geometry_msgs::Point point(const Eigen::Vector2d& p, double z = 0.0) { return ma
 class Builder {
  public:
   explicit Builder(const MarkerScene& scene) : scene_(scene) {
+    // With a frame, rviz's tf filter passes DELETEALL in order with the ADDs; without one it
+    // fails the filter and rviz applies it at once, ahead of the previous message's queued ADDs,
+    // so a marker whose id changed between two messages (the status text) stayed twice.
     Marker clear;
+    clear.header.frame_id = scene.frame;
+    clear.header.stamp = scene.stamp;
     clear.action = Marker::DELETEALL;
     array_.markers.push_back(clear);
   }
@@ -27,7 +33,7 @@ class Builder {
     m.header.frame_id = scene_.frame;
     m.header.stamp = scene_.stamp;
     m.ns = ns;
-    m.id = static_cast<int>(array_.markers.size());
+    m.id = next_id_[ns]++;  // stable per namespace: the same element keeps its (ns, id) from step to step
     m.type = type;
     m.action = Marker::ADD;
     m.pose.orientation.w = 1.0;
@@ -63,8 +69,9 @@ class Builder {
     m.scale.z = 0.05;
   }
 
-  void text(const std::string& ns, const Eigen::Vector2d& at, const std::string& s, double height = 0.12) {
-    Marker& m = add(ns, Marker::TEXT_VIEW_FACING, color(1, 1, 1));
+  void text(const std::string& ns, const Eigen::Vector2d& at, const std::string& s, double height = 0.12,
+            const std_msgs::ColorRGBA& col = color(1, 1, 1)) {
+    Marker& m = add(ns, Marker::TEXT_VIEW_FACING, col);
     m.pose.position = point(at, 0.4);
     m.scale.z = height;
     m.text = s;
@@ -75,6 +82,7 @@ class Builder {
  private:
   const MarkerScene& scene_;
   visualization_msgs::MarkerArray array_;
+  std::map<std::string, int> next_id_;
 };
 
 }  // namespace
@@ -166,6 +174,13 @@ visualization_msgs::MarkerArray buildMarkers(const MarkerScene& scene) {
     }
     line << scene.status;
     b.text("text", scene.pose.position() + Eigen::Vector2d(0.0, -0.5), line.str());
+    // What the shapes are (untick the "legend" namespace in rviz's Displays panel to hide it).
+    b.text("legend", scene.pose.position() + Eigen::Vector2d(0.0, -1.0),
+           "white diamond: (v, w) limits U, green dot applied, red desired\n"
+           "cyan circle: safety disk R+r around the offset point (cyan dot)\n"
+           "yellow arrow: repulsion k_o u_c; red dot + pink arrow: target, v_hat\n"
+           "ring around the target: rho (green: |e| << rho, red: near it)",
+           0.09, color(0.85f, 0.85f, 0.85f));
   }
   return b.take();
 }

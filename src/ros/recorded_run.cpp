@@ -1,6 +1,7 @@
 #include "amigobot_tracking/ros/recorded_run.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
@@ -17,6 +18,10 @@ std::string RecordedRunConfig::validate() const {
   if (!(std::isfinite(w_max) && w_max > 0.0)) return "w_max must be > 0";
   const std::string bad_world = world::validateWorld(world);
   if (!bad_world.empty()) return "world: " + bad_world;
+  if (law != "paper" && law != "escape") return "law must be paper or escape, got '" + law + "'";
+  if (!(std::isfinite(velocity_window) && velocity_window > 0.0)) return "velocity_window must be > 0";
+  const std::string verdict_error = verdict.validate();
+  if (!verdict_error.empty()) return verdict_error;
   return "";
 }
 
@@ -53,19 +58,16 @@ void RecordedRun::addCommand(double v, double w) {
 
 void RecordedRun::addState(const TrackingState& s) {
   ++summary_.states;
-  if (!s.enabled || !have_truth_) return;  // before enabling (or ground truth) there is no run to score
+  if (finished_ || !s.enabled || !have_truth_) return;  // before enabling (or ground truth) there is no run to score
   const double stamp = s.header.stamp.toSec();
   if (t0_ < 0.0) t0_ = stamp;
   const double t = stamp - t0_;
-  if (have_pending_) flush(t);
 
   const Eigen::Vector2d p_d(s.p_d.x, s.p_d.y), v_hat(s.v_hat.x, s.v_hat.y), e(s.e.x, s.e.y);
-  Eigen::Vector2d v_d = Eigen::Vector2d::Zero();  // the target's true velocity, by finite difference
-  if (have_previous_p_d_ && t > previous_t_) v_d = (p_d - previous_p_d_) / (t - previous_t_);
-  previous_p_d_ = p_d;
-  previous_t_ = t;
-  have_previous_p_d_ = true;
-
+  // Clearance to everything solid (world) and virtual: the verdict's obstacle episodes.
+  auto clearanceToAll = [&](const Eigen::Vector2d& p, double radius) {
+    return std::min(world::clearance(config_.world, p, radius), core::clearance(p, radius, virtual_));
+  };
   const Eigen::Vector2d body = truth_.position();
   const Eigen::Vector2d p_r_true = core::offsetPoint(truth_, config_.offset);
   const double clearance_world = world::clearance(config_.world, body, config_.robot_radius);
@@ -76,42 +78,71 @@ void RecordedRun::addState(const TrackingState& s) {
   last_path_pose_ = truth_;
   have_path_pose_ = true;
 
-  sim::MetricSample m;
+  Step step;
+  step.t = t;
+  step.p_d = p_d;
+  step.v_hat = v_hat;
+  sim::MetricSample& m = step.sample;
+  m.t = t;
   m.e = e;
+  m.e_true = p_d - p_r_true;  // the target sample the controller used, the robot's true offset point
+  m.p_r = p_r_true;
   m.rho = s.rho;
   m.u = core::Twist2{s.v, s.omega};
   m.diamond_norm = std::abs(s.v) / config_.v_max + std::abs(s.omega) / config_.w_max;
   m.clearance_offset = std::min(world::clearance(config_.world, p_r_true, config_.robot_radius),
                                 core::clearance(p_r_true, config_.robot_radius, virtual_));
   m.clearance_body = std::min(clearance_world, clearance_virtual);
-  m.velocity_error = v_d - v_hat;
   m.estimator_settled = t > config_.settle_time;
   m.valid = s.valid;
   m.saturated = s.saturated;
   m.envelope_widened = s.envelope_widened;
+  m.conflict = s.conflict;
+  m.escaping = s.u_t.x != 0.0 || s.u_t.y != 0.0;
+  m.passing_side = s.passing_side;
   if (s.valid && s.rho > 0.0 && e.norm() < s.rho) ++within_rho_;
 
-  pending_.t = t;
-  pending_.sample = m;
-  pending_.row = {t,          truth_.x,      truth_.y,      truth_.theta, s.p_r.x,   s.p_r.y,   p_d.x(),
-                  p_d.y(),    p_d.x(),       p_d.y(),       v_hat.x(),    v_hat.y(), v_d.x(),   v_d.y(),
-                  e.x(),      e.y(),         e.norm(),      s.rho,        s.v,       s.omega,   s.v_d,
-                  s.omega_d,  s.u_c.x,       s.u_c.y,       m.clearance_offset,     m.clearance_body,
-                  0.0,        s.saturated ? 1.0 : 0.0,      s.avoiding ? 1.0 : 0.0,
-                  s.envelope_widened ? 1.0 : 0.0,           m.diamond_norm};
-  have_pending_ = true;
+  // A step without a controller output (stale pose or target) carries no target: not judged.
+  const double effective_radius = config_.body_safe ? config_.robot_radius + config_.offset : config_.robot_radius;
+  if (s.valid) tracking_.push_back(sim::TrackingSample{t, m.e_true.norm(), clearanceToAll(p_r_true, effective_radius),
+                                          clearanceToAll(p_d, effective_radius)});
+  // v_d_x/y (col 12, 13) and h (col 26) are filled by finish().
+  step.row = {t,          truth_.x,      truth_.y,      truth_.theta, s.p_r.x,      s.p_r.y,      p_d.x(),
+              p_d.y(),    p_d.x(),       p_d.y(),       v_hat.x(),    v_hat.y(),    0.0,          0.0,
+              e.x(),      e.y(),         e.norm(),      s.rho,        s.v,          s.omega,      s.v_d,
+              s.omega_d,  s.u_c.x,       s.u_c.y,       m.clearance_offset,         m.clearance_body,
+              0.0,        s.saturated ? 1.0 : 0.0,      s.avoiding ? 1.0 : 0.0,
+              s.envelope_widened ? 1.0 : 0.0,           m.diamond_norm,
+              s.u_t.x,    s.u_t.y,       p_r_true.x(),  p_r_true.y(), static_cast<double>(s.passing_side)};
+  steps_.push_back(step);
 }
 
-void RecordedRun::flush(double next_t) {
-  pending_.sample.h = std::max(0.0, next_t - pending_.t);
-  pending_.row[26] = pending_.sample.h;
-  accumulator_.add(pending_.sample);
-  rows_.push_back(pending_.row);
-  have_pending_ = false;
+Eigen::Vector2d RecordedRun::targetVelocity(std::size_t k) const {
+  // A 20 Hz finite difference of the sampled target is mostly sampling jitter (the control
+  // step and the target's tf are not in phase); over a window it is the target's velocity.
+  const double half = 0.5 * config_.velocity_window;
+  std::size_t a = k, b = k;
+  while (a > 0 && steps_[a - 1].t >= steps_[k].t - half) --a;
+  while (b + 1 < steps_.size() && steps_[b + 1].t <= steps_[k].t + half) ++b;
+  const double dt = steps_[b].t - steps_[a].t;
+  return dt > 0.0 ? Eigen::Vector2d((steps_[b].p_d - steps_[a].p_d) / dt) : Eigen::Vector2d::Zero();
 }
 
 void RecordedRun::finish() {
-  if (have_pending_) flush(pending_.t);  // the last step holds for no time
+  if (finished_) return;
+  finished_ = true;
+  for (std::size_t k = 0; k < steps_.size(); ++k) {
+    Step& step = steps_[k];
+    step.sample.h = k + 1 < steps_.size() ? std::max(0.0, steps_[k + 1].t - step.t) : 0.0;  // the last holds for no time
+    const Eigen::Vector2d v_d = targetVelocity(k);
+    step.sample.velocity_error = v_d - step.v_hat;
+    step.row[12] = v_d.x();
+    step.row[13] = v_d.y();
+    step.row[26] = step.sample.h;
+    accumulator_.add(step.sample);
+    rows_.push_back(step.row);
+  }
+  summary_.tracking = sim::judgeTracking(tracking_, config_.verdict);
 }
 
 RecordedRunSummary RecordedRun::summary() const {
@@ -137,16 +168,48 @@ void to_json(sim::Json& j, const RecordedRunSummary& s) {
                      {"path_length", jsonNumber(s.path_length)},
                      {"virtual_obstacles", s.virtual_obstacles},
                      {"truth_samples", s.truth_samples}});
+  j.update(sim::pick(m, {"true_ase", "true_aae", "true_ise", "true_iae", "max_true_error", "longest_stall_s",
+                         "conflict_steps", "escape_steps", "side_flips"}));
+  j["saturated_fraction"] = jsonNumber(m.steps > 0 ? static_cast<double>(m.saturated_steps) / m.steps : 0.0);
+  const sim::TrackingVerdict& v = s.tracking;
+  sim::Json episodes = sim::Json::array();
+  for (const sim::ObstacleEpisode& e : v.episodes) {
+    episodes.push_back({{"start_s", jsonNumber(e.start)},
+                        {"end_s", jsonNumber(e.end)},
+                        {"peak_true_error", jsonNumber(e.peak_error)},
+                        {"recovered_after_s", e.recovered_after < 0.0 ? sim::Json(nullptr) : jsonNumber(e.recovered_after)}});
+  }
+  j["tracking"] = {{"tracked", v.tracked},
+                   {"reason", v.reason},
+                   {"bound", jsonNumber(v.bound)},
+                   {"max_judged_true_error", jsonNumber(v.max_judged_error)},
+                   {"worst_time_s", jsonNumber(v.worst_time)},
+                   {"judged_time_s", jsonNumber(v.judged_time)},
+                   {"judged_fraction", jsonNumber(v.judged_fraction)},
+                   {"judged_over_bound_time_s", jsonNumber(v.judged_over_bound_time)},
+                   {"final_true_error", jsonNumber(v.final_error)},
+                   {"episodes", episodes}};
 }
 
 std::string recordedRunJson(const RecordedRunSummary& summary, const RecordedRunConfig& config,
                             const std::vector<core::Disk>& all_obstacles, const std::string& name) {
   using sim::jsonNumber;
   sim::Json j = summary;
+  j["law"] = config.law;
+  j["variant"] = config.law == "escape" ? "tangential_avoidance" : "paper";
+  sim::Json& tracking = j["tracking"];
+  tracking["rho_inf"] = jsonNumber(config.verdict.rho_inf);
+  tracking["tolerance"] = jsonNumber(config.verdict.tolerance);
+  tracking["recovery_time_s"] = jsonNumber(config.verdict.recovery_time);
+  tracking["band"] = jsonNumber(config.verdict.band);
   sim::Json& s = j["scenario"];
   s["name"] = name;
-  s["variant"] = "recorded";
+  s["variant"] = config.law;  // plot titles: [paper] or [escape]
+  s["law"] = config.law;
   s["estimator"] = "paper";
+  char truth[96];
+  std::snprintf(truth, sizeof truth, "central difference of the recorded target over %g s", config.velocity_window);
+  s["velocity_truth"] = truth;
   s["robot_radius"] = jsonNumber(config.robot_radius);
   s["offset"] = jsonNumber(config.offset);
   s["v_max"] = jsonNumber(config.v_max);

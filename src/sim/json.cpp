@@ -27,7 +27,7 @@ Json pick(const Json& from, std::initializer_list<const char*> keys) {
 
 Json sharedMetricsJson(const sim::RunMetrics& metrics) {
   return pick(metrics,
-              {"ase", "aae", "tec", "max_e_over_rho", "max_rho", "final_error", "min_clearance_offset",
+              {"ase", "aae", "ise", "iae", "tec", "max_e_over_rho", "max_rho", "final_error", "min_clearance_offset",
                "min_clearance_body", "body_collisions", "body_contact_time_s", "diamond_violations", "saturated_steps",
                "envelope_widenings", "estimator_rms_error", "estimator_max_error_settled", "steps"});
 }
@@ -44,6 +44,8 @@ void to_json(Json& j, const RunMetrics& m) {
   using sim::jsonNumber;
   j = sim::Json{{"ase", jsonNumber(m.ase)},
                 {"aae", jsonNumber(m.aae)},
+                {"ise", jsonNumber(m.ise)},
+                {"iae", jsonNumber(m.iae)},
                 {"tec", jsonNumber(m.tec)},
                 {"max_e_over_rho", jsonNumber(m.max_e_over_rho)},
                 {"max_rho", jsonNumber(m.max_rho)},
@@ -63,6 +65,8 @@ void to_json(Json& j, const RunMetrics& m) {
                 {"nan_count", m.nan_count},
                 {"true_ase", jsonNumber(m.true_ase)},
                 {"true_aae", jsonNumber(m.true_aae)},
+                {"true_ise", jsonNumber(m.true_ise)},
+                {"true_iae", jsonNumber(m.true_iae)},
                 {"max_true_error", jsonNumber(m.max_true_error)},
                 {"longest_stall_s", jsonNumber(m.longest_stall)},
                 {"conflict_steps", m.conflict_steps},

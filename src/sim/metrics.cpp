@@ -66,6 +66,10 @@ void MetricsAccumulator::add(const MetricSample& s) {
 
 RunMetrics MetricsAccumulator::result() const {
   RunMetrics r = m_;
+  r.ise = sum_e2_;
+  r.iae = sum_e_;
+  r.true_ise = sum_true_e2_;
+  r.true_iae = sum_true_e_;
   if (r.sim_time > 0.0) {
     r.ase = sum_e2_ / r.sim_time;
     r.aae = sum_e_ / r.sim_time;

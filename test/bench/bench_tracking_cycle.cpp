@@ -106,6 +106,11 @@ int main(int argc, char** argv) {
     fprintf(stderr, "bench_tracking_cycle: no ROS master at %s (make bench starts one)\n", ros::master::getURI().c_str());
     return 1;
   }
+  // Each benchmark run builds a node, which logs its parameters at INFO (~1000 lines over the
+  // repetitions); the figures are what `make bench` is for.
+  if (ros::console::set_logger_level(ROSCONSOLE_DEFAULT_NAME, ros::console::levels::Warn)) {
+    ros::console::notifyLoggerLevelsChanged();
+  }
   ros::start();
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

@@ -10,8 +10,8 @@ constexpr double kVMax = 0.3;          // [m/s] diamond half-width in v
 constexpr double kWMax = 0.8;          // [rad/s] diamond half-width in omega
 constexpr double kSipPeriod = 0.1;     // [s] AmigoBot SIP cycle
 constexpr double kCmdVelTimeout = 0.6; // [s] driver's cmd_vel_timeout (robot.launch)
-// [m] offset r of the controlled point: tracking.yaml's fallback, which the controller uses
-// because the shipped URDF (urdf_with_laser.py) has no control_point link.
+// [m] offset r of the controlled point: the shipped URDF's control_point link (read by the
+// tracking node through urdf_with_laser.py's robot_description), equal to tracking.yaml's fallback.
 constexpr double kOffset = 0.3;
 
 // How far the controller's view of p_r may be from the truth: its robot pose is the driver's

@@ -41,6 +41,8 @@ TEST(Conversions, StateCarriesTheControllerOutput) {
   out.u_d = {0.5, -0.25};
   out.active.saturated = true;
   out.detected_obstacles = 2;
+  out.u_t = {0.05, -0.02};
+  out.passing_side = -1;
   TrackingState state;
   fillState(out, &state);
   EXPECT_TRUE(state.valid);
@@ -50,6 +52,9 @@ TEST(Conversions, StateCarriesTheControllerOutput) {
   EXPECT_TRUE(state.saturated);
   EXPECT_FALSE(state.avoiding);
   EXPECT_EQ(state.detected_obstacles, 2);
+  EXPECT_DOUBLE_EQ(state.u_t.x, 0.05);
+  EXPECT_DOUBLE_EQ(state.u_t.y, -0.02);
+  EXPECT_EQ(state.passing_side, -1);
   const geometry_msgs::Twist twist = toTwist(out.u);
   EXPECT_DOUBLE_EQ(twist.linear.x, 0.2);
   EXPECT_DOUBLE_EQ(twist.angular.z, -0.1);

@@ -48,13 +48,34 @@ TEST(Markers, StartWithDeleteAllAndHaveUniqueIds) {
   const visualization_msgs::MarkerArray array = buildMarkers(f.scene);
   ASSERT_FALSE(array.markers.empty());
   EXPECT_EQ(array.markers[0].action, Marker::DELETEALL);
-  std::vector<int> ids;
+  // A DELETEALL without a frame fails rviz's tf filter and is applied out of order.
+  EXPECT_EQ(array.markers[0].header.frame_id, "map");
+  std::vector<std::pair<std::string, int>> ids;
   for (std::size_t i = 1; i < array.markers.size(); ++i) {
     EXPECT_EQ(array.markers[i].header.frame_id, "map");
-    ids.push_back(array.markers[i].id);
+    ids.emplace_back(array.markers[i].ns, array.markers[i].id);
   }
   std::sort(ids.begin(), ids.end());
   EXPECT_EQ(std::adjacent_find(ids.begin(), ids.end()), ids.end());
+}
+
+TEST(Markers, TheStatusTextKeepsItsIdWhenTheObstacleCountChanges) {
+  // Its id was its index in the array: one laser disk more or less gave the text a new id,
+  // and rviz drew the old and the new one together.
+  Fixture f;
+  auto textId = [](const visualization_msgs::MarkerArray& array) {
+    for (const Marker& m : array.markers) {
+      if (m.ns == "text") return m.id;
+    }
+    return -1;
+  };
+  const int before = textId(buildMarkers(f.scene));
+  std::vector<core::Disk> more = *f.scene.detected;
+  more.push_back(more.front());
+  more.push_back(more.front());
+  f.scene.detected = &more;
+  EXPECT_EQ(textId(buildMarkers(f.scene)), before);
+  EXPECT_EQ(before, 0);
 }
 
 TEST(Markers, ShowEveryElementTheIssueLists) {
@@ -62,7 +83,7 @@ TEST(Markers, ShowEveryElementTheIssueLists) {
   const auto m = byNamespace(buildMarkers(f.scene));
   for (const char* ns : {"rho", "target", "target_velocity", "offset_point", "body", "safety_disk", "laser_obstacles",
                          "virtual_obstacles", "virtual_obstacle_ids", "u_c", "diamond", "diamond_u", "diamond_u_d",
-                         "text"}) {
+                         "text", "legend"}) {
     EXPECT_EQ(m.count(ns), ns == std::string("laser_obstacles") ? 2u : 1u) << ns;
   }
   EXPECT_EQ(m.find("virtual_obstacle_ids")->second.text, "box");

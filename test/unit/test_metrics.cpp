@@ -39,6 +39,26 @@ TEST(Metrics, AveragesAreTimeWeightedLeftSums) {
   EXPECT_EQ(m.steps, 3u);
 }
 
+TEST(Metrics, IntegralsOfAConstantErrorAreESquaredTAndET) {
+  // |e| = 0.25 m held for T = 8 s in 160 steps of 0.05 s: ISE = e^2 T = 0.5 m^2 s, IAE = e T = 2 m s,
+  // and the averages are the integrals over T.
+  MetricsAccumulator acc;
+  for (int k = 0; k < 160; ++k) {
+    MetricSample s = sample(0.05, {0.15, 0.2}, 1.0, {});
+    s.e_true = {0.0, 0.5};  // |e*| = 0.5 m
+    acc.add(s);
+  }
+  acc.add(sample(0.0, {0.15, 0.2}, 1.0, {}));  // the last step holds for no time
+  const RunMetrics m = acc.result();
+  EXPECT_NEAR(m.sim_time, 8.0, 1e-12);
+  EXPECT_NEAR(m.ise, 0.25 * 0.25 * 8.0, 1e-12);
+  EXPECT_NEAR(m.iae, 0.25 * 8.0, 1e-12);
+  EXPECT_NEAR(m.true_ise, 0.5 * 0.5 * 8.0, 1e-12);
+  EXPECT_NEAR(m.true_iae, 0.5 * 8.0, 1e-12);
+  EXPECT_NEAR(m.ise, m.ase * m.sim_time, 1e-12);
+  EXPECT_NEAR(m.iae, m.aae * m.sim_time, 1e-12);
+}
+
 TEST(Metrics, AseIsAtLeastAaeSquared) {
   // Jensen: the time average of |e|^2 is never below the square of the average of |e|.
   MetricsAccumulator acc;

@@ -84,6 +84,107 @@ TEST(RecordedRun, WallsAndPolygonsCountInTheTrueClearances) {
   EXPECT_TRUE(run.summary().collided());
 }
 
+TEST(RecordedRun, FillsEveryCsvColumnFromTruthAndState) {
+  // The robot drives along y = 1 at 0.1 m/s (heading 0), its true offset point 0.3 m ahead;
+  // the state carries a tangential term and a passing side.
+  ros_layer::RecordedRun run(ros_layer::RecordedRunConfig{});
+  for (int k = 0; k <= 40; ++k) {
+    const double t = 0.05 * k;
+    run.addTruth(100.0 + t, core::Pose2{0.1 * t, 1.0, 0.0});
+    TrackingState s = state(t, true, 0.02, 0.5);
+    s.p_d.y = 1.0;
+    s.u_t.x = 0.04;
+    s.u_t.y = -0.03;
+    s.passing_side = -1;
+    run.addState(s);
+  }
+  run.finish();
+  ASSERT_EQ(run.rows().size(), 41u);
+  ASSERT_EQ(sim::kCsvColumns.size(), 36u);
+  const sim::CsvRow& row = run.rows()[20];  // t = 1 s
+  auto column = [&](const std::string& name) {
+    for (std::size_t i = 0; i < sim::kCsvColumns.size(); ++i) {
+      if (name == sim::kCsvColumns[i]) return row[i];
+    }
+    ADD_FAILURE() << "no column " << name;
+    return 0.0;
+  };
+  EXPECT_NEAR(column("t"), 1.0, 1e-9);
+  EXPECT_NEAR(column("x"), 0.1, 1e-9);
+  EXPECT_NEAR(column("p_r_true_x"), 0.1 + 0.3, 1e-9);
+  EXPECT_NEAR(column("p_r_true_y"), 1.0, 1e-9);
+  EXPECT_DOUBLE_EQ(column("u_t_x"), 0.04);
+  EXPECT_DOUBLE_EQ(column("u_t_y"), -0.03);
+  EXPECT_DOUBLE_EQ(column("passing_side"), -1.0);
+  EXPECT_NEAR(column("h"), 0.05, 1e-9);
+  EXPECT_NEAR(column("v_d_x"), 0.1, 1e-9);
+  EXPECT_NEAR(column("meas_x"), 0.1, 1e-9);
+  // The true error: the target (0.1 t, 1) against the true offset point 0.3 m ahead of the robot.
+  const auto m = run.summary().metrics;
+  EXPECT_NEAR(m.true_aae, 0.3, 1e-9);
+  EXPECT_NEAR(m.true_iae, 0.3 * 2.0, 1e-9);
+  EXPECT_NEAR(m.iae, 0.02 * 2.0, 1e-9);
+  EXPECT_EQ(m.escape_steps, 41u);
+}
+
+// 40 s at 20 Hz along x: the target leads the true offset point by 0.05 m, except from 15 to
+// 27 s when it is 0.8 m ahead; a virtual disk beside the path (in the detection band of the
+// effective disk, clear of the body) is present from 15 to 25 s.
+static ros_layer::RecordedRunSummary obstacleRun(const ros_layer::RecordedRunConfig& config) {
+  ros_layer::RecordedRun run(config);
+  bool placed = false, removed = false;
+  for (int k = 0; k <= 800; ++k) {
+    const double t = 0.05 * k;
+    if (t >= 15.0 - 1e-9 && !placed) {
+      run.addVirtualObstacles({disk(2.3, 0.6, 0.1)});
+      placed = true;
+    }
+    if (t >= 25.0 - 1e-9 && !removed) {
+      run.addVirtualObstacles({});
+      removed = true;
+    }
+    run.addTruth(100.0 + t, core::Pose2{0.1 * t, 0.0, 0.0});
+    TrackingState s = state(t, true, 0.05, 0.5);
+    s.p_d.x = 0.1 * t + 0.3 + (t >= 15.0 - 1e-9 && t < 27.0 - 1e-9 ? 0.8 : 0.05);
+    if (k == 700) {  // a stale input at t = 35 s: zero command, no output, p_d left at 0 by the node
+      s.valid = false;
+      s.p_d.x = 0.0;
+    }
+    run.addState(s);
+  }
+  run.finish();
+  EXPECT_FALSE(run.summary().collided());
+  return run.summary();
+}
+
+TEST(RecordedRun, JudgesTrackingOnTheTrueErrorAroundAnObstacle) {
+  ros_layer::RecordedRunConfig config;
+  config.verdict.recovery_time = 5.0;
+  config.law = "escape";
+  const auto summary = obstacleRun(config);
+  const sim::TrackingVerdict& v = summary.tracking;
+  EXPECT_TRUE(v.tracked) << v.reason;
+  ASSERT_EQ(v.episodes.size(), 1u);
+  EXPECT_NEAR(v.episodes[0].start, 15.0, 1e-6);
+  EXPECT_NEAR(v.episodes[0].end, 25.0, 1e-6);
+  EXPECT_NEAR(v.episodes[0].peak_error, 0.8, 1e-9);
+  EXPECT_NEAR(v.episodes[0].recovered_after, 2.0, 1e-6);
+  EXPECT_NEAR(v.max_judged_error, 0.05, 1e-9);
+  const nlohmann::json j = nlohmann::json::parse(ros_layer::recordedRunJson(summary, config, {}, "verdict"));
+  EXPECT_EQ(j["law"], "escape");
+  EXPECT_EQ(j["scenario"]["variant"], "escape");
+  EXPECT_EQ(j["tracking"]["tracked"], true);
+  EXPECT_DOUBLE_EQ(j["tracking"]["bound"].get<double>(), 0.15);
+  EXPECT_EQ(j["tracking"]["episodes"].size(), 1u);
+  EXPECT_TRUE(j.contains("ise") && j.contains("iae") && j.contains("true_iae"));
+
+  // Judged 1 s after the obstacle, the robot is still 0.8 m behind.
+  config.verdict.recovery_time = 1.0;
+  const sim::TrackingVerdict early = obstacleRun(config).tracking;
+  EXPECT_FALSE(early.tracked);
+  EXPECT_NEAR(early.max_judged_error, 0.8, 1e-9);
+}
+
 TEST(RecordedRun, CountsContactWithAVirtualObstacleFromTheGroundTruth) {
   ros_layer::RecordedRun run(ros_layer::RecordedRunConfig{});
   run.addVirtualObstacles({disk(0.3, 0.0, 0.1)});  // on the path

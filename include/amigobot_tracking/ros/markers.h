@@ -30,9 +30,11 @@ struct MarkerScene {
 std_msgs::ColorRGBA markerColor(float r, float g, float b, float a = 1.0f);
 geometry_msgs::Point markerPoint(const Eigen::Vector2d& p, double z = 0.0);
 
-// The first marker is DELETEALL, so obstacles that disappeared vanish from rviz.
-// Namespaces: rho, target, target_velocity, offset_point, body, safety_disk, laser_obstacles,
-// virtual_obstacles, virtual_obstacle_ids, u_c, diamond, diamond_u, diamond_u_d, text.
+
+// The first marker is DELETEALL (in global_frame), so obstacles that disappeared vanish from
+// rviz. Ids count from 0 within each namespace. Namespaces: rho, target, target_velocity,
+// offset_point, body, safety_disk, laser_obstacles, virtual_obstacles, virtual_obstacle_ids,
+// u_c, diamond, diamond_u, diamond_u_d, text (status line), legend (what the shapes mean).
 visualization_msgs::MarkerArray buildMarkers(const MarkerScene& scene);
 
 }  // namespace ros_layer

@@ -14,6 +14,7 @@
 #include "amigobot_tracking/core/types.h"
 #include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/sim/simulator.h"
+#include "amigobot_tracking/sim/tracking_verdict.h"
 #include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {
@@ -27,6 +28,10 @@ struct RecordedRunConfig {
   double v_max = 0.3;             // [m/s] diamond half-width
   double w_max = 0.8;             // [rad/s]
   double settle_time = 0.5;       // [s] estimator transient left out of its "settled" figure
+  bool body_safe = true;          // the run's body_safe: effective radius R + r around p_r
+  double velocity_window = 1.0;   // [s] the target's true velocity: central difference over this span
+  std::string law = "paper";      // paper | escape (tangential_avoidance): recorded in metrics.json
+  sim::TrackingVerdictConfig verdict;  // rho_inf, tolerance, recovery time, band (delta)
 
   std::string validate() const;   // empty when valid, else names the bad field
 };
@@ -44,6 +49,7 @@ struct RecordedRunSummary {
   std::uint64_t virtual_obstacles = 0;  // most virtual obstacles present at once
   double within_rho_fraction = 0.0;   // share of enabled steps with |e| < rho
   double path_length = 0.0;           // [m] true distance travelled while enabled
+  sim::TrackingVerdict tracking;      // judged on the true error (sim/tracking_verdict.h)
 
   bool collided() const { return metrics.body_collisions > 0; }
   bool ran() const { return metrics.steps >= 20 && truth_samples > 0 && path_length > 0.2; }
@@ -59,7 +65,8 @@ class RecordedRun {
   std::vector<core::Disk> allObstacles() const;
   void addCommand(double v, double w);                  // every cmd_vel
   void addState(const TrackingState& state);            // one control step
-  // Closes the last step. Rows and summary are complete afterwards.
+  // Scores the steps (the target's velocity needs the steps after each one). Rows and
+  // summary are complete afterwards; later states are ignored.
   void finish();
 
   const std::vector<sim::CsvRow>& rows() const { return rows_; }
@@ -70,20 +77,23 @@ class RecordedRun {
     double t = 0.0;
     sim::MetricSample sample;
     sim::CsvRow row{};
+    Eigen::Vector2d p_d = Eigen::Vector2d::Zero();
+    Eigen::Vector2d v_hat = Eigen::Vector2d::Zero();
   };
-  void flush(double next_t);
+  // The target's velocity at step k: central difference of p_d over velocity_window.
+  Eigen::Vector2d targetVelocity(std::size_t k) const;
 
   RecordedRunConfig config_;
   sim::MetricsAccumulator accumulator_;
   RecordedRunSummary summary_;
   std::vector<core::Disk> virtual_, virtual_seen_;
   std::vector<sim::CsvRow> rows_;
-  bool have_truth_ = false, have_pending_ = false, have_previous_p_d_ = false;
+  std::vector<Step> steps_;
+  std::vector<sim::TrackingSample> tracking_;
+  bool have_truth_ = false, finished_ = false;
   core::Pose2 truth_, last_path_pose_;
   bool have_path_pose_ = false;
-  double t0_ = -1.0, previous_t_ = 0.0;
-  Eigen::Vector2d previous_p_d_ = Eigen::Vector2d::Zero();
-  Step pending_;
+  double t0_ = -1.0;
   std::uint64_t within_rho_ = 0;
 };
 
@@ -91,7 +101,8 @@ class RecordedRun {
 void to_json(sim::Json& json, const RecordedRunSummary& summary);
 
 // metrics.json of a recorded run (same keys as the offline simulator's where they mean
-// the same, plus the recorded-run ones); `scenario` gives plot_run.py its metadata.
+// the same, plus the recorded-run ones, `law` and the `tracking` verdict); `scenario` gives
+// plot_run.py its metadata.
 std::string recordedRunJson(const RecordedRunSummary& summary, const RecordedRunConfig& config,
                             const std::vector<core::Disk>& all_obstacles, const std::string& name);
 

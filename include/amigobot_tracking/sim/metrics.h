@@ -7,6 +7,8 @@
 //   ASE = (1/T) sum h_k |e_k|^2          [m^2]   average squared tracking error
 //   AAE = (1/T) sum h_k |e_k|            [m]     average absolute tracking error
 //   TEC = sum h_k (v_k^2 + w_k^2)        [m^2/s + rad^2/s, numerically] control energy
+//   ISE = sum h_k |e_k|^2 = T * ASE      [m^2 s] integral squared error, the integral itself
+//   IAE = sum h_k |e_k|   = T * AAE      [m s]   integral absolute error
 // with T = sum h_k and e = p_d - p_r. A collision is an episode: the step where a
 // clearance turns negative after being >= 0 (or at the start) counts one.
 //
@@ -58,6 +60,8 @@ struct MetricSample {
 struct RunMetrics {
   double ase = 0.0;               // [m^2]
   double aae = 0.0;               // [m]
+  double ise = 0.0;               // [m^2 s] integral of |e|^2 dt (ASE without the 1/T)
+  double iae = 0.0;               // [m s] integral of |e| dt (AAE without the 1/T)
   double tec = 0.0;
   double max_e_over_rho = 0.0;
   double max_rho = 0.0;           // [m]
@@ -78,6 +82,8 @@ struct RunMetrics {
   std::uint64_t steps = 0;
   double true_ase = 0.0;                // [m^2] with the true error e*
   double true_aae = 0.0;                // [m]
+  double true_ise = 0.0;                // [m^2 s] integral of |e*|^2 dt
+  double true_iae = 0.0;                // [m s] integral of |e*| dt
   double max_true_error = 0.0;          // [m] peak |e*|
   double longest_stall = 0.0;           // [s]
   std::uint64_t conflict_steps = 0;     // steps with e_hat^T u_c < 0

@@ -1,8 +1,10 @@
 // run_report: scores a run recorded from sim.launch (rosbag) with the offline simulator's
 // metrics and writes trajectory.csv + metrics.json in its format (scripts/reports/plot_run.py
-// draws the paper's figures from them). Exit 0: safe run; 3: collision or a command
-// outside the diamond; 4: the run did not happen (too few steps, no ground truth, no
-// motion); 2: bad arguments or unreadable input.
+// draws the paper's figures from them) and judges tracking (sim/tracking_verdict.h). Exit 0:
+// safe run that tracked; 3: collision or a command outside the diamond; 4: the run did not
+// happen (too few steps, no ground truth, no motion); 5: safe, but it did not track (true
+// error above rho_inf + tolerance outside obstacle episodes and their recovery time, or at
+// the end); 2: bad arguments or unreadable input.
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -42,7 +44,18 @@ int main(int argc, char** argv) {
   app.add_option("--truth-topic", truth_topic, "ground truth, nav_msgs/Odometry in map")->capture_default_str();
   app.add_option("--robot-radius", config.robot_radius, "[m] R")->capture_default_str();
   app.add_option("--offset", config.offset, "[m] r, offset of the controlled point")->capture_default_str();
-  app.add_option("--rho-inf", config.rho_inf, "[m] for the plots")->capture_default_str();
+  app.add_option("--rho-inf", config.rho_inf, "[m] the law's rho_inf (plots, tracking bound)")->capture_default_str();
+  app.add_option("--law", config.law, "paper | escape (tangential_avoidance), recorded in metrics.json")
+      ->capture_default_str();
+  app.add_option("--body-safe", config.body_safe, "the run's body_safe (effective radius R + r)")->capture_default_str();
+  app.add_option("--delta", config.verdict.band, "[m] detection band: obstacle episode while a clearance < delta")
+      ->capture_default_str();
+  app.add_option("--tolerance", config.verdict.tolerance,
+                 "[m] tracking bound is rho_inf + this (localisation error, sampling skew)")
+      ->capture_default_str();
+  app.add_option("--recovery-time", config.verdict.recovery_time,
+                 "[s] not judged after the start and after each obstacle episode")
+      ->capture_default_str();
   app.add_option("--v-max", config.v_max, "[m/s] the run's diamond")->capture_default_str();
   app.add_option("--w-max", config.w_max, "[rad/s] the run's diamond")->capture_default_str();
   std::string global_frame = "map", base_frame = "base_link";
@@ -53,14 +66,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--localization-skip", localization_skip, "[s] localisation error: start-up not scored")
       ->capture_default_str();
-  app.footer("Exit 0: safe run; 3: collision or a command outside the diamond; 4: the run did not happen; "
-             "2: bad arguments or unreadable input.");
+  app.footer("Exit 0: safe run that tracked; 3: collision or a command outside the diamond; 4: the run did not "
+             "happen; 5: safe but did not track (true |e| > rho_inf + tolerance outside obstacle episodes and their "
+             "recovery time, or at the end); 2: bad arguments or unreadable input.");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   try {
+    config.verdict.rho_inf = config.rho_inf;
     config.world = world::loadWorld(world_path);
     const std::string error = config.validate();
     if (!error.empty()) throw std::invalid_argument("run_report: " + error);
@@ -112,10 +127,27 @@ int main(int argc, char** argv) {
                                {"max_heading_deg", loc.max_heading * 180.0 / M_PI}};
     sim::writeText(out + "/metrics.json", metrics.dump(2) + "\n");
     const sim::RunMetrics& m = s.metrics;
+    std::printf("law: %s\n", config.law.c_str());
     std::printf("tracking: %llu steps over %.1f s, path %.2f m; |e| < rho in %.1f %% of steps, max |e|/rho %.2f, "
-                "AAE %.3f m, ASE %.4f m^2, TEC %.2f\n",
+                "AAE %.3f m, ASE %.4f m^2, IAE %.2f m s, ISE %.3f m^2 s, TEC %.2f; %.0f %% of steps saturated\n",
                 static_cast<unsigned long long>(m.steps), m.sim_time, s.path_length, 100.0 * s.within_rho_fraction,
-                m.max_e_over_rho, m.aae, m.ase, m.tec);
+                m.max_e_over_rho, m.aae, m.ase, m.iae, m.ise, m.tec,
+                m.steps > 0 ? 100.0 * static_cast<double>(m.saturated_steps) / m.steps : 0.0);
+    const sim::TrackingVerdict& v = s.tracking;
+    std::printf("true error: AAE %.3f m, max %.3f m, final %.3f m; %zu obstacle episode(s)", m.true_aae,
+                m.max_true_error, v.final_error, v.episodes.size());
+    for (const sim::ObstacleEpisode& e : v.episodes) {
+      std::printf(" [%.1f-%.1f s, peak %.2f m, ", e.start, e.end, e.peak_error);
+      if (e.recovered_after < 0.0) {
+        std::printf("never back under %.2f m]", v.bound);
+      } else {
+        std::printf("back under %.2f m after %.1f s]", v.bound, e.recovered_after);
+      }
+    }
+    std::printf("\ntracking verdict: %s (judged %.0f %% of the run: max true |e| %.3f m against rho_inf + tolerance "
+                "%.3f m, %.0f s after the start and each episode)%s%s\n",
+                v.tracked ? "TRACKED" : "DID NOT TRACK", 100.0 * v.judged_fraction, v.max_judged_error, v.bound,
+                config.verdict.recovery_time, v.reason.empty() ? "" : ": ", v.reason.c_str());
     std::printf("safety: min true body clearance %.3f m to the world, %.3f m to virtual obstacles (%llu at most); "
                 "%llu body collisions; %llu of %llu commands outside the diamond (max norm %.3f)\n",
                 s.min_clearance_world, s.min_clearance_virtual, static_cast<unsigned long long>(s.virtual_obstacles),
@@ -136,6 +168,10 @@ int main(int argc, char** argv) {
     if (s.collided() || s.command_violations > 0) {
       std::fprintf(stderr, "run_report: UNSAFE run: collision or command outside the diamond\n");
       return 3;
+    }
+    if (!v.tracked) {
+      std::fprintf(stderr, "run_report: the run did not track: %s\n", v.reason.c_str());
+      return 5;
     }
   } catch (const std::exception& e) {
     std::cerr << "run_report: " << e.what() << "\n";
