@@ -17,10 +17,11 @@ import sys
 ALLOWED = {
     "core": {"std", "eigen"},
     "sim": {"std", "eigen", "core", "yaml", "json"},
+    "sim_mrpt": {"std", "eigen", "core", "world", "sim", "mrpt"},
     "world": {"std", "eigen", "core", "yaml"},
     "aria": {"std", "posix", "eigen", "core", "world", "mrpt", "yaml"},
     "sensors": {"std", "posix", "eigen", "core", "world", "mrpt"},
-    "tools": {"std", "posix", "eigen", "core", "sim", "aria", "sensors", "world", "mrpt", "yaml", "json", "cli11"},
+    "tools": {"std", "posix", "eigen", "core", "sim", "sim_mrpt", "aria", "sensors", "world", "mrpt", "yaml", "json", "cli11"},
     "ros": None,  # anything
 }
 LIBRARIES = {"Eigen": "eigen", "yaml-cpp": "yaml", "nlohmann": "json", "mrpt": "mrpt", "CLI": "cli11"}
