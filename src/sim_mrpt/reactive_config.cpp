@@ -52,6 +52,7 @@ std::string reactiveConfigText(const core::ControllerConfig& c, const ReactiveLa
       << "min_normalized_free_space_for_ptg_continuation = 0.2\n"
       << "enable_obstacle_filtering = false\n"  // an ideal simulated laser: nothing to filter
       << "evaluate_clearance = false\n"
+
       << "[CHolonomicND]\n"
       << "WIDE_GAP_SIZE_PERCENT = 0.25\n"
       << "MAX_SECTOR_DIST_FOR_D2_PERCENT = 0.25\n"

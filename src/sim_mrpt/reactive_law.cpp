@@ -154,9 +154,10 @@ class ReactiveLaw : public sim::StepLaw {
         robot_(diamond_, options),
         navigator_(robot_) {
     const std::string ini = reactiveConfigText(config, options);
-    mrpt::config::CConfigFileMemory file(ini + "[CAbstractPTGBasedReactive]\nptg_cache_files_directory = " +
-                                         cacheFolder(ini) + "\n");
+    mrpt::config::CConfigFileMemory file(ini);
     navigator_.loadConfigFile(file);
+    // Not read from the file by MRPT 2.5 (default "."): set after loading.
+    navigator_.params_abstract_ptg_navigator.ptg_cache_files_directory = cacheFolder(ini);
     navigator_.initialize();
   }
 
