@@ -4,6 +4,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/estimator.cpp
   src/core/offset_point.cpp
   src/core/avoidance.cpp
+  src/core/disk_clusters.cpp
   src/core/band_implicit.cpp
   src/core/prescribed_performance.cpp
   src/core/controller.cpp
@@ -22,7 +23,7 @@ target_include_directories(amigobot_tracking_core PUBLIC include)
 target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance band_implicit controller_config controller_guards
+  foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance disk_clusters band_implicit controller_config controller_guards
           obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_core)

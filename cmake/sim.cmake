@@ -18,9 +18,7 @@ amigobot_add_library(amigobot_tracking_sim
 target_include_directories(amigobot_tracking_sim PUBLIC include)
 target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML_CPP_LIBRARIES} nlohmann_json::nlohmann_json)
 
-amigobot_add_tool(amigobot_sim src/tools/amigobot_sim.cpp)
-target_link_libraries(amigobot_sim amigobot_tracking_sim)
-target_compile_definitions(amigobot_sim PRIVATE AMIGOBOT_PLOT_SCRIPT="${PROJECT_SOURCE_DIR}/scripts/reports/plot_run.py")
+# amigobot_sim is built in sim_mrpt.cmake (it also runs the MRPT peer).
 
 if(CATKIN_ENABLE_TESTING)
   foreach(unit closed_loop metrics tracking_verdict baselines controller_extensions)

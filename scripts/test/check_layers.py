@@ -17,12 +17,13 @@ import sys
 ALLOWED = {
     "core": {"std", "eigen"},
     "sim": {"std", "eigen", "core", "yaml", "json"},
+    "sim_mrpt": {"std", "eigen", "core", "world", "sim", "mrpt"},
     "world": {"std", "eigen", "core", "yaml"},
     "aria": {"std", "posix", "eigen", "core", "world", "mrpt", "yaml"},
     "sensors": {"std", "posix", "eigen", "core", "world", "mrpt"},
     "localization": {"std", "eigen", "core", "world", "mrpt", "yaml"},
     "teleop": {"std", "posix", "linux", "eigen", "core"},
-    "tools": {"std", "posix", "eigen", "core", "sim", "aria", "sensors", "localization", "world", "mrpt", "yaml", "json", "cli11"},
+    "tools": {"std", "posix", "eigen", "core", "sim", "sim_mrpt", "aria", "sensors", "localization", "world", "mrpt", "yaml", "json", "cli11"},
     "ros": None,  # anything
 }
 LIBRARIES = {"Eigen": "eigen", "yaml-cpp": "yaml", "nlohmann": "json", "mrpt": "mrpt", "CLI": "cli11",

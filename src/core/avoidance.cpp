@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "amigobot_tracking/core/disk_clusters.h"
+
 namespace amigobot_tracking {
 namespace core {
 namespace {
@@ -32,6 +34,13 @@ Relative relativeTo(const Eigen::Vector2d& p_r, const Disk& obstacle, double rob
 }
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// The passing side for the sine of the angle from -n to e_hat (> 0: the target lies
+// counter-clockwise): kept while the sine does not exceed `hysteresis` on the other side.
+int latchedSide(double sine, int previous_side, double hysteresis) {
+  if (previous_side != 0 && !(sine * previous_side < -hysteresis)) return previous_side;
+  return sine < 0.0 ? -1 : 1;  // exactly symmetric: counter-clockwise
+}
 
 // (10), and with `moving` the obstacle-velocity extension (see avoidance.h).
 AvoidanceResult accumulateRepulsion(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
@@ -70,34 +79,44 @@ AvoidanceResult movingRepulsiveTerm(const Eigen::Vector2d& p_r, const std::vecto
 TangentialResult tangentialTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
                                 double robot_radius, double delta, const Eigen::Vector2d& e_hat,
                                 int previous_side, double hysteresis, double min_margin) {
-  struct Opposing {
-    Eigen::Vector2d normal;
-    double weight;  // w_j |u_cj|
-  };
-  std::vector<Opposing> opposing;
-  double weighted_sine = 0.0, total_weight = 0.0;
-  for (const Disk& obstacle : obstacles) {
-    const Relative rel = relativeTo(p_r, obstacle, robot_radius, -e_hat, min_margin);
+  TangentialResult result;
+  // The detected disks and their summed repulsion (10).
+  std::vector<int> detected;
+  Eigen::Vector2d repulsion = Eigen::Vector2d::Zero();
+  for (size_t j = 0; j < obstacles.size(); ++j) {
+    const Relative rel = relativeTo(p_r, obstacles[j], robot_radius, -e_hat, min_margin);
     if (rel.clearance > delta) continue;
+    detected.push_back(static_cast<int>(j));
+    repulsion += (1.0 / rel.margin - 1.0 / delta) * rel.away;
+  }
+  if (detected.empty()) return result;
+  bool alone = detected.size() == 1;
+  for (size_t i = 0; alone && i < obstacles.size(); ++i)
+    alone = static_cast<int>(i) == detected.front() ||
+            !zonesOverlap(obstacles[i], obstacles[detected.front()], robot_radius + delta);
+
+  if (alone) {  // one disk on its own: along its tangent, w |u_c|
+    const Relative rel = relativeTo(p_r, obstacles[detected.front()], robot_radius, -e_hat, min_margin);
     const Eigen::Vector2d normal = rel.away / rel.distance;
     const double opposition = std::max(0.0, -e_hat.dot(normal));
-    if (opposition <= 0.0) continue;
+    if (opposition <= 0.0) return result;  // no conflict: released
     const double weight = opposition * (1.0 / rel.margin - 1.0 / delta) * rel.distance;
-    opposing.push_back({normal, weight});
-    weighted_sine += weight * cross(normal, e_hat);  // > 0: the target lies counter-clockwise
-    total_weight += weight;
+    if (!(weight > 0.0)) return result;
+    result.side = latchedSide(weight * cross(normal, e_hat) / weight, previous_side, hysteresis);
+    result.u_t = weight * result.side * Eigen::Vector2d(-normal.y(), normal.x());
+    return result;
   }
-  TangentialResult result;
-  if (opposing.empty() || !(total_weight > 0.0)) return result;  // no conflict: released
-  const double sine = weighted_sine / total_weight;
-  if (previous_side != 0 && !(sine * previous_side < -hysteresis)) {
-    result.side = previous_side;
-  } else {
-    result.side = sine < 0.0 ? -1 : 1;  // exactly symmetric: counter-clockwise
-  }
-  for (const Opposing& o : opposing) {
-    result.u_t += o.weight * result.side * Eigen::Vector2d(-o.normal.y(), o.normal.x());
-  }
+  // A group (disks whose detection zones overlap): along the level line of the summed barrier,
+  // i.e. around the union, at full strength (the controller's cap). Per disk, inside a gap the
+  // tangents of the two sides point opposite ways, and at a concave mouth the weaker per-disk
+  // term loses against the attraction's backward component: both stalled the robot.
+  const double magnitude = repulsion.norm();
+  if (!(magnitude > 0.0)) return result;
+  const Eigen::Vector2d normal = repulsion / magnitude;
+  if (-e_hat.dot(normal) <= 0.0) return result;  // the group does not oppose tracking
+  result.side = latchedSide(cross(normal, e_hat), previous_side, hysteresis);
+  result.u_t = result.side * Eigen::Vector2d(-normal.y(), normal.x());
+  result.full_strength = true;
   return result;
 }
 

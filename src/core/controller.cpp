@@ -200,6 +200,7 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
                                 config_.min_margin)
           : repulsiveTerm(out.p_r, obstacles, radius, config_.delta, heading, config_.min_margin);
   out.u_c = avoidance.u_c;
+  bool escape_full = false;
   if (config_.tangential_avoidance) {
     const TangentialResult tangential = tangentialTerm(out.p_r, obstacles, radius, config_.delta, e_hat,
                                                        passing_side_, config_.tangential_hysteresis,
@@ -207,6 +208,7 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
     passing_side_ = tangential.side;
     out.passing_side = tangential.side;
     out.u_t = config_.k_t * tangential.u_t;
+    escape_full = tangential.full_strength;
   }
   // The tracking part of (9).
   const Eigen::Vector2d attraction =
@@ -215,7 +217,11 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   // that. Uncapped it grows like u_c (1/margin) and, after the diamond's radial scaling, takes
   // the radial barrier's share: 3 contacts with crossing obstacles on crossing_obstacles.yaml.
   const double escape_cap = config_.k_t * attraction.norm() / config_.k_o;
-  if (out.u_t.norm() > escape_cap) out.u_t *= escape_cap / out.u_t.norm();
+  if (escape_full) {
+    out.u_t *= escape_cap / config_.k_t;  // a group of disks: the whole cap (u_t was k_t times a unit vector)
+  } else if (out.u_t.norm() > escape_cap) {
+    out.u_t *= escape_cap / out.u_t.norm();
+  }
   out.detected_obstacles = avoidance.detected;
   out.min_clearance = avoidance.min_clearance;
   out.active.avoiding = avoidance.detected > 0;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/sim/baseline_controller.h"
@@ -21,7 +22,12 @@ namespace {
 class Law {
  public:
   explicit Law(const ClosedLoopSetup& setup) {
-    if (setup.law == ControlLaw::kProportional) {
+    if (setup.law == ControlLaw::kMrptReactive) {
+      if (!setup.external_law)
+        throw std::invalid_argument("controller.variant: mrpt_reactive is provided by the sim_mrpt library; "
+                                    "set ClosedLoopSetup::external_law (amigobot_sim does)");
+      external_ = setup.external_law(setup);
+    } else if (setup.law == ControlLaw::kProportional) {
       proportional_ = std::make_unique<ProportionalController>(setup.controller, setup.baseline.k_p);
     } else {
       core::ControllerConfig config = setup.controller;
@@ -33,10 +39,14 @@ class Law {
   }
   core::ControllerOutput step(double t, const core::PoseSample& robot, const core::TargetSample& sample,
                         const std::vector<core::Disk>& obstacles) {
+    if (external_) return external_->step(t, robot, sample, obstacles);
     return paper_ ? paper_->stepStamped(t, robot, sample, obstacles)
                   : proportional_->step(t, robot.pose, sample, obstacles);
   }
-  const core::DiamondSet& diamond() const { return paper_ ? paper_->diamond() : proportional_->diamond(); }
+  const core::DiamondSet& diamond() const {
+    if (external_) return external_->diamond();
+    return paper_ ? paper_->diamond() : proportional_->diamond();
+  }
   // The setup's integrator applies (otherwise the loop runs kExplicit).
   bool implicitBand() const { return implicit_band_; }
   void setImplicitHorizon(double h) {
@@ -49,6 +59,7 @@ class Law {
  private:
   std::unique_ptr<core::PerformanceController> paper_;
   std::unique_ptr<ProportionalController> proportional_;
+  std::unique_ptr<StepLaw> external_;
   bool implicit_band_ = false;
 };
 

@@ -25,6 +25,7 @@
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"
+#include "amigobot_tracking/sim_mrpt/reactive_law.h"
 
 extern char** environ;
 
@@ -39,7 +40,7 @@ struct Shorthand {
   const char* help;
 };
 constexpr Shorthand kShorthands[] = {
-    {"--variant", "controller.variant", "control law paper|fixed_rho|proportional"},
+    {"--variant", "controller.variant", "control law paper|fixed_rho|proportional|mrpt_reactive"},
     {"--estimator", "controller.estimator", "target velocity source paper|finite_difference|kalman"},
     {"--body-safe", "controller.body_safe", "effective radius R + r in (10) (true|false)"},
     {"--tangential", "controller.tangential_avoidance", "tangential escape (true|false)"},
@@ -148,6 +149,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "amigobot_sim: %s\n", e.what());
     return 2;
   }
+  scenario.setup.external_law = sim_mrpt::reactiveLawFactory();  // used by variant mrpt_reactive
   // Monte Carlo's base seed: --seed, else 1 (not the file's simulation.seed).
   const std::uint64_t seed = app.count("--seed") ? scenario.setup.sensor.seed : 1;
   if (benchmark > 0) return runBenchmark(scenario, benchmark, benchmark_json);
@@ -170,7 +172,8 @@ int main(int argc, char** argv) {
     sim::writeText(out + "/metrics.json", sim::metricsJson(scenario, result));
     const sim::RunMetrics& m = result.summary.metrics;
     char ratio[32] = "- (no rho)";
-    if (scenario.setup.law != sim::ControlLaw::kProportional) std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
+    if (scenario.setup.law == sim::ControlLaw::kPaper || scenario.setup.law == sim::ControlLaw::kFixedRho)
+      std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
     const core::ControllerConfig& c = scenario.setup.controller;
     std::string beyond;  // the switches beyond the paper that are on
     for (const auto& [on, name] : {std::pair<bool, const char*>{c.tangential_avoidance, "tangential"},

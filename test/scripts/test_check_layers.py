@@ -53,6 +53,16 @@ class CheckLayers(unittest.TestCase):
                          ['include/amigobot_tracking/sim/x.h:1: "amigobot_tracking/aria/client.h"',
                           "include/amigobot_tracking/sim/x.h:2: <mrpt/comms/CClientTCPSocket.h>"])
 
+    def test_sim_mrpt_may_use_mrpt_sim_and_world_but_not_ros_and_sim_not_sim_mrpt(self):
+        self.write("src/sim_mrpt/law.cpp", '#include <mrpt/nav/reactive/CReactiveNavigationSystem.h>\n'
+                   '#include "amigobot_tracking/sim/closed_loop.h"\n#include "amigobot_tracking/world/raycast.h"\n'
+                   "#include <ros/ros.h>\n")
+        self.write("src/sim/uses_peer.cpp", '#include "amigobot_tracking/sim_mrpt/reactive_law.h"\n')
+        messages, _, _ = check_layers.violations(self.root)
+        self.assertEqual([m.split(" (")[0] for m in messages],
+                         ['src/sim/uses_peer.cpp:1: "amigobot_tracking/sim_mrpt/reactive_law.h"',
+                          "src/sim_mrpt/law.cpp:4: <ros/ros.h>"])
+
     def test_aria_may_use_posix_and_world_but_core_may_not(self):
         self.write("src/aria/serial.cpp", '#include <termios.h>\n#include <sys/socket.h>\n'
                    '#include "amigobot_tracking/world/world.h"\n')

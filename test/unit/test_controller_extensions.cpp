@@ -111,6 +111,42 @@ TEST(Tangential, SideIsLatchedWithHysteresis) {
   EXPECT_EQ(tangentialTerm(p_r, {disk}, 0.18, 0.25, unit(0.78), 1).side, -1);
 }
 
+// Two disks whose detection zones overlap are one obstacle: the term follows the level line of
+// their summed barrier (perpendicular to u_c, so nothing against the barrier), at full strength;
+// a disk whose zone overlaps no other keeps its own tangent, exactly as before.
+TEST(Tangential, APairIsPassedAsOneObstacle) {
+  const std::vector<Disk> pair = {Disk{{2.5, 0.45}, 0.15}, Disk{{2.5, -0.45}, 0.15}};
+  const double radius = 0.48, delta = 0.25;  // body-safe R + r; the 0.6 m gap is closed (< 0.96 m)
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> x(1.7, 2.6), y(-0.3, 0.3), heading(-1.0, 1.0);
+  int active = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Vector2d p_r(x(rng), y(rng));
+    if (clearance(p_r, radius, pair) <= 0.0) continue;
+    const Eigen::Vector2d e_hat = unit(heading(rng));  // the target beyond the pair
+    const TangentialResult r = tangentialTerm(p_r, pair, radius, delta, e_hat, 0);
+    const Eigen::Vector2d u_c = repulsiveTerm(p_r, pair, radius, delta, e_hat).u_c;
+    if (r.side == 0) {
+      EXPECT_EQ(r.u_t, Eigen::Vector2d::Zero());
+      EXPECT_GE(e_hat.dot(u_c), 0.0);  // released only where the barrier does not oppose tracking
+      continue;
+    }
+    ++active;
+    EXPECT_TRUE(r.full_strength);
+    EXPECT_NEAR(r.u_t.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(r.u_t.dot(u_c), 0.0, 1e-9 * u_c.norm());  // along the level line
+    EXPECT_LT(e_hat.dot(u_c), 0.0);                        // only under conflict
+    EXPECT_GE(r.u_t.dot(e_hat), -1e-12);                   // the side that turns toward the target
+  }
+  EXPECT_GT(active, 300);
+  // Zones apart: each disk is on its own, the single-disk term exactly.
+  const std::vector<Disk> apart = {Disk{{2.5, 0.45}, 0.15}, Disk{{6.0, -0.45}, 0.15}};
+  const Eigen::Vector2d p_r(2.0, 0.1);
+  const TangentialResult both = tangentialTerm(p_r, apart, radius, delta, {1.0, 0.0}, 0);
+  EXPECT_FALSE(both.full_strength);
+  EXPECT_EQ(both.u_t, tangentialTerm(p_r, {apart[0]}, radius, delta, {1.0, 0.0}, 0).u_t);
+}
+
 TEST(MovingObstacles, StaticObstaclesGiveExactlyThePaperTerm) {
   const std::vector<Disk> disks = {{{0.5, 0.2}, 0.2}, {{-0.3, 0.6}, 0.1}};
   for (double x = -1.0; x <= 1.0; x += 0.05) {

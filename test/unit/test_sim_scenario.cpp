@@ -177,7 +177,8 @@ TEST(SimScenario, RefusesBrokenYamlAndMissingFiles) {
 }
 
 TEST(SimScenario, ShippedScenariosLoad) {
-  for (const char* name : {"paper_5_1", "paper_5_2_rose", "experiment_5_3", "saddle_line", "crossing_obstacles"}) {
+  for (const char* name : {"paper_5_1", "paper_5_2_rose", "experiment_5_3", "saddle_line", "crossing_obstacles", "ring",
+                           "pair_cluster"}) {
     const std::string path = std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/" + name + ".yaml";
     EXPECT_NO_THROW(sim::loadScenario(path)) << path;
   }

@@ -40,19 +40,26 @@ AvoidanceResult movingRepulsiveTerm(const Eigen::Vector2d& p_r, const std::vecto
                                     const Eigen::Vector2d& heading_hint, double min_margin = 1e-4);
 
 // Tangential escape (beyond the paper): the radial term (10) and the attraction can cancel
-// on the line through a disk's centre (a saddle). For each detected obstacle j that opposes
-// tracking (w_j = max(0, -e_hat . n_j) > 0) this adds w_j |u_cj| along the tangent
-// side * perp(n_j), perpendicular to n_j, so it never pushes into the obstacle and leaves
-// the radial barrier and its clearance guarantee untouched; it is zero without conflict.
-// side (+1 = counter-clockwise around the obstacle, -1 = clockwise) is the one that turns
-// toward the target; it is latched (`previous_side`) and only switches when the weighted
-// sine of the angle between -n and e_hat exceeds `hysteresis` on the other side, so an
-// exactly symmetric case does not chatter. 0 = no conflict (released). The controller caps
-// k_o |u_t| at k_t times the attraction of (9) (controller.cpp: near contact an uncapped
-// escape crowds the radial barrier out of the saturated command).
+// on the line through a disk's centre (a saddle).
+// - A disk on its own (its detection zone, the disk grown by R + delta, overlaps no other disk's):
+//   when it opposes tracking (w = max(0, -e_hat . n) > 0) the term is w |u_c| along the tangent
+//   side * perp(n), perpendicular to n, so it never pushes into the obstacle and leaves the radial
+//   barrier and its clearance guarantee untouched; zero without conflict.
+// - A group (two or more disks detected at once, or one whose zone overlaps a neighbour's: the
+//   offset point can feel both): the disks are one obstacle. The direction is the tangent of the
+//   summed repulsion u_c (the level line of the group's barrier, perpendicular to u_c, so the term
+//   still adds nothing against the barrier) and the term is released when u_c does not oppose
+//   tracking; it acts at full strength (`full_strength`: the controller applies its cap).
+// side (+1 = counter-clockwise, -1 = clockwise) is the one that turns toward the target; it is
+// latched (`previous_side`) and only switches when the sine of the angle between -n and e_hat
+// exceeds `hysteresis` on the other side, so an exactly symmetric case does not chatter. 0 = no
+// conflict (released). The controller caps k_o |u_t| at k_t times the attraction of (9)
+// (controller.cpp: near contact an uncapped escape crowds the radial barrier out of the
+// saturated command).
 struct TangentialResult {
-  Eigen::Vector2d u_t = Eigen::Vector2d::Zero();
+  Eigen::Vector2d u_t = Eigen::Vector2d::Zero();  // with full_strength: the unit direction
   int side = 0;
+  bool full_strength = false;
 };
 TangentialResult tangentialTerm(const Eigen::Vector2d& p_r, const std::vector<Disk>& obstacles,
                                 double robot_radius, double delta, const Eigen::Vector2d& e_hat,

@@ -11,6 +11,7 @@
 #include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/sim/step_law.h"
 #include "amigobot_tracking/sim/step_size.h"
 #include "amigobot_tracking/sim/target_sensor.h"
 #include "amigobot_tracking/core/types.h"
@@ -23,6 +24,8 @@ enum class ControlLaw {
   kPaper,         // eqs. (9)-(13)
   kFixedRho,      // (9)-(12) with rho following the prescribed decay only (no adaptation)
   kProportional,  // feedback linearisation + k_p e + the same u_c and saturation (baseline_controller.h)
+  kMrptReactive,  // MRPT's CReactiveNavigationSystem re-targeted at the target (sim_mrpt library,
+                  // through ClosedLoopSetup::external_law)
 };
 
 // Where the v_hat of the law comes from.
@@ -74,6 +77,9 @@ struct ClosedLoopSetup {
   VelocitySource velocity_source = VelocitySource::kPaperEstimator;
   BaselineParams baseline;
   double estimator_settle_time = 0.5;  // [s] estimator errors after this count as "settled"
+  // The law of kMrptReactive, from a library above sim (sim_mrpt::reactiveLawFactory(); amigobot_sim
+  // sets it). Without it runClosedLoop refuses that variant.
+  StepLawFactory external_law;
 };
 
 // What an observer sees at every step: the state before the command is applied.
@@ -112,7 +118,8 @@ using ClosedLoopObserver = std::function<void(const ClosedLoopStep&)>;
 // Setup errors ("field: reason"), checked before anything runs; empty when valid.
 std::string validateSetup(const ClosedLoopSetup& setup);
 
-// The setup must be valid (validateSetup empty).
+// The setup must be valid (validateSetup empty). Throws std::invalid_argument for kMrptReactive
+// without external_law.
 ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Reference& reference,
                                 const ClosedLoopObserver& observer = {});
 

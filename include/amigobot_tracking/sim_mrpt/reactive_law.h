@@ -1,0 +1,46 @@
+// A peer for Table 2: MRPT's reactive navigator (CReactiveNavigationSystem: differential-drive
+// TP-space PTGs and a holonomic method) re-targeted at the moving target every navigation period,
+// run by the offline closed loop as controller.variant mrpt_reactive.
+//
+// Its robot (CRobot2NavInterface) is the simulator's unicycle: the pose the closed loop gives,
+// the simulated time as MRPT's clock (mrpt::Clock switched to Simulated during a run), and the
+// disks seen as a laser sees them: a ray-cast scan from the robot centre turned into a point
+// cloud. Every (v, w) it sends passes through the project's diamond (12) before it is applied,
+// so no command leaves it. MRPT drives the robot centre to the target and ends a navigation
+// within the offset r (where the offset point reaches the target); the metrics score the
+// offset point like every other law.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/sim/closed_loop.h"
+#include "amigobot_tracking/sim/step_law.h"
+
+namespace amigobot_tracking {
+namespace sim_mrpt {
+
+struct ReactiveLawOptions {
+  double period = 0.05;                   // [s] navigation step: re-target + navigationStep (20 Hz, the node's rate)
+  std::string holonomic = "CHolonomicND"; // CHolonomicND | CHolonomicVFF | CHolonomicFullEval
+  double ref_distance = 4.0;              // [m] PTG horizon (obstacles farther are ignored)
+  double ptg_resolution = 0.05;           // [m] PTG collision-grid cell
+  int ptg_paths = 121;                    // trajectories per PTG
+  int beams = 360;                        // laser beams over 360 deg
+  double range_max = 8.0;                 // [m] laser range (sim_laser's default)
+};
+
+// The navigator's configuration (MRPT INI text) for these limits and robot: PTGs C forward,
+// alpha, C backward; robot shape a 16-gon around the body disk of radius R; v_max, w_max the
+// diamond's corners.
+std::string reactiveConfigText(const core::ControllerConfig& config, const ReactiveLawOptions& options);
+
+// One law per run (not thread-safe: it switches MRPT's process-wide clock while it lives).
+std::unique_ptr<sim::StepLaw> makeReactiveLaw(const sim::ClosedLoopSetup& setup,
+                                              const ReactiveLawOptions& options = ReactiveLawOptions());
+// What ClosedLoopSetup::external_law takes.
+sim::StepLawFactory reactiveLawFactory(const ReactiveLawOptions& options = ReactiveLawOptions());
+
+}  // namespace sim_mrpt
+}  // namespace amigobot_tracking
