@@ -41,6 +41,7 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(launch_sim_slam ${check_launch}/sim.launch localization:=slam map_file:=/tmp/new_map.yaml)
   amigobot_add_check(launch_sim_ground_truth ${check_launch}/sim.launch localization:=ground_truth laser:=sim)
   amigobot_add_check(launch_two_robots ${check_launch}/two_robots.launch)
+  amigobot_add_check(launch_two_robots_map ${check_launch}/two_robots.launch localization:=map map_file:=${PROJECT_SOURCE_DIR}/config/maps/lab.yaml target_laser:=sick_tim5xx target_laser_port:=192.168.0.2:2111 tracker_laser:=sick_tim5xx tracker_laser_port:=192.168.0.1:2111)
   # Maps: the e2e room's map is world_map's drawing of its world (never stale); the shipped
   # lab map, built by SLAM (`make map`), agrees with the lab world (>= 90 % of its occupied
   # cells within 0.1 m of a wall, table or pole).
