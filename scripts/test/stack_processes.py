@@ -26,6 +26,26 @@ def ros_env(setup_bash, master_port, ros_home):
     return env
 
 
+def descendants(pid):
+    """Every process below pid (children, grandchildren, ...), from /proc."""
+    children = {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                ppid = int(f.read().rsplit(")", 1)[1].split()[1])
+        except (OSError, IndexError, ValueError):
+            continue
+        children.setdefault(ppid, []).append(int(entry))
+    out, todo = [], [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            out.append(child)
+            todo.append(child)
+    return out
+
+
 class Processes:
     """Children started in their own process groups; stop() ends them newest first."""
 
@@ -40,6 +60,10 @@ class Processes:
         return p
 
     def stop_one(self, p, sig=signal.SIGINT, timeout=15.0):
+        # roslaunch starts each node in a session of its own: a node that outlives roslaunch
+        # (killed after its timeout) is out of reach of the group signal, so every descendant
+        # is noted first and killed if it is still there afterwards.
+        family = descendants(p.pid) if p.poll() is None else []
         if p.poll() is None:
             try:
                 os.killpg(p.pid, sig)  # the group this Popen created (start_new_session)
@@ -53,6 +77,11 @@ class Processes:
                 except ProcessLookupError:
                     pass
                 p.wait(5)
+        for pid in family:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                pass
 
     def stop(self):
         for name, p, log in reversed(self.children):
