@@ -101,7 +101,7 @@ class UnicycleRobot : public mrpt::nav::CRobot2NavInterface {
     geometry.angle_min = -M_PI;
     geometry.range_min = 0.01;
     geometry.range_max = options_.range_max;
-    const std::vector<float> ranges = world::raycastScan(pose_, *obstacles_, geometry, options_.beams);
+    const std::vector<float> ranges = world::raycastScan(pose_, world::disksOnly(*obstacles_), geometry, options_.beams);
     for (size_t i = 0; i < ranges.size(); ++i) {
       double range = ranges[i];
       if (std::isinf(range) && range < 0.0) range = geometry.range_min;  // closer than range_min: touching
