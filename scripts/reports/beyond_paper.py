@@ -186,6 +186,14 @@ def write(path, saddle_res, clearance_rows, mc_rows, batches, delay_res):
           f"{g(c['worst_stall_s'])} | {a['runs_with_stall_over_0_5s']} → {c['runs_with_stall_over_0_5s']} | "
           f"{a['runs_with_body_collision']} → {c['runs_with_body_collision']} | {widenings(a)} → {widenings(c)} |")
     w("")
+    p51, pc = grp[("paper_5_1", "true")], grp[("pair_cluster", "false")]
+    w(f"The price of the full strength is clearance, not contact: on paper_5_1 (body-safe) the worst body clearance")
+    w(f"over the variants falls {g(p51[0]['worst_min_clearance_body'])} → {g(p51[1]['worst_min_clearance_body'])} m (the")
+    w("barrier (10) still holds, the escape runs along it). With the paper's radius, where the law protects only")
+    w(f"p_r, pair_cluster's body touched in {pc[1]['runs_with_body_collision']} run(s) (worst "
+      f"{g(pc[1]['worst_min_clearance_body'])} m; the paper law: {pc[0]['runs_with_body_collision']}). paper_5_1 with the")
+    w("paper's radius keeps the per-disk escape (its zones do not overlap) and its higher tracking cost (below).")
+    w("")
     w("`pair_cluster.yaml`: the paper's law stands at the closed pair for the rest of the run (its 0.6 m gap is")
     w("narrower than 2(R + r) = 0.96 m); the escape goes round it, the triangle and the wall. `ring.yaml`: the target")
     w("circles through eight 0.08 m disks at 0.42 m/s (limits 1 m/s, 2 rad/s). Tested:")
