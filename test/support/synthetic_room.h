@@ -1,9 +1,8 @@
 // A synthetic room for the localisation tests and benchmark: a 6 m x 4 m rectangle with a
 // partial partition and three pillars (asymmetric, so a global search has one answer), and a
 // loop through it (a circle of 1.2 m about (2, 1)) clear of them all.
-// Walls are rows of small disks (radius 0.05 m every 0.08 m) until the world module has
-// segments; its occupancy map is rasterised from the same disks, and scans are ray cast
-// against them by world::raycastScan.
+// A world (world/world.h): walls are segments, pillars disks; its occupancy map is drawn
+// from the same world, and scans are ray cast against it by world::raycastScan.
 #pragma once
 
 #include <cmath>
@@ -14,7 +13,9 @@
 #include "amigobot_tracking/localization/occupancy_map.h"
 #include "amigobot_tracking/localization/poses.h"
 #include "amigobot_tracking/localization/range_scan.h"
+#include "amigobot_tracking/world/geometry.h"
 #include "amigobot_tracking/world/raycast.h"
+#include "amigobot_tracking/world/world.h"
 
 namespace amigobot_test {
 
@@ -24,37 +25,27 @@ namespace loc = amigobot_tracking::localization;
 
 constexpr double kRoomMinX = -1.0, kRoomMinY = -1.0, kRoomMaxX = 5.0, kRoomMaxY = 3.0;
 
-inline void addWall(std::vector<Disk>* disks, Eigen::Vector2d a, Eigen::Vector2d b) {
-  const int n = static_cast<int>(std::ceil((b - a).norm() / 0.08));
-  for (int i = 0; i <= n; ++i) disks->push_back(Disk{a + (b - a) * (static_cast<double>(i) / n), 0.05});
+inline amigobot_tracking::world::World roomWorld() {
+  amigobot_tracking::world::World room;
+  const Eigen::Vector2d sw(kRoomMinX, kRoomMinY), se(kRoomMaxX, kRoomMinY), ne(kRoomMaxX, kRoomMaxY),
+      nw(kRoomMinX, kRoomMaxY);
+  room.walls = {{sw, se}, {se, ne}, {ne, nw}, {nw, sw}, {{2.5, kRoomMinY}, {2.5, -0.4}}};  // + a partition
+  room.obstacles = {Disk{{0.0, 2.2}, 0.3}, Disk{{3.8, 0.1}, 0.2}, Disk{{4.2, 2.2}, 0.25}};
+  return room;
 }
 
-inline std::vector<Disk> roomDisks() {
-  std::vector<Disk> disks;
-  addWall(&disks, {kRoomMinX, kRoomMinY}, {kRoomMaxX, kRoomMinY});
-  addWall(&disks, {kRoomMaxX, kRoomMinY}, {kRoomMaxX, kRoomMaxY});
-  addWall(&disks, {kRoomMaxX, kRoomMaxY}, {kRoomMinX, kRoomMaxY});
-  addWall(&disks, {kRoomMinX, kRoomMaxY}, {kRoomMinX, kRoomMinY});
-  addWall(&disks, {2.5, kRoomMinY}, {2.5, -0.4});  // partition from the south wall
-  disks.push_back(Disk{{0.0, 2.2}, 0.3});
-  disks.push_back(Disk{{3.8, 0.1}, 0.2});
-  disks.push_back(Disk{{4.2, 2.2}, 0.25});
-  return disks;
-}
-
-// The map of the disks: occupied where a cell's centre is within a disk (+ half a cell),
-// free inside the room, unknown outside.
+// The map of the room: occupied where a wall or pillar comes within half a cell of a cell's
+// centre, free inside the room, unknown outside.
 inline loc::OccupancyMap roomMap(double resolution = 0.05) {
   const double margin = 0.5;
   const int w = static_cast<int>(std::ceil((kRoomMaxX - kRoomMinX + 2 * margin) / resolution));
   const int h = static_cast<int>(std::ceil((kRoomMaxY - kRoomMinY + 2 * margin) / resolution));
   loc::OccupancyMap map = loc::makeMap(resolution, kRoomMinX - margin, kRoomMinY - margin, w, h);
-  const std::vector<Disk> disks = roomDisks();
+  const amigobot_tracking::world::World room = roomWorld();
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const Eigen::Vector2d c = map.cellCenter(x, y);
-      bool occupied = false;
-      for (const Disk& d : disks) occupied = occupied || (c - d.center).norm() <= d.radius + 0.5 * resolution;
+      const bool occupied = amigobot_tracking::world::clearance(room, c, 0.5 * resolution * (1.0 + 1e-6)) <= 0.0;
       const bool inside = c.x() > kRoomMinX && c.x() < kRoomMaxX && c.y() > kRoomMinY && c.y() < kRoomMaxY;
       map.at(x, y) = occupied ? loc::OccupancyMap::kOccupied : inside ? loc::OccupancyMap::kFree : loc::OccupancyMap::kUnknown;
     }
@@ -86,10 +77,9 @@ inline loc::RangeScan scanAt(const Pose2& robot, int beams, std::mt19937* random
   geometry.angle_increment = scan.angle_increment;
   geometry.range_min = scan.range_min;
   geometry.range_max = scan.range_max;
-  static const std::vector<Disk> room = roomDisks();
-  std::vector<Disk> disks = room;
-  disks.insert(disks.end(), clutter.begin(), clutter.end());
-  scan.ranges = amigobot_tracking::world::raycastScan(loc::compose(robot, scan.mount), disks, geometry, beams);
+  amigobot_tracking::world::World world = roomWorld();
+  world.obstacles.insert(world.obstacles.end(), clutter.begin(), clutter.end());
+  scan.ranges = amigobot_tracking::world::raycastScan(loc::compose(robot, scan.mount), world, geometry, beams);
   if (random) {
     std::normal_distribution<float> n(0.0f, static_cast<float>(noise));
     for (float& r : scan.ranges)
