@@ -155,7 +155,9 @@ TEST(E2E, AvoidsLaserAndVirtualObstacles) {
   for (const Step& s : steps) {
     if (!std::isfinite(s.loc_error)) continue;
     loc_max = std::max(loc_max, s.loc_error);
-    if (loc_tol > 0.0) EXPECT_LT(s.loc_error, kPoseLagTolerance + loc_tol) << "localisation error at t = " << s.t;
+    if (loc_tol > 0.0) {
+      EXPECT_LT(s.loc_error, kPoseLagTolerance + loc_tol) << "localisation error at t = " << s.t;
+    }
   }
   RecordProperty("localization_max_mm", static_cast<int>(1e3 * loc_max));
   std::printf("%slocalisation error max %.3f m\n", trace.c_str(), loc_max);

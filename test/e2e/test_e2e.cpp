@@ -68,7 +68,9 @@ TEST(E2E, TracksACircle) {
       ++localised;
       loc_max = std::max(loc_max, s.loc_error);
       loc_sq += s.loc_error * s.loc_error;
-      if (loc_tol > 0.0) EXPECT_LT(s.loc_error, kPoseLagTolerance + loc_tol) << "localisation error at t = " << s.t;
+      if (loc_tol > 0.0) {
+        EXPECT_LT(s.loc_error, kPoseLagTolerance + loc_tol) << "localisation error at t = " << s.t;
+      }
     }
   }
   // 20 Hz over 18 s: 360 steps; half of them is plenty to say "every step" was judged.
