@@ -51,6 +51,9 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(e2e_avoidance_map_fresh ${PROJECT_SOURCE_DIR}/scripts/test/check_world_map.sh
                      ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/world_map
                      ${PROJECT_SOURCE_DIR}/test/e2e/worlds/avoidance.yaml ${PROJECT_SOURCE_DIR}/test/e2e/worlds/avoidance_map.yaml)
+  amigobot_add_check(e2e_two_robots_map_fresh ${PROJECT_SOURCE_DIR}/scripts/test/check_world_map.sh
+                     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/world_map
+                     ${PROJECT_SOURCE_DIR}/test/e2e/worlds/two_robots_tracker.yaml ${PROJECT_SOURCE_DIR}/test/e2e/worlds/two_robots_map.yaml)
   amigobot_add_check(lab_map_matches_world ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/world_map
                      --world ${PROJECT_SOURCE_DIR}/config/worlds/lab.yaml --compare ${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
   amigobot_add_check(launch_two_robots_teleop ${check_launch}/two_robots.launch target_teleop:=keyboard)

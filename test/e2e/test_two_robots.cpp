@@ -187,7 +187,10 @@ TEST(E2E, TwoRobotsTrackerFollowsAroundTheVirtualObstacle) {
                   s.error);
     trace += line;
   }
-  EXPECT_LT(final_max, e2e::kRhoInf + e2e::kPoseLagTolerance) << trace;
+  // localization:=map: the target's pose is the target robot's own localisation and the
+  // tracker's its own, so the true final error may carry both localisation errors.
+  const double loc_tol = ros::param::param("~localization_tolerance", 0.0);
+  EXPECT_LT(final_max, e2e::kRhoInf + e2e::kPoseLagTolerance + loc_tol) << trace;
   std::printf("%s", trace.c_str());
   RecordProperty("final_error_max_mm", static_cast<int>(1e3 * final_max));
   std::printf("target passed %.3f m from the box centre; tracker body clearance %.3f m (at t %.1f, bound between "
