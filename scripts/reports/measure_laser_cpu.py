@@ -3,7 +3,8 @@
 
 For each laser (default: sick_tim5xx, then sim) it starts a private ROS master on a free
 port, runs sim.launch headless (no rviz) on free ports with that laser:=, enables tracking,
-lets it settle, then reads utime + stime (/proc/PID/stat) of every process roslaunch started
+lets it settle (localisation on the shipped map; laser:=sim runs with ground-truth
+localisation, which sim_laser needs), then reads utime + stime (/proc/PID/stat) of every process roslaunch started
 at the start and the end of a window of --duration seconds, and prints per process and in
 total the CPU used in percent of one core. It stops only what it started.
 Usage: measure_laser_cpu.py [--ws .ws] [--duration 60] [--lasers sick_tim5xx sim] [--out report/laser_cpu]
@@ -73,7 +74,9 @@ def measure(ws, laser, duration, logs):
         tcp, status, port = sp.free_port(), sp.free_port(), sp.free_port()
         launch = procs.start(f"sim_{laser}", ["roslaunch", "amigobot_tracking", "sim.launch", f"tcp_port:={tcp}",
                                               f"status_port:={status}", f"laser_port:={port}", f"laser:={laser}",
-                                              "start_delay:=5", "rviz:=false"], env)
+                                              "start_delay:=5", "rviz:=false"]
+                             # sim_laser casts from the true map -> laser: ground-truth localisation
+                             + (["localization:=ground_truth"] if laser == "sim" else []), env)
         deadline = time.time() + 120
         while subprocess.run(["rosservice", "call", "/tracking/enable"], env=env, capture_output=True).returncode != 0:
             if time.time() > deadline or launch.poll() is not None:
