@@ -81,6 +81,7 @@ def run(args):
         sp.start_master(procs, env, master)
         launch = procs.start("sim_launch", ["roslaunch", "amigobot_tracking", "sim.launch",
                                             f"pty:={out}/pty", "tcp_port:=-1", f"status_port:={sp.free_port()}",
+                                            f"laser_port:={sp.free_port()}",
                                             "start_delay:=0", "rviz:=true"], env)
 
         def call(cmd):
