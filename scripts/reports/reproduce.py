@@ -1,8 +1,6 @@
 #!/usr/bin/python3
 """Reproduces the paper's Section 5 with the offline simulator and writes docs/results.md.
-
-Usage: scripts/reports/reproduce.py --sim PATH/amigobot_sim [--out out/reproduce] [--docs docs]
-(`make reproduce` calls it). Runs the three shipped scenarios with the proposed law and every
+Usage: scripts/reports/reproduce.py --sim PATH/amigobot_sim [--out out/reproduce] [--docs docs] (`make reproduce`). Runs the three shipped scenarios with the proposed law and every
 baseline, the body-safe variant, fixed-step references for the variable step, Monte Carlo
 batches and the speed benchmark; copies the proposed runs' figures to docs/figures/. Then the
 measurements beyond the paper (scripts/reports/beyond_paper.py -> docs/beyond_paper.md).
@@ -18,6 +16,7 @@ import tempfile
 
 import beyond_paper
 import markdown
+from law_winners import write_law_winners
 import scenario_yaml
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -218,19 +217,7 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
     better = [n for n in results if results[n]["proportional"]["ase"] < results[n]["paper"]["ase"]]
     w("- The proportional baseline has the lower ASE on: " + (", ".join(better) if better else "none") +
       " (the scenario's gains; k_p = k_d/ρ_∞).")
-    for key, label in (("ise", "ISE ∫‖e‖²dt"), ("iae", "IAE ∫‖e‖dt"), ("tec", "TEC")):
-        wins = []
-        for n in results:
-            best = min(("paper", "fixed_rho", "proportional"), key=lambda law: results[n][law][key])
-            wins.append(f"{n}: {LAW_NAMES[best]}")
-        w(f"- Lowest {label} (proposed, fixed ρ, proportional): " + "; ".join(wins) + ".")
-    beats = [n for n in results if results[n]["paper"]["ise"] < results[n]["proportional"]["ise"]]
-    loses = [n for n in results if n not in beats]
-    frugal = [n for n in results if results[n]["paper"]["tec"] <= min(results[n][law]["tec"] for law in LAW_NAMES)]
-    w("- Which law wins where, plainly: on the integral error ∫‖e‖²dt the proposed law beats the proportional baseline on "
-      + (", ".join(beats) or "no scenario") + " and loses to it on " + (", ".join(loses) or "none")
-      + "; it spends the least control energy (TEC) on " + (", ".join(frugal) or "no scenario")
-      + ". Fixed ρ's error is low only with the envelope rule rescuing it (widenings above).")
+    write_law_winners(results, LAW_NAMES, w)
     every = [m for r in results.values() for k, m in r.items() if k != "mrpt_reactive"]
     bad = sum(int(m["diamond_violations"]) + int(m["nan_count"]) for m in every)
     offset_hits = sum(int(m["offset_collisions"]) for m in every)
