@@ -25,22 +25,7 @@ TICKS = os.sysconf("SC_CLK_TCK")
 
 def descendants(root):
     """pid -> name of every live process below `root` (the name: its __name:= or executable)."""
-    parent = {}
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            try:
-                with open(f"/proc/{entry}/stat") as f:
-                    parent[int(entry)] = int(f.read().rsplit(")", 1)[1].split()[1])
-            except (OSError, IndexError, ValueError):
-                pass
-    found, frontier = {}, [root]
-    while frontier:
-        pid = frontier.pop()
-        for child, ppid in parent.items():
-            if ppid == pid and child not in found:
-                found[child] = name_of(child)
-                frontier.append(child)
-    return found
+    return {pid: name_of(pid) for pid in sp.descendants(root)}
 
 
 def name_of(pid):
