@@ -6,24 +6,31 @@
 export PATH := /usr/bin:$(PATH)
 SHELL := /bin/bash
 ROOT := $(abspath $(dir $(lastword $(MAKEFILE_LIST))))
-WS := $(ROOT)/.ws
+# The catkin workspace lives outside the package (scripts/setup/workspace_dir.sh says where and
+# why; AMIGOBOT_WS=DIR chooses another): `make where` prints it.
+WS := $(shell $(ROOT)/scripts/setup/workspace_dir.sh)
+export AMIGOBOT_WS := $(WS)
 JOBS ?= 2
-# ccache (when installed) makes rebuilds and the install-space check's second build cheap;
-# CCACHE_BASEDIR lets that build (.ws-install, beside .ws) share the cache.
-CCACHE := $(shell command -v ccache)
-export CCACHE_BASEDIR := $(ROOT)
-CATKIN := catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release \
+# ccache (when installed; `deps` installs it, hence `=`: looked up when a rule runs) makes
+# rebuilds cheap. The compiler sees the sources through WS/src/amigobot_tracking, so with the
+# workspace as CCACHE_BASEDIR every checkout (worktree, clean clone) shares one cache.
+CCACHE = $(shell command -v ccache)
+export CCACHE_BASEDIR := $(WS)
+CATKIN = catkin_make -C $(WS) -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release \
   $(if $(CCACHE),-DCMAKE_CXX_COMPILER_LAUNCHER=$(CCACHE)) -j$(JOBS)
 SETUP := source $(WS)/devel/setup.bash
 RESULTS := $(WS)/build/test_results
 
-PHONY := deps deps-robot build test demo map bench fuzz clean sim reproduce help
+# $(call timed,PHASE,COMMAND): runs COMMAND and prints how long PHASE took (its exit code kept).
+timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
+
+PHONY := deps deps-robot build test demo map bench fuzz clean sim reproduce where help
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
 
 deps: ## install the missing Debian packages of the robot and the workstation (tests, rviz, plots)
-	@$(ROOT)/scripts/setup/install_deps.sh
+	$(call timed,deps,$(ROOT)/scripts/setup/install_deps.sh)
 
 deps-robot: ## install only what the robot's computer needs (no rviz, Xvfb, clang, matplotlib)
 	@$(ROOT)/scripts/setup/install_deps.sh --robot
@@ -34,16 +41,17 @@ $(WS)/src/amigobot_tracking:
 	mkdir -p $(WS)/src $(WS)/devel/lib/python3/dist-packages $(WS)/devel/lib/pkgconfig
 	ln -sfn $(ROOT) $(WS)/src/amigobot_tracking
 
-build: deps $(WS)/src/amigobot_tracking ## build the package in .ws/ (catkin_make, Release)
-	$(CATKIN)
+# TARGETS="test_core amigobot_sim" builds only those targets (and what they need).
+build: deps $(WS)/src/amigobot_tracking ## build the package in the workspace `make where` prints (catkin_make, Release; TARGETS=...)
+	$(call timed,build,$(CATKIN) $(TARGETS))
 
-test: build ## build and run every test, ending with `N passed, N failed` (~10 min)
+test: build ## build and run every test, ending with `N passed, N failed` (~15 min on 2 cores)
 	rm -rf $(RESULTS)
-	$(CATKIN) tests
+	$(call timed,build of the tests,$(CATKIN) tests)
 	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.
-	$(CATKIN) run_tests -k; echo $$? > $(WS)/build/run_tests.rc
+	$(call timed,run_tests,$(CATKIN) run_tests -k; echo $$? > $(WS)/build/run_tests.rc)
 	@# The parser fuzzer (30 s, ASan + UBSan) records its own JUnit case, pass or fail.
-	-$(ROOT)/scripts/test/run_fuzz.sh 30 $(RESULTS)
+	-$(call timed,fuzz,$(ROOT)/scripts/test/run_fuzz.sh 30 $(RESULTS))
 	@$(ROOT)/scripts/test/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
 
 # The whole stack on the emulated robot, headless (scripts/reports/run_demo.py): private master,
@@ -98,8 +106,11 @@ FUZZ_SECONDS ?= 600
 fuzz: deps ## libFuzzer run of the ARIA packet parser: FUZZ_SECONDS=600
 	$(ROOT)/scripts/test/run_fuzz.sh $(FUZZ_SECONDS)
 
-clean: ## remove the build workspaces .ws/ and .ws-install/
-	rm -rf $(WS) $(ROOT)/.ws-install
+clean: ## remove the build workspace (and a .ws/ or .ws-install/ left inside the package by older versions)
+	rm -rf $(WS) $(ROOT)/.ws $(ROOT)/.ws-install
+
+where: ## print the catkin workspace folder (source WS/devel/setup.bash for the ROS environment)
+	@echo $(WS)
 
 # The `## ` text of each rule line; fails naming a target of PHONY that has none.
 HELP_LINES = sed -n 's/^\([a-z-]*\):.*\#\# \(.*\)/\1\t\2/p' $(ROOT)/Makefile

@@ -5,7 +5,7 @@ Runs scripts/reports/run_demo.py N times (each a whole stack on its own private 
 the other) into OUT/run_1 ... OUT/run_N, then writes OUT/spread.md and OUT/spread.json: min /
 median / max of the figures below over the runs, and every run's verdict (exit code).
 Exit 0 when every run was safe and tracked, 1 otherwise.
-Usage: demo_spread.py [--runs 5] [--ws .ws] [--out report/demo_spread] [--paper-law] [run_demo options]
+Usage: demo_spread.py [--runs 5] [--ws WS] [--out report/demo_spread] [--paper-law] [run_demo options]
        demo_spread.py --collect OUT   (only re-read OUT/run_*/metrics.json)
 """
 import argparse
@@ -18,6 +18,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "scripts", "test"))
+import stack_processes as sp  # noqa: E402
 # (label, getter over metrics.json)
 FIGURES = [
     ("AAE [m]", lambda m: m["aae"]),
@@ -88,7 +90,7 @@ def write(out, runs):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=int, default=5)
-    parser.add_argument("--ws", default=os.path.join(ROOT, ".ws"))
+    parser.add_argument("--ws", default=sp.default_workspace())
     parser.add_argument("--out", default=os.path.join(ROOT, "report", "demo_spread"))
     parser.add_argument("--collect", action="store_true", help="only summarise the runs already in --out")
     args, demo_args = parser.parse_known_args()

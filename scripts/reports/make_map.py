@@ -8,7 +8,7 @@ tracking stack follows closed-loop on the map being built; when the tour is over
 /localization/save_map, which writes OUT.yaml + OUT.pgm (map_server's format), stops
 everything it started, and compares the map with the world file (world_map --compare).
 Exit 0: map written; 4: the run or the save failed (logs in OUT_logs/ under report/).
-Usage: make_map.py [--ws .ws] [--world config/worlds/lab.yaml] [--out config/maps/lab.yaml]
+Usage: make_map.py [--ws WS] [--world config/worlds/lab.yaml] [--out config/maps/lab.yaml]
 """
 import argparse
 import math
@@ -57,7 +57,7 @@ def call(args, env, timeout=30):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--ws", default=os.path.join(ROOT, ".ws"), help="catkin workspace (built)")
+    parser.add_argument("--ws", default=sp.default_workspace(), help="catkin workspace (built)")
     parser.add_argument("--world", default=os.path.join(ROOT, "config", "worlds", "lab.yaml"), help="world YAML")
     parser.add_argument("--tour", help="reference_publisher YAML of the tour (default: config/maps/WORLD_tour.yaml)")
     parser.add_argument("--out", help="map YAML to write (default: config/maps/WORLD.yaml; the PGM beside it)")

@@ -7,7 +7,7 @@ lets it settle (localisation on the shipped map; laser:=sim runs with ground-tru
 localisation, which sim_laser needs), then reads utime + stime (/proc/PID/stat) of every process roslaunch started
 at the start and the end of a window of --duration seconds, and prints per process and in
 total the CPU used in percent of one core. It stops only what it started.
-Usage: measure_laser_cpu.py [--ws .ws] [--duration 60] [--lasers sick_tim5xx sim] [--out report/laser_cpu]
+Usage: measure_laser_cpu.py [--ws WS] [--duration 60] [--lasers sick_tim5xx sim] [--out report/laser_cpu]
 """
 import argparse
 import os
@@ -86,7 +86,7 @@ def measure(ws, laser, duration, logs):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--ws", default=os.path.join(ROOT, ".ws"), help="catkin workspace (built)")
+    parser.add_argument("--ws", default=sp.default_workspace(), help="catkin workspace (built)")
     parser.add_argument("--duration", type=float, default=60.0, help="measurement window [s]")
     parser.add_argument("--lasers", nargs="+", default=["sick_tim5xx", "sim"], help="sim.launch laser:= values")
     parser.add_argument("--out", default=os.path.join(ROOT, "report", "laser_cpu"), help="logs folder (replaced)")

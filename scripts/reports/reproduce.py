@@ -189,7 +189,7 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
     w("- Diamond violations: steps with |v|/v̄ + |ω|/ω̄ > 1 + 1e-9. NaN count: steps with any non-finite value.")
     w("- Estimator error: time-RMS of ‖ṗ_d − v̂‖ over the run, and its maximum after t = 0.5 s (settled).")
     w("- Envelope widenings: steps where ‖e‖ ≥ max_error_ratio·ρ (0.9999 by default) and ρ had to be widened")
-    w("  (README: start/envelope rule). The continuous-time theory promises ‖e‖/ρ < 1 only; under a sustained")
+    w("  (docs/simulation.md: start/envelope rule). The continuous-time theory promises ‖e‖/ρ < 1 only; under a sustained")
     w("  conflict (13) settles at ξ* with ξ*·atanh ξ* = k_o/k_r (0.968 for the paper's k_r = 0.5), so the")
     w("  threshold must lie above ξ* (validated): then a widening means the discrete loop, not (13), held ρ.")
     w("")

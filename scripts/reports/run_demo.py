@@ -11,7 +11,7 @@ Exit 0: safe run that tracked; 3: collision or a command outside the diamond; 4:
 not happen; 5: safe, but it did not track (run_report's tracking verdict: true error above
 rho_inf + tolerance outside the obstacle episodes and their recovery time, or at the end).
 Tracking runs with config/demo_tracking.yaml (tangential escape) unless --paper-law.
-Usage: run_demo.py [--ws .ws] [--out report/demo] [--world config/worlds/lab.yaml] [--paper-law] [--tolerance 0.05]
+Usage: run_demo.py [--ws WS] [--out report/demo] [--world config/worlds/lab.yaml] [--paper-law] [--tolerance 0.05]
                    [--recovery-time 20]
 """
 import argparse
@@ -61,7 +61,7 @@ def ok(args, env):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--ws", default=os.path.join(ROOT, ".ws"), help="catkin workspace (built)")
+    parser.add_argument("--ws", default=sp.default_workspace(), help="catkin workspace (built)")
     parser.add_argument("--out", default=os.path.join(ROOT, "report", "demo"), help="report folder (replaced)")
     parser.add_argument("--world", default=WORLD, help="world YAML of the run and its scoring (default: lab.yaml)")
     parser.add_argument("--paper-law", action="store_true",

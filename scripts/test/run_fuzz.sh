@@ -7,7 +7,7 @@ export PATH=/usr/bin:$PATH
 SECONDS_TO_RUN=${1:-30}
 RESULTS=${2:-}
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-OUT=$ROOT/.ws/fuzz
+OUT=$("$ROOT/scripts/setup/workspace_dir.sh")/fuzz  # outside the package (workspace_dir.sh says why)
 mkdir -p "$OUT/corpus" "$OUT/artifacts"
 BIN=$OUT/fuzz_packet_parser
 LOG=$OUT/fuzz.log

@@ -9,6 +9,12 @@ import time
 import with_free_ports  # same folder (scripts/)
 
 
+def default_workspace():
+    """The checkout's catkin workspace, by the one rule of scripts/setup/workspace_dir.sh."""
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "setup", "workspace_dir.sh")
+    return subprocess.run([script], check=True, capture_output=True, text=True).stdout.strip()
+
+
 def free_port():
     return with_free_ports.free_ports(1)[0]
 
