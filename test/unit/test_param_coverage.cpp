@@ -1,9 +1,9 @@
 // The field tables are the one description of the nodelets' parameters; this test fails
 // when the files that document them drift: every tracking field in config/tracking.yaml or
 // config/controller_experiment.yaml (with a comment on its line; "(reconfigurable)" exactly
-// for the live ones), every driver field in config/driver.yaml, each in the README's
+// for the live ones), every driver field in config/driver.yaml, each in the docs'
 // parameter tables (the laser's in config/laser.yaml too), and in cfg/Tracking.cfg exactly when live -- and the other way, no cfg
-// entry or README row of the two nodelets' tables naming no field.
+// entry or docs row of the two nodelets' tables naming no field.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -109,13 +109,21 @@ std::vector<std::string> expand(const std::string& name) {
   return out;
 }
 
-// Names in backticks in the first cell of the README's table rows; with a `header`, the rows
+// The parameter tables live in docs/ros_api.md (nodes and nodelets) and docs/teleop.md.
+std::vector<std::string> tableLines() {
+  std::vector<std::string> all;
+  for (const char* file : {"docs/ros_api.md", "docs/teleop.md"})
+    for (std::string& line : lines(file)) all.push_back(std::move(line));
+  return all;
+}
+
+// Names in backticks in the first cell of the docs' table rows; with a `header`, the rows
 // of the table under that header alone.
 std::set<std::string> readmeNames(const std::string& header = "") {
   static const std::regex code("`([^`]+)`");
   std::set<std::string> names;
   bool in_nodelet = false;
-  for (const std::string& line : lines("README.md")) {
+  for (const std::string& line : tableLines()) {
     if (!header.empty() && line.rfind(header, 0) == 0) in_nodelet = true;
     else if (line.rfind("|", 0) != 0) in_nodelet = false;
     if (line.rfind("|", 0) != 0 || (!header.empty() && !in_nodelet)) continue;
@@ -160,7 +168,7 @@ TEST(ParamCoverage, EveryLaserFieldIsInItsYamlAndTheReadme) {
     const auto it = keys.find(key);
     ASSERT_NE(it, keys.end()) << key << " is not in config/laser.yaml";
     EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
-    EXPECT_TRUE(readme.count(key)) << key << " is in no README parameter table";
+    EXPECT_TRUE(readme.count(key)) << key << " is in no parameter table of docs/ros_api.md or docs/teleop.md";
   }
   for (const auto& [key, comment] : keys) EXPECT_TRUE(laserRows().count(key)) << "config/laser.yaml: " << key;
 }
@@ -173,15 +181,15 @@ TEST(ParamCoverage, EveryLocalizationFieldIsInItsYamlAndTheReadme) {
     const auto it = keys.find(key);
     ASSERT_NE(it, keys.end()) << key << " is not in config/localization.yaml";
     EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
-    EXPECT_TRUE(readme.count(key)) << key << " is in no row of the README's Localization parameter table";
+    EXPECT_TRUE(readme.count(key)) << key << " is in no row of the Localization parameter table (docs/ros_api.md)";
   }
   for (const auto& [key, comment] : keys)
     EXPECT_TRUE(fields.count(key) || key == "initial_pose" || key == "icp" || key == "global") << "config/localization.yaml: " << key;
-  for (const std::string& name : readme) EXPECT_TRUE(fields.count(name)) << "README localization row `" << name << "` names no field";
+  for (const std::string& name : readme) EXPECT_TRUE(fields.count(name)) << "docs localization row `" << name << "` names no field";
 }
 
 // The teleop nodes: config/teleop.yaml has one block per node, each field with its comment,
-// nothing else; every field is in the README's teleop tables.
+// nothing else; every field is in docs/teleop.md's tables.
 TEST(ParamCoverage, EveryTeleopFieldIsInItsYamlAndTheReadme) {
   const std::map<std::string, std::string> keys = yamlKeys("config/teleop.yaml");
   const std::set<std::string> readme = readmeNames();
@@ -192,7 +200,7 @@ TEST(ParamCoverage, EveryTeleopFieldIsInItsYamlAndTheReadme) {
     const auto it = keys.find(key);
     ASSERT_NE(it, keys.end()) << key << " is not in config/teleop.yaml";
     EXPECT_GT(it->second.size(), 10u) << key << ": the YAML line needs a comment (type, unit, default, meaning)";
-    EXPECT_TRUE(readme.count(key.substr(key.find('/') + 1))) << key << " is in no README parameter table";
+    EXPECT_TRUE(readme.count(key.substr(key.find('/') + 1))) << key << " is in no parameter table of docs/ros_api.md or docs/teleop.md";
   }
   for (const auto& [key, comment] : keys)
     EXPECT_TRUE(rows.count(key) || key == "keyboard_teleop" || key == "joystick_teleop") << "config/teleop.yaml: " << key;
@@ -201,13 +209,13 @@ TEST(ParamCoverage, EveryTeleopFieldIsInItsYamlAndTheReadme) {
 TEST(ParamCoverage, EveryFieldIsInTheReadmeAndEveryRowNamesOne) {
   const std::set<std::string> all = readmeNames();
   const std::map<std::string, Row> fields = nodeletFields(), driver = driverRows();
-  for (const auto& [key, row] : fields) EXPECT_TRUE(all.count(key)) << key << " is in no README parameter table";
-  for (const auto& [key, row] : driver) EXPECT_TRUE(all.count(key)) << key << " is in no README parameter table";
+  for (const auto& [key, row] : fields) EXPECT_TRUE(all.count(key)) << key << " is in no parameter table of docs/ros_api.md or docs/teleop.md";
+  for (const auto& [key, row] : driver) EXPECT_TRUE(all.count(key)) << key << " is in no parameter table of docs/ros_api.md or docs/teleop.md";
   const std::set<std::string> not_in_tables = {"virtual_obstacles"};  // a list (tracking_params.h)
   for (const std::string& name : readmeNames(kTrackingHeader))
-    EXPECT_TRUE(fields.count(name) || not_in_tables.count(name)) << "README row `" << name << "` names no field";
+    EXPECT_TRUE(fields.count(name) || not_in_tables.count(name)) << "docs row `" << name << "` names no field";
   for (const std::string& name : readmeNames(kDriverHeader))
-    EXPECT_TRUE(driver.count(name)) << "README driver row `" << name << "` names no field";
+    EXPECT_TRUE(driver.count(name)) << "docs driver row `" << name << "` names no field";
 }
 
 TEST(ParamCoverage, TheCfgHasExactlyTheLiveFields) {

@@ -1,7 +1,7 @@
 // The localisation nodelet's one parameter set (ROS-free): what it does (mapping or
 // localisation on a map file), its frames and publishing rates, and the ICP, update and
 // global-relocalisation settings of the Localizer and the Mapper. SI units, described once by
-// localizationFields() (config/localization.yaml, the README's table, the ROS reader).
+// localizationFields() (config/localization.yaml, the table in docs/ros_api.md, the ROS reader).
 #pragma once
 
 #include <string>

@@ -49,7 +49,7 @@ struct DriverParams {
 // The driver's ROS parameters: its own rows and aria::clientFields(), flat.
 const core::FieldTable<DriverParams>& driverFields();
 
-// Reads the private parameters (see README); throws std::runtime_error("~key: reason").
+// Reads the private parameters (docs/ros_api.md); throws std::runtime_error("~key: reason").
 DriverParams loadDriverParams(const ros::NodeHandle& pnh);
 
 class AmigobotDriver {

@@ -29,7 +29,7 @@ struct LaserParams {
   std::string validate() const;
 };
 
-// The one description of the parameters (config/laser.yaml, the README's table).
+// The one description of the parameters (config/laser.yaml, the table in docs/ros_api.md).
 const core::FieldTable<LaserParams>& laserFields();
 // Reads the private parameters; throws std::runtime_error naming the bad one.
 LaserParams loadLaserParams(const ros::NodeHandle& pnh);

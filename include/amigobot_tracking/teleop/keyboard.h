@@ -42,7 +42,7 @@ struct KeyBinding {
   const char* meaning;   // for the help text
 };
 
-// Every bound key (the table the help text and the README show).
+// Every bound key (the table the help text and docs/teleop.md show).
 const std::vector<KeyBinding>& keyBindings();
 // The binding of `key`: a bound key; Ctrl-C (0x03) and Ctrl-D (0x04) quit; any other
 // printable key stops (as teleop_twist_keyboard); other control bytes are ignored.

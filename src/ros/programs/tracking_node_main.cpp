@@ -6,7 +6,7 @@
 
 const amigobot_tracking::ros_layer::NodeHelp kHelp{
     "The tracking controller (the nodelet amigobot_tracking/Tracking) in its own process.",
-    "config/tracking.yaml and the README's parameter tables."};
+    "config/tracking.yaml and the parameter tables of docs/ros_api.md."};
 
 int main(int argc, char** argv) {
   amigobot_tracking::ros_layer::initNode(argc, argv, "tracking", kHelp);
