@@ -19,6 +19,7 @@ import sys
 import time
 import xml.etree.ElementTree as ET
 
+import rosgraph.names
 import roslaunch.config
 import roslaunch.core
 import roslaunch.node_args
@@ -27,12 +28,12 @@ import roslaunch.rlutil
 
 def check(path, args):
     """Returns (ok, text): what was found, or the first problem."""
-    problem = roslaunch.rlutil.check_roslaunch(path)
-    if problem:
-        return False, f"{path}: roslaunch check: {problem}"
     saved = sys.argv
-    sys.argv = ["roslaunch", path] + list(args)  # XmlLoader reads the args from sys.argv
+    sys.argv = ["roslaunch", path] + list(args)  # roslaunch's loader reads the args from sys.argv
     try:
+        problem = roslaunch.rlutil.check_roslaunch(path)
+        if problem:
+            return False, f"{path}: roslaunch check: {problem}"
         config = roslaunch.config.load_config_default([path], None, verbose=False)
     except Exception as err:  # roslaunch raises several kinds; each names the file and element
         return False, f"{path}: does not load: {err}"
@@ -42,7 +43,7 @@ def check(path, args):
         return False, f"{path}: no nodes"
     lines = []
     for node in config.nodes:
-        name = roslaunch.core.ns_join(node.namespace, node.name)
+        name = rosgraph.names.ns_join(node.namespace, node.name)
         try:
             cmd = roslaunch.node_args.create_local_process_args(node, "check")
         except Exception as err:
@@ -66,7 +67,10 @@ def run_list(list_path, root, xml_path):
             name, launch = words[0], os.path.join(root, "launch", words[1])
             args = [w.replace("{root}", root) for w in words[2:]]
             start = time.monotonic()
-            ok, text = check(launch, args)
+            try:
+                ok, text = check(launch, args)
+            except Exception as err:  # one broken configuration must not hide the others
+                ok, text = False, f"{launch}: check failed: {type(err).__name__}: {err}"
             elapsed = time.monotonic() - start
         total += 1
         case = ET.SubElement(suite, "testcase", classname="launch", name=f"launch_{name}", time=f"{elapsed:.3f}")
