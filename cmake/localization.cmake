@@ -18,10 +18,12 @@ target_include_directories(amigobot_tracking_localization PUBLIC include)
 target_link_libraries(amigobot_tracking_localization PUBLIC amigobot_tracking_core amigobot_tracking_world mrpt::slam mrpt::maps yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit map_file localizer mapper)
+  foreach(unit map_file localizer mapper pose_graph real_log)
     amigobot_add_unit_test(test_localization_${unit} test/unit/test_localization_${unit}.cpp)
     target_link_libraries(test_localization_${unit} amigobot_tracking_localization)
   endforeach()
+  # The real building (test/data/real/intel.gfs.log) replayed in each mode.
+  target_compile_definitions(test_localization_real_log PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
 # `make bench`: localisation update per scan (360 and 720 beams), mapping update per scan.
