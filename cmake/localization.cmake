@@ -7,15 +7,23 @@ amigobot_add_library(amigobot_tracking_localization
   src/localization/distance_field.cpp
   src/localization/localizer.cpp
   src/localization/mapper.cpp
+  src/localization/pose_graph.cpp
+  src/localization/graph_mapper.cpp
+  src/localization/map_drawing.cpp
+  src/localization/carmen_log.cpp
+  src/localization/trajectory_error.cpp
+  src/localization/log_replay.cpp
 )
 target_include_directories(amigobot_tracking_localization PUBLIC include)
 target_link_libraries(amigobot_tracking_localization PUBLIC amigobot_tracking_core amigobot_tracking_world mrpt::slam mrpt::maps yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit map_file localizer mapper)
+  foreach(unit map_file localizer mapper pose_graph real_log)
     amigobot_add_unit_test(test_localization_${unit} test/unit/test_localization_${unit}.cpp)
     target_link_libraries(test_localization_${unit} amigobot_tracking_localization)
   endforeach()
+  # The real building (test/data/real/intel.gfs.log) replayed in each mode.
+  target_compile_definitions(test_localization_real_log PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
 # `make bench`: localisation update per scan (360 and 720 beams), mapping update per scan.
@@ -27,3 +35,7 @@ endif()
 # world_map: a world file drawn into a map_server map (the e2e tests' surveyed maps).
 amigobot_add_tool(world_map src/tools/world_map.cpp)
 target_link_libraries(world_map amigobot_tracking_localization)
+
+# log_replay: a CARMEN log through mapping or localisation, scored against its reference poses.
+amigobot_add_tool(log_replay src/tools/log_replay.cpp)
+target_link_libraries(log_replay amigobot_tracking_localization)

@@ -11,6 +11,8 @@ amigobot_add_tool(localization_node src/ros/programs/localization_node.cpp)
 target_link_libraries(localization_node amigobot_tracking_ros_localization)
 
 if(CATKIN_ENABLE_TESTING)
+  amigobot_add_unit_test(test_stamp_gate test/unit/test_stamp_gate.cpp)
+  target_link_libraries(test_stamp_gate ${catkin_LIBRARIES})
   # The nodelet (pluginlib lookup through package.xml) against a synthetic room: the test
   # publishes the scans and odom -> base_footprint itself.
   foreach(behaviour tracking mapping bad_param)

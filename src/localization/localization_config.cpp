@@ -12,6 +12,8 @@ const core::FieldTable<LocalizationConfig>& localizationFields() {
     core::FieldTable<C> t;
     t.push_back(field("mode", &C::mode, "-", "mapping (ICP-SLAM) or localization (on map_file)",
                       core::oneOf({"mapping", "localization"})));
+    t.push_back(field("mapping_method", &C::mapping_method, "-", "mapping: icp (MRPT's ICP-SLAM) or graph (pose graph, closes loops)",
+                      core::oneOf({"icp", "graph"})));
     t.push_back(field("map_file", &C::map_file, "-", "map YAML (map_server format) to load; mapping: ~save_map's default"));
     core::include(&t, "initial_pose/", &C::initial_pose,
                   core::FieldTable<core::Pose2>{
@@ -54,6 +56,17 @@ const core::FieldTable<LocalizationConfig>& localizationFields() {
                             core::interval(1, false, 1000, false)),
                       field("min_match", &GlobalConfig::min_match, "-", "relocalisation: matching fraction to accept",
                             core::interval(0.0, false, 1.0, false)),
+                  });
+    core::include(&t, "graph/", &C::graph,
+                  core::FieldTable<GraphConfig>{
+                      field("keyframe_travel", &GraphConfig::keyframe_travel, "m", "graph mapping: travel between keyframes",
+                            core::interval(0.01, false, 10.0, false)),
+                      field("loop_radius", &GraphConfig::loop_radius, "m", "graph mapping: old keyframes this close are loop candidates",
+                            core::interval(0.1, false, 50.0, false)),
+                      field("loop_min_match", &GraphConfig::loop_min_match, "-", "graph mapping: matching fraction accepting a loop",
+                            core::interval(0.0, false, 1.0, false)),
+                      field("loop_min_gap", &GraphConfig::loop_min_gap, "-", "graph mapping: keyframes between a keyframe and its loop candidates",
+                            core::interval(2, false, 100000, false)),
                   });
     return t;
   }();

@@ -13,12 +13,20 @@
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/slam/CMetricMapBuilderICP.h>
 
+#include "amigobot_tracking/localization/graph_mapper.h"
+#include "amigobot_tracking/localization/map_drawing.h"
 #include "amigobot_tracking/localization/poses.h"
 
 namespace amigobot_tracking {
 namespace localization {
 
-Mapper::Mapper(const LocalizationConfig& config) : config_(config), builder_(std::make_unique<mrpt::slam::CMetricMapBuilderICP>()) {
+Mapper::Mapper(const LocalizationConfig& config) : config_(config) {
+  estimate_.pose = config.initial_pose;
+  if (config.mapping_method == "graph") {
+    graph_ = std::make_unique<GraphMapper>(config);
+    return;
+  }
+  builder_ = std::make_unique<mrpt::slam::CMetricMapBuilderICP>();
   builder_->setVerbosityLevel(mrpt::system::LVL_ERROR);
   auto& options = builder_->ICP_options;
   options.matchAgainstTheGrid = false;
@@ -45,12 +53,15 @@ Mapper::Mapper(const LocalizationConfig& config) : config_(config), builder_(std
   const mrpt::poses::CPosePDFGaussian start(toMrpt(config.initial_pose));
   builder_->initialize(mrpt::maps::CSimpleMap(), &start);
   clock_origin_ = mrpt::Clock::now();
-  estimate_.pose = config.initial_pose;
 }
 
 Mapper::~Mapper() = default;
 
 const MappingEstimate& Mapper::update(const RangeScan& scan, const core::Pose2& odom_base) {
+  if (graph_) {
+    graph_->update(scan, odom_base, &estimate_);
+    return estimate_;
+  }
   const core::Pose2 increment = estimate_.scans == 0 ? core::Pose2() : compose(inverse(last_odom_), odom_base);
   last_odom_ = odom_base;
   // MRPT wants increasing timestamps after its own clock at initialize(): the time since the
@@ -78,21 +89,18 @@ const MappingEstimate& Mapper::update(const RangeScan& scan, const core::Pose2& 
   const auto [cov, unused] = pdf->getCovarianceAndMean();
   (void)unused;
   estimate_.covariance << cov(0, 0), cov(0, 1), cov(0, 3), cov(1, 0), cov(1, 1), cov(1, 3), cov(3, 0), cov(3, 1), cov(3, 3);
+  trajectory_.push_back(estimate_.pose);
   return estimate_;
 }
 
+std::vector<core::Pose2> Mapper::trajectory() const { return graph_ ? graph_->trajectory() : trajectory_; }
+
+int Mapper::loopClosures() const { return graph_ ? graph_->loopClosures() : 0; }
+
 OccupancyMap Mapper::map() const {
   if (estimate_.scans == 0) return OccupancyMap();
-  const auto grid = builder_->getCurrentlyBuiltMetricMap()->mapByClass<mrpt::maps::COccupancyGridMap2D>();
-  OccupancyMap out = makeMap(grid->getResolution(), grid->getXMin(), grid->getYMin(), static_cast<int>(grid->getSizeX()),
-                             static_cast<int>(grid->getSizeY()));
-  for (int y = 0; y < out.height; ++y) {
-    for (int x = 0; x < out.width; ++x) {
-      const float occupancy = 1.0f - grid->getCell(x, y);  // MRPT stores how free a cell is
-      out.at(x, y) = occupancy >= 0.6f ? OccupancyMap::kOccupied : occupancy <= 0.4f ? OccupancyMap::kFree : OccupancyMap::kUnknown;
-    }
-  }
-  return out;
+  if (graph_) return graph_->map();
+  return toOccupancyMap(*builder_->getCurrentlyBuiltMetricMap()->mapByClass<mrpt::maps::COccupancyGridMap2D>());
 }
 
 }  // namespace localization

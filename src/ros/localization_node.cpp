@@ -153,6 +153,7 @@ void LocalizationNode::tfLoop() {
 void LocalizationNode::publishTransform(const core::Pose2& map_to_odom) {
   geometry_msgs::TransformStamped t;
   t.header.stamp = ros::Time::now() + ros::Duration(config_.transform_tolerance);
+  if (!tf_gate_.pass(t.header.stamp)) return;  // the same stamp again: tf2 would warn TF_REPEATED_DATA
   t.header.frame_id = config_.global_frame;
   t.child_frame_id = config_.odom_frame;
   t.transform = toTransform(map_to_odom);

@@ -27,8 +27,16 @@ struct GlobalConfig {
   double min_match = 0.6;      // [-] fraction of beams on the map accepting a relocalisation
 };
 
+struct GraphConfig {
+  double keyframe_travel = 0.3;  // [m] travel between keyframes of the pose graph
+  double loop_radius = 4.0;      // [m] old keyframes this close are loop candidates
+  double loop_min_match = 0.7;   // [-] fraction of a keyframe's points on the old ones accepting a loop
+  int loop_min_gap = 20;         // keyframes between a keyframe and its loop candidates
+};
+
 struct LocalizationConfig {
   std::string mode = "localization";  // mapping | localization
+  std::string mapping_method = "icp";  // mapping: icp (MRPT's ICP-SLAM) | graph (pose graph, closes loops)
   std::string map_file;               // localization: the map to load; mapping: ~save_map's default
   core::Pose2 initial_pose;           // [m, m, rad] map -> base at start (and the map origin's offset when mapping)
   std::string global_frame = "map", odom_frame = "odom", base_frame = "base_footprint";
@@ -43,6 +51,7 @@ struct LocalizationConfig {
   double range_max = 10.0;           // [m] farther echoes are ignored
   IcpConfig icp;
   GlobalConfig global;
+  GraphConfig graph;
 
   // "" when valid, else "key: reason" for the first rule across fields that is broken.
   std::string validate() const;

@@ -1,10 +1,14 @@
-// Mapping: ICP-SLAM over MRPT's CMetricMapBuilderICP (a point map to match scans against and
-// an occupancy grid to publish and save), fed with each scan and the odometry increment since
-// the previous one. The map frame is where the robot was at the first scan, moved by
-// config.initial_pose. Not thread-safe: one caller (map() may be called between updates).
+// Mapping, one of two methods (config.mapping_method):
+// - icp: ICP-SLAM over MRPT's CMetricMapBuilderICP (a point map to match scans against and an
+//   occupancy grid to publish and save), fed with each scan and the odometry increment since
+//   the previous one; it never closes a loop;
+// - graph: GraphMapper's pose graph of keyframes, which closes loops.
+// The map frame is where the robot was at the first scan, moved by config.initial_pose.
+// Not thread-safe: one caller (map() may be called between updates).
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include <mrpt/core/Clock.h>
 
@@ -18,6 +22,8 @@ class CMetricMapBuilderICP;
 
 namespace amigobot_tracking {
 namespace localization {
+
+class GraphMapper;
 
 struct MappingEstimate {
   core::Pose2 pose;         // map -> base
@@ -39,10 +45,15 @@ class Mapper {
   // The grid so far, trinary (occupied >= 60 %, free <= 40 %, else unknown); empty before
   // the first scan.
   OccupancyMap map() const;
+  // The pose of every scan so far: icp, as estimated at the time; graph, as optimised now.
+  std::vector<core::Pose2> trajectory() const;
+  int loopClosures() const;  // always 0 for icp
 
  private:
   LocalizationConfig config_;
-  std::unique_ptr<mrpt::slam::CMetricMapBuilderICP> builder_;
+  std::unique_ptr<mrpt::slam::CMetricMapBuilderICP> builder_;  // icp
+  std::unique_ptr<GraphMapper> graph_;                         // graph
+  std::vector<core::Pose2> trajectory_;                        // icp
   MappingEstimate estimate_;
   core::Pose2 last_odom_;
   mrpt::Clock::time_point clock_origin_;  // MRPT's clock at initialize()

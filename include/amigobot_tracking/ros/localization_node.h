@@ -30,6 +30,7 @@
 #include "amigobot_tracking/localization/localizer.h"
 #include "amigobot_tracking/localization/mapper.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
+#include "amigobot_tracking/ros/stamp_gate.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -82,6 +83,7 @@ class LocalizationNode {
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_;
   tf2_ros::TransformBroadcaster broadcaster_;
+  StampGate tf_gate_;  // map -> odom only when its stamp advances (use_sim_time replays)
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> filter_;
   ros::Subscriber initial_pose_sub_;
