@@ -89,7 +89,7 @@ std::string decodeCapsule(const std::uint8_t* b, Capsule* c) {
   if ((b[0] >> 4) != 0xA || (b[1] >> 4) != 0x5) return "capsule: sync nibbles are not A and 5";
   std::uint8_t sum = 0;
   for (std::size_t i = 2; i < kCapsuleSize; ++i) sum ^= b[i];
-  if (sum != ((b[0] & 0x0F) | (b[1] << 4))) return "capsule: checksum mismatch";
+  if (sum != static_cast<std::uint8_t>((b[0] & 0x0F) | (b[1] << 4))) return "capsule: checksum mismatch";
   const std::uint16_t angle = static_cast<std::uint16_t>(b[2] | (b[3] << 8));
   c->start = angle & 0x8000;
   c->start_angle_q6 = angle & 0x7FFF;

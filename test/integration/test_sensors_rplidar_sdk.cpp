@@ -194,7 +194,9 @@ TEST(StandardDriversRplidarSdk, ListsTheScanModesAndStreamsTheTypicalExpressMode
   std::size_t last_sync = 0;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     if (!nodes[i].sync) continue;
-    if (revolutions++ > 0) EXPECT_NEAR(static_cast<double>(i - last_sync), 2000.0 / 5.5, 12.0);  // samples per turn
+    if (revolutions++ > 0) {
+      EXPECT_NEAR(static_cast<double>(i - last_sync), 2000.0 / 5.5, 12.0);  // samples per turn
+    }
     last_sync = i;
   }
   EXPECT_GE(revolutions, 3);
