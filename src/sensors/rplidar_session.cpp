@@ -26,6 +26,7 @@ struct ScanMode {
 // microseconds per sample say so, so a driver's timing stays right.
 constexpr ScanMode kModes[] = {{"Standard", rplidar::kMeasurementType}, {"Express", rplidar::kCapsuledType}};
 constexpr std::uint16_t kModeCount = 2, kTypicalMode = 1;
+constexpr std::uint32_t kPwmReference = 660;  // the A1's usual motor PWM
 
 std::string littleEndian(std::uint32_t value, int bytes) {
   std::string out;
@@ -136,8 +137,12 @@ class RplidarSession : public LaserSession {
       case kConfScanModeName:
         if (known) value = std::string(kModes[mode].name) + '\0';
         break;
-      default: break;  // an unknown key: the key alone, no value
+      case kConfDesiredRotFreq:
+        value = littleEndian(static_cast<std::uint32_t>(std::lround(model_.rate * 60.0)), 2) + littleEndian(kPwmReference, 2);
+        break;
+      default: return "";  // unknown keys go unanswered: the SDK times out and falls back
     }
+    if (value.empty()) return "";  // a per-mode key for a mode that does not exist
     return encodeDescriptor({static_cast<std::uint32_t>(4 + value.size()), false, kLidarConfType}) + littleEndian(key, 4) + value;
   }
 

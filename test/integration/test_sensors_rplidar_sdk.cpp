@@ -177,6 +177,11 @@ TEST(StandardDriversRplidarSdk, ListsTheScanModesAndStreamsTheTypicalExpressMode
   link.write(rplidar::request(rplidar::kStop));
   ASSERT_TRUE(supportsConf(link));
   EXPECT_EQ(readMode(link, mode).ans_type, rplidar::kCapsuledType);
+  // startMotor -> setMotorSpeed -> getDesiredSpeed: the SDK reads 4 bytes of the answer
+  // without checking its size (an empty answer crashed it), rpm then PWM reference.
+  const std::string speed = conf(link, rplidar::kConfDesiredRotFreq);
+  ASSERT_EQ(speed.size(), 4u);
+  EXPECT_EQ(le(speed, 0, 2), 330u);  // 5.5 Hz
   link.write(rplidar::request(rplidar::kExpressScan, std::string(1, static_cast<char>(mode)) + std::string(4, '\0')));
   const std::string d = link.read(rplidar::kDescriptorSize);
   rplidar::Descriptor descriptor;

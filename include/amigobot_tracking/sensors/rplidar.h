@@ -34,6 +34,7 @@ constexpr std::size_t kCapsuleSize = 84, kCapsuleSamples = 32;
 // GET_LIDAR_CONF keys (request payload: the u32 key, little-endian, then for the per-mode
 // keys the u16 mode id; answer: the u32 key then the value).
 enum ConfKey : std::uint32_t {
+  kConfDesiredRotFreq = 0x01,       // u16 rpm, u16 PWM reference (the SDK's startMotor asks it)
   kConfScanModeCount = 0x70,        // u16
   kConfScanModeUsPerSample = 0x71,  // u32, microseconds * 256
   kConfScanModeMaxDistance = 0x74,  // u32, metres * 256
