@@ -39,3 +39,14 @@ if(CATKIN_ENABLE_TESTING)
     add_dependencies(test_sensors_${device}_emulator laser_emulator)
   endforeach()
 endif()
+
+if(CATKIN_ENABLE_TESTING)
+  # The standard drivers' conversations (urg_c, clearpath LMS1xx, sick_tim, Slamtec's SDK),
+  # replayed byte for byte against the emulator executable, their replies parsed as they do.
+  foreach(suite standard_drivers rplidar_sdk)
+    amigobot_add_unit_test(test_sensors_${suite} test/integration/test_sensors_${suite}.cpp)
+    target_link_libraries(test_sensors_${suite} amigobot_tracking_sensors)
+    target_compile_definitions(test_sensors_${suite} PRIVATE AMIGOBOT_LASER_EMULATOR="$<TARGET_FILE:laser_emulator>")
+    add_dependencies(test_sensors_${suite} laser_emulator)
+  endforeach()
+endif()

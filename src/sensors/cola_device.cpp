@@ -74,7 +74,7 @@ class ColaDevice : public LaserDevice {
     out.ranges.reserve(t.ranges.size());
     for (std::uint32_t value : t.ranges) {
       out.ranges.push_back(value == 0 ? std::numeric_limits<float>::infinity()
-                                      : static_cast<float>(value * t.scale_factor / 1000.0));
+                                      : static_cast<float>((value * t.scale_factor + t.scale_offset) / 1000.0));
     }
     out.stamp = received - out.time_increment * static_cast<double>(t.ranges.size() - 1);
     *scan = std::move(out);

@@ -3,7 +3,10 @@
 // reports its scan configuration (LMPscancfg) and status (STlms), and measures only after
 // an authorised client (SetAccessMode 03 with the client password) started it (LMCstartmeas).
 #include <cmath>
+#include <algorithm>
 #include <memory>
+#include <sstream>
+#include <vector>
 
 #include "amigobot_tracking/sensors/cola_a.h"
 #include "amigobot_tracking/sensors/laser_session.h"
@@ -54,7 +57,6 @@ class ColaSession : public LaserSession {
     if (body == "sMN LMCstartmeas" || body == "sMN LMCstopmeas") {
       if (lms_ && !authorised_) return "sFA 1";  // access denied
       measuring_ = body == "sMN LMCstartmeas";
-      status_queries_ = 0;
       return "sAN " + body.substr(4) + " 0";
     }
     if (body == "sMN Run") {
@@ -62,18 +64,45 @@ class ColaSession : public LaserSession {
       return "sAN Run 1";
     }
     if (body == "sMN mSCreboot") return "sAN mSCreboot";
-    if (lms_ && body == "sRN LMPscancfg") {
+    if (lms_ && body == "sRN LMPscancfg") return "sRA LMPscancfg " + lmpScanCfg();
+    if (body == "sRN LMPoutputRange") {  // sectors, resolution, start, stop (clearpath LMS1xx, sick_scan)
       const ColaGeometry& g = model_.cola;
-      return "sRA LMPscancfg " + cola::hex(static_cast<std::uint32_t>(g.scan_frequency)) + " 1 " +
-             cola::hex(static_cast<std::uint32_t>(g.angular_step)) + " " + cola::hexSigned(g.start_angle) + " " +
-             cola::hexSigned(g.start_angle + g.angular_step * (g.beams - 1));
+      return "sRA LMPoutputRange 1 " + cola::hex(static_cast<std::uint32_t>(g.angular_step)) + " " +
+             cola::hexSigned(g.start_angle) + " " + cola::hexSigned(g.start_angle + g.angular_step * (g.beams - 1));
     }
+    if (body.rfind("sWN LMPoutputRange ", 0) == 0) return "sWA LMPoutputRange";  // the range stays the full one
+    if (body.rfind("sWN LMDscandatacfg ", 0) == 0) return scanDataConfig(body);
+    if (lms_ && body.rfind("sMN mLMPsetscancfg ", 0) == 0) {
+      // Accepted without change: the emulated configuration is set on the command line.
+      return authorised_ ? "sAN mLMPsetscancfg 0 " + lmpScanCfg() : "sFA 1";
+    }
+    if (lms_ && body == "sMN mEEwriteall") return "sAN mEEwriteall 1";
     if (lms_ && body == "sRN STlms") {
-      // 3 idle; once started, 5 (preparing) for the first query, then 7 (ready for measurement).
-      const int status = !measuring_ ? 3 : (status_queries_++ == 0 ? 5 : 7);
-      return "sRA STlms " + std::to_string(status) + " 0 8 00:00:00 A 01.01.2000 0 0 0";
+      // 3 idle; 7 (ready for measurement) once started: the emulated device is long warmed
+      // up, so clearpath's LMS1xx_node, which asks once right after LMCstartmeas, proceeds.
+      return "sRA STlms " + std::string(measuring_ ? "7" : "3") + " 0 8 00:00:00 A 01.01.2000 0 0 0";
     }
     return "sFA 2";  // SICK error 2: unknown command
+  }
+
+  // Frequency, sector count, resolution, start, stop, as LMPscancfg lists them.
+  std::string lmpScanCfg() const {
+    const ColaGeometry& g = model_.cola;
+    return cola::hex(static_cast<std::uint32_t>(g.scan_frequency)) + " 1 " +
+           cola::hex(static_cast<std::uint32_t>(g.angular_step)) + " " + cola::hexSigned(g.start_angle) + " " +
+           cola::hexSigned(g.start_angle + g.angular_step * (g.beams - 1));
+  }
+
+  // sWN LMDscandatacfg channel 00 remission resolution unit encoder 00 position name comment
+  // time interval: the remission flag adds an RSSI1 channel, 16-bit at resolution 1 (else 8-bit).
+  std::string scanDataConfig(const std::string& body) {
+    std::istringstream in(body);
+    std::vector<std::string> f;
+    for (std::string field; in >> field;) f.push_back(field);
+    if (f.size() < 6) return "sFA 3";  // SICK error 3: wrong parameter count
+    remission_ = f[4] == "1";
+    remission_8bit_ = f[5] == "0";
+    return "sWA LMDscandatacfg";
   }
 
   std::string telegram(const char* command, const EmulatedScan& scan) {
@@ -89,13 +118,23 @@ class ColaSession : public LaserSession {
     t.start_angle = model_.cola.start_angle;
     t.angular_step = static_cast<std::uint32_t>(model_.cola.angular_step);
     t.ranges = deviceRanges(model_, scan.ranges);
+    if (remission_) {
+      t.rssi_8bit = remission_8bit_;
+      for (std::uint32_t range : t.ranges) t.rssi.push_back(remission(range));
+    }
     return cola::encodeScan(t);
   }
 
   LaserModel model_;
   std::string serial_, buffer_;
-  bool lms_, measuring_, streaming_ = false, authorised_ = false;
-  int status_queries_ = 0;
+  // An emulated remission: none without echo, weaker with distance (a grey wall).
+  std::uint32_t remission(std::uint32_t range_mm) const {
+    if (range_mm == 0) return 0;
+    const double full = remission_8bit_ ? 255.0 : 1000.0;
+    return static_cast<std::uint32_t>(std::lround(full * std::max(0.1, 1.0 - range_mm / (1000.0 * model_.range_max))));
+  }
+
+  bool lms_, measuring_, streaming_ = false, authorised_ = false, remission_ = false, remission_8bit_ = false;
   std::uint32_t telegrams_ = 0;
 };
 

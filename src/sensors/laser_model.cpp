@@ -63,7 +63,10 @@ LaserModel laserModel(const std::string& name) {
     m.rate = m.cola.scan_frequency / 100.0;
   } else if (name == "sick_lms1xx") {
     m.protocol = Protocol::kColaA;
-    m.range_min = 0.5;  // LMS111 data sheet: 0.5 .. 20 m
+    // The LMS111 data sheet's operating range starts at 0.5 m, but the device reports echoes
+    // from 0.01 m on (real captures carry 0.126 m) and clearpath's LMS1xx driver publishes
+    // range_min 0.01: dropping them would lose what the device measured.
+    m.range_min = 0.01;
     m.range_max = 20.0;
     setLms1xxScanConfig(&m, 25.0, 0.5);
   } else if (name == "rplidar") {

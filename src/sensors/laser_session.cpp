@@ -46,9 +46,13 @@ class ScipSession : public LaserSession {
     requests_.push_back(line);
     const std::string command = line.substr(0, 2);
     if (line == "SCIP2.0") return scip::reply(line, "00");
+    // The info replies carry every line urg_c (urg_node's library, current/src/urg_sensor.c)
+    // counts and cuts: VV 5 entries (VV_RESPONSE_LINES 7 with echo and status), FIRM
+    // "version(date)" (urg_sensor_firmware_version cuts at '('); II 7 entries
+    // (II_RESPONSE_LINES 9) with STAT, and MESM with a space (urg_sensor_state cuts at ' ').
     if (command == "VV") {
       return scip::infoReply(line, {"VEND:Hokuyo Automatic Co.,Ltd.", "PROD:SOKUIKI Sensor URG-04LX (emulated)",
-                                    "FIRM:3.4.03", "PROT:SCIP 2.0", "SERI:" + serial_});
+                                    "FIRM:3.4.03(17/Dec./2012)", "PROT:SCIP 2.0", "SERI:" + serial_});
     }
     if (command == "PP") {
       const ScipGeometry& g = model_.scip;
@@ -58,9 +62,12 @@ class ScipSession : public LaserSession {
                                     "AFRT:" + std::to_string(g.afrt), "SCAN:" + std::to_string(g.scan_rpm)});
     }
     if (command == "II") {
-      return scip::infoReply(line, {"MODL:URG-04LX", "LASR:" + std::string(laser_on_ ? "ON" : "OFF"),
-                                    "SCSP:Initial(600[rpm])", "MESM:Measuring", "SBPS:Ethernet",
-                                    "TIME:" + scip::encode(static_cast<std::uint32_t>(latest.t * 1000.0) & 0xFFFFFFu, 4)});
+      return scip::infoReply(line, {"MODL:URG-04LX(Hokuyo Automatic Co.,Ltd.)", "LASR:" + std::string(laser_on_ ? "ON" : "OFF"),
+                                    "SCSP:Initial(" + std::to_string(model_.scip.scan_rpm) + "[rpm])",
+                                    std::string("MESM:") + (laser_on_ ? "Measuring by Normal Mode" : "Idling (laser off)"),
+                                    "SBPS:Ethernet (emulated)",
+                                    "TIME:" + scip::encode(static_cast<std::uint32_t>(latest.t * 1000.0) & 0xFFFFFFu, 4),
+                                    "STAT:Sensor works well."});
     }
     if (command == "BM") {
       laser_on_ = true;

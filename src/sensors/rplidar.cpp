@@ -16,6 +16,15 @@ std::uint8_t byte(const std::string& s, std::size_t i) { return static_cast<std:
 
 std::string request(Command command) { return {static_cast<char>(kSync), static_cast<char>(command)}; }
 
+std::string request(Command command, const std::string& payload) {
+  std::string out{static_cast<char>(kSync), static_cast<char>(command), static_cast<char>(payload.size())};
+  out += payload;
+  std::uint8_t sum = 0;
+  for (char c : out) sum ^= static_cast<std::uint8_t>(c);
+  out.push_back(static_cast<char>(sum));
+  return out;
+}
+
 std::string encodeDescriptor(const Descriptor& d) {
   const std::uint32_t word = (d.length & 0x3FFFFFFFu) | (d.multiple ? 0x40000000u : 0u);
   std::string out{static_cast<char>(kSync), static_cast<char>(kSync2)};
@@ -55,6 +64,39 @@ std::string decodeNode(const std::uint8_t* b, Node* n) {
   n->quality = b[0] >> 2;
   n->angle_q6 = static_cast<std::uint16_t>(angle);
   n->distance_q2 = static_cast<std::uint16_t>(b[3] | (b[4] << 8));
+  return "";
+}
+
+std::string encodeCapsule(const Capsule& c) {
+  std::string out(kCapsuleSize, '\0');
+  const std::uint16_t angle = static_cast<std::uint16_t>((c.start_angle_q6 & 0x7FFF) | (c.start ? 0x8000 : 0));
+  out[2] = static_cast<char>(angle & 0xFF);
+  out[3] = static_cast<char>(angle >> 8);
+  for (std::size_t i = 0; i < kCapsuleSamples; ++i) {
+    const std::uint16_t d = static_cast<std::uint16_t>((c.distance_mm[i] & 0x3FFF) << 2);
+    const std::size_t at = 4 + 5 * (i / 2) + 2 * (i % 2);  // cabin: distance 1, distance 2, offsets
+    out[at] = static_cast<char>(d & 0xFF);
+    out[at + 1] = static_cast<char>(d >> 8);
+  }
+  std::uint8_t sum = 0;
+  for (std::size_t i = 2; i < kCapsuleSize; ++i) sum ^= static_cast<std::uint8_t>(out[i]);
+  out[0] = static_cast<char>(0xA0 | (sum & 0x0F));
+  out[1] = static_cast<char>(0x50 | (sum >> 4));
+  return out;
+}
+
+std::string decodeCapsule(const std::uint8_t* b, Capsule* c) {
+  if ((b[0] >> 4) != 0xA || (b[1] >> 4) != 0x5) return "capsule: sync nibbles are not A and 5";
+  std::uint8_t sum = 0;
+  for (std::size_t i = 2; i < kCapsuleSize; ++i) sum ^= b[i];
+  if (sum != static_cast<std::uint8_t>((b[0] & 0x0F) | (b[1] << 4))) return "capsule: checksum mismatch";
+  const std::uint16_t angle = static_cast<std::uint16_t>(b[2] | (b[3] << 8));
+  c->start = angle & 0x8000;
+  c->start_angle_q6 = angle & 0x7FFF;
+  for (std::size_t i = 0; i < kCapsuleSamples; ++i) {
+    const std::size_t at = 4 + 5 * (i / 2) + 2 * (i % 2);
+    c->distance_mm[i] = static_cast<std::uint16_t>((b[at] | (b[at + 1] << 8)) >> 2);
+  }
   return "";
 }
 

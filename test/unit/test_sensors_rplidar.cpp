@@ -107,6 +107,7 @@ TEST(RplidarSession, AnswersInfoHealthAndStreamsNodesAfterScan) {
   ASSERT_EQ(rplidar::decodeNode(reinterpret_cast<const std::uint8_t*>(nodes.data()), &n), "");
   EXPECT_TRUE(n.start);
   EXPECT_EQ(n.distance_q2, 4000);
+  EXPECT_EQ(n.quality, 15);  // what an A1 sends for a measurement
   ASSERT_EQ(rplidar::decodeNode(reinterpret_cast<const std::uint8_t*>(nodes.data() + 5), &n), "");
   EXPECT_FALSE(n.start);
   EXPECT_EQ(n.distance_q2, 0);  // no echo

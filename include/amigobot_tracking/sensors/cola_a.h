@@ -34,14 +34,24 @@ struct ScanTelegram {
   std::uint32_t time_since_start_us = 0, time_of_transmission_us = 0;
   std::uint32_t scan_frequency = 0;       // [1/100 Hz]
   std::uint32_t measurement_frequency = 0;  // [100 Hz] beams per second / 100
-  float scale_factor = 1.0f;              // range [mm] = value * scale_factor
+  // Encoder block (LMDscandatacfg with encoder output): one position [ticks] and speed each.
+  std::vector<std::uint32_t> encoder_positions;
+  std::vector<std::uint32_t> encoder_speeds;
+  // The DIST1 channel, found among the 16-bit and 8-bit channels in any order.
+  float scale_factor = 1.0f;              // range [mm] = value * scale_factor + scale_offset
+  float scale_offset = 0.0f;              // [mm]
   std::int32_t start_angle = 0;           // [1/10000 deg] in SICK's frame: 0 deg is +y of the device
   std::uint32_t angular_step = 0;         // [1/10000 deg]
   std::vector<std::uint32_t> ranges;      // raw DIST1 values; 0 = no echo
+  // RSSI1 (remission) when the device sends it: raw values, one per range; empty when not.
+  std::vector<std::uint32_t> rssi;
+  bool rssi_8bit = false;                 // encode: RSSI1 among the 8-bit channels (else 16-bit)
 };
 
 std::string encodeScan(const ScanTelegram& scan);
 // Empty when `body` is a complete scan telegram (then *scan holds it), else what is wrong.
+// Reads the header, the encoder block, the 16-bit and the 8-bit channels as the telegram
+// listing lays them out: DIST1 anywhere among them (RSSI1 kept, DIST2.., RSSI2.. skipped).
 std::string decodeScan(const std::string& body, ScanTelegram* scan);
 
 }  // namespace cola

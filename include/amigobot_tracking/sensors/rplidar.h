@@ -22,11 +22,30 @@ constexpr std::uint8_t kSync = 0xA5, kSync2 = 0x5A;
 enum Command : std::uint8_t {
   kStop = 0x25, kReset = 0x40, kScan = 0x20, kForceScan = 0x21,
   kGetInfo = 0x50, kGetHealth = 0x52, kGetSampleRate = 0x59,
+  kExpressScan = 0x82, kGetLidarConf = 0x84,  // firmware >= 1.17, >= 1.24
 };
-enum DataType : std::uint8_t { kInfoType = 0x04, kHealthType = 0x06, kMeasurementType = 0x81, kSampleRateType = 0x15 };
+enum DataType : std::uint8_t {
+  kInfoType = 0x04, kHealthType = 0x06, kMeasurementType = 0x81, kCapsuledType = 0x82, kSampleRateType = 0x15,
+  kLidarConfType = 0x20,
+};
 constexpr std::size_t kDescriptorSize = 7, kNodeSize = 5, kInfoSize = 20, kHealthSize = 3, kSampleRateSize = 4;
+constexpr std::size_t kCapsuleSize = 84, kCapsuleSamples = 32;
+
+// GET_LIDAR_CONF keys (request payload: the u32 key, little-endian, then for the per-mode
+// keys the u16 mode id; answer: the u32 key then the value).
+enum ConfKey : std::uint32_t {
+  kConfDesiredRotFreq = 0x01,       // u16 rpm, u16 PWM reference (the SDK's startMotor asks it)
+  kConfScanModeCount = 0x70,        // u16
+  kConfScanModeUsPerSample = 0x71,  // u32, microseconds * 256
+  kConfScanModeMaxDistance = 0x74,  // u32, metres * 256
+  kConfScanModeAnsType = 0x75,      // u8: the data type the mode streams (0x81, 0x82, ...)
+  kConfScanModeTypical = 0x7C,      // u16: the mode id a driver should use
+  kConfScanModeName = 0x7F,         // NUL-terminated string
+};
 
 std::string request(Command command);  // 0xA5 command
+// 0xA5 command size payload checksum (XOR of every byte before it), for commands >= 0x80.
+std::string request(Command command, const std::string& payload);
 
 struct Descriptor {
   std::uint32_t length = 0;  // bytes per reply (per node while streaming)
@@ -61,6 +80,20 @@ struct Health {
 };
 std::string encodeHealth(const Health& health);
 Health decodeHealth(const std::string& bytes);  // 3 bytes
+
+// EXPRESS_SCAN's "capsuled" answer: 84 bytes, sync nibbles 0xA and 0x5 carrying the XOR of
+// bytes 2..83, the u16 start angle [1/64 deg] with bit 15 set on the first capsule after the
+// request, then 16 cabins of two u16 distances (mm << 2; the low 2 bits and a nibble of the
+// fifth byte: an angle correction in 1/8 deg, sent as 0). The 32 samples of a capsule lie
+// evenly from its start angle to the next capsule's, as Slamtec's SDK interpolates them.
+struct Capsule {
+  bool start = false;
+  std::uint16_t start_angle_q6 = 0;
+  std::array<std::uint16_t, kCapsuleSamples> distance_mm{};  // 0: none, < 16384
+};
+std::string encodeCapsule(const Capsule& capsule);
+// Empty when the 84 bytes at `bytes` are a capsule with a good checksum, else what is wrong.
+std::string decodeCapsule(const std::uint8_t* bytes, Capsule* capsule);
 
 // The angle of a node in the sensor frame (REP 103: counter-clockwise), within [-pi, pi).
 double nodeAngle(std::uint16_t angle_q6);
