@@ -82,7 +82,9 @@ void to_json(Json& j, const MonteCarloRun& r) {
   j["initial_pose"] = {jsonNumber(r.initial_pose.x), jsonNumber(r.initial_pose.y), jsonNumber(r.initial_pose.theta)};
   j.update(pick(r.metrics, {"ase", "true_ase", "max_true_error", "longest_stall_s", "aae", "max_e_over_rho",
                             "min_clearance_offset", "min_clearance_body", "body_collisions", "offset_collisions",
-                            "diamond_violations", "nan_count"}));
+                            "diamond_violations", "nan_count", "true_ise", "envelope_widenings", "stall_time_s",
+                            "max_orbit_turns", "escape_toggles", "avoidance_toggles", "side_flips", "max_delta_v",
+                            "max_delta_omega"}));
 }
 
 MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
@@ -93,7 +95,7 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
   sum.body_safe = base.setup.controller.body_safe;
   sum.tangential_avoidance = base.setup.controller.tangential_avoidance;
   sum.moving_obstacles = base.setup.controller.moving_obstacles;
-  double sum_ase = 0.0, sum_aae = 0.0, sum_true_ase = 0.0;
+  double sum_ase = 0.0, sum_aae = 0.0, sum_true_ase = 0.0, sum_true_ise = 0.0;
   for (int i = 0; i < options.runs; ++i) {
     const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
     const RunResult r = runScenario(s, false);
@@ -104,6 +106,17 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
     sum_true_ase += m.true_ase;
     sum.runs_with_long_stall += m.longest_stall > 0.5;
     sum.worst_stall = std::max(sum.worst_stall, m.longest_stall);
+    sum.worst_true_ase = std::max(sum.worst_true_ase, m.true_ase);
+    sum.worst_true_ise = std::max(sum.worst_true_ise, m.true_ise);
+    sum_true_ise += m.true_ise;
+    sum.worst_orbit_turns = std::max(sum.worst_orbit_turns, m.max_orbit_turns);
+    sum.worst_escape_toggles = std::max(sum.worst_escape_toggles, m.escape_toggles);
+    sum.worst_avoidance_toggles = std::max(sum.worst_avoidance_toggles, m.avoidance_toggles);
+    sum.worst_side_flips = std::max(sum.worst_side_flips, m.side_flips);
+    sum.worst_max_delta_v = std::max(sum.worst_max_delta_v, m.max_delta_v);
+    sum.worst_max_delta_omega = std::max(sum.worst_max_delta_omega, m.max_delta_omega);
+    sum.diamond_violations += m.diamond_violations;
+    sum.nan_steps += m.nan_count;
     sum.runs_with_offset_collision += m.offset_collisions > 0;
     sum.runs_with_diamond_violation += m.diamond_violations > 0;
     sum.runs_with_nan += m.nan_count > 0;
@@ -123,6 +136,7 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
   sum.mean_ase = sum_ase / n;
   sum.mean_aae = sum_aae / n;
   sum.mean_true_ase = sum_true_ase / n;
+  sum.mean_true_ise = sum_true_ise / n;
   return sum;
 }
 
@@ -155,6 +169,17 @@ void to_json(Json& j, const MonteCarloSummary& s) {
            {"mean_ase", jsonNumber(s.mean_ase)},
            {"mean_aae", jsonNumber(s.mean_aae)},
            {"mean_true_ase", jsonNumber(s.mean_true_ase)},
+           {"worst_true_ase", jsonNumber(s.worst_true_ase)},
+           {"mean_true_ise", jsonNumber(s.mean_true_ise)},
+           {"worst_true_ise", jsonNumber(s.worst_true_ise)},
+           {"worst_orbit_turns", jsonNumber(s.worst_orbit_turns)},
+           {"worst_escape_toggles", s.worst_escape_toggles},
+           {"worst_avoidance_toggles", s.worst_avoidance_toggles},
+           {"worst_side_flips", s.worst_side_flips},
+           {"worst_max_delta_v", jsonNumber(s.worst_max_delta_v)},
+           {"worst_max_delta_omega", jsonNumber(s.worst_max_delta_omega)},
+           {"diamond_violations", s.diamond_violations},
+           {"nan_steps", s.nan_steps},
            {"sim_time_s", jsonNumber(s.sim_time)},
            {"wall_time_s", jsonNumber(s.wall_time)},
            {"realtime_factor", jsonNumber(s.wall_time > 0.0 ? s.sim_time / s.wall_time : 0.0)},

@@ -60,6 +60,12 @@ struct MonteCarloSummary {
   double worst_min_clearance_offset = std::numeric_limits<double>::infinity();  // [m]
   double worst_max_e_over_rho = 0.0;
   double mean_ase = 0.0, mean_aae = 0.0, mean_true_ase = 0.0;  // [m^2], [m], [m^2]
+  double worst_true_ase = 0.0, mean_true_ise = 0.0, worst_true_ise = 0.0;  // [m^2], [m^2 s], [m^2 s]
+  // The figures that cannot hide a failure (metrics.h), worst over the runs.
+  double worst_orbit_turns = 0.0;
+  std::uint64_t worst_escape_toggles = 0, worst_avoidance_toggles = 0, worst_side_flips = 0;
+  double worst_max_delta_v = 0.0, worst_max_delta_omega = 0.0;  // [m/s], [rad/s]
+  std::uint64_t diamond_violations = 0, nan_steps = 0;          // summed over the runs
   double sim_time = 0.0, wall_time = 0.0;  // [s] summed over the runs
   std::vector<MonteCarloRun> per_run;
 };
