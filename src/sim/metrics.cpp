@@ -47,8 +47,8 @@ void MetricsAccumulator::add(const MetricSample& s) {
   sum_true_e_ += h * true_norm;
   m_.max_true_error = std::max(m_.max_true_error, true_norm);
   const double excess = true_norm - bestStandoff(s);
-  addStall(s, excess);
   addOrbits(s);
+  addStall(s, excess);
   if (s.conflict) ++m_.conflict_steps;
   if (s.escaping) ++m_.escape_steps;
   if (s.passing_side * last_side_ < 0) ++m_.side_flips;
@@ -83,7 +83,9 @@ void MetricsAccumulator::addStall(const MetricSample& s, double excess) {
   const double excess_then = recent_.front().second.second;
   const double needed = kStallSpeed * span;
   const Eigen::Vector2d toward = s.e_true.norm() > 1e-12 ? Eigen::Vector2d(s.e_true.normalized()) : Eigen::Vector2d::Zero();
-  const bool progress = excess_then - excess >= needed || (s.p_r - p_then).dot(toward) >= needed;
+  // Moving counts as progress too (a detour round a disk), except round and round one disk.
+  const bool moved = (s.p_r - p_then).norm() >= needed && !circling_;
+  const bool progress = excess_then - excess >= needed || (s.p_r - p_then).dot(toward) >= needed || moved;
   const bool stalled = span >= kStallWindow - 1e-9 && excess > kStallError && !progress;
   if (!stalled) {
     stall_start_ = -1.0;
@@ -104,6 +106,7 @@ void MetricsAccumulator::addOrbits(const MetricSample& s) {
   const std::vector<core::Disk>& disks = *s.obstacles;
   orbit_angle_.resize(disks.size(), 0.0);
   orbit_last_.resize(disks.size(), Eigen::Vector2d::Zero());
+  circling_ = false;
   for (size_t j = 0; j < disks.size(); ++j) {
     const Eigen::Vector2d d = s.p_r - disks[j].center;
     if (d.norm() > s.zone_radius + disks[j].radius + kOrbitReach || d.isZero(0.0)) {
@@ -115,6 +118,7 @@ void MetricsAccumulator::addOrbits(const MetricSample& s) {
     if (!last.isZero(0.0)) orbit_angle_[j] += std::atan2(last.x() * d.y() - last.y() * d.x(), last.dot(d));
     orbit_last_[j] = d;
     m_.max_orbit_turns = std::max(m_.max_orbit_turns, std::abs(orbit_angle_[j]) / (2.0 * M_PI));
+    circling_ = circling_ || std::abs(orbit_angle_[j]) > M_PI;
   }
 }
 

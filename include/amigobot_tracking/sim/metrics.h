@@ -19,9 +19,9 @@
 // p_d(t) lies inside the zone of radius zone_radius + r_o of a disk: 0 when the target is
 // reachable), so parking at the best standoff of an unreachable target is no stall. A step
 // at t is stalled when the excess is > kStallError and over the last kStallWindow neither did
-// the excess fall by kStallSpeed * kStallWindow nor did p_r make that much net headway toward
-// the target (net, so chattering in place counts; an orbit, receding from the target half the
-// time, counts then). A run of consecutive stalled steps t_a..t_b is a stall over
+// the excess fall by kStallSpeed * kStallWindow nor did p_r move that far net (so chattering
+// in place counts) -- where moving counts only while p_r has not gone more than half a turn
+// round a disk in its current visit, or toward the target: an endless orbit stalls. A run of consecutive stalled steps t_a..t_b is a stall over
 // [t_a - kStallWindow, t_b], of length t_b - t_a + kStallWindow. longest_stall is the longest
 // (0 without any stalled step), stall_time the total.
 //
@@ -133,6 +133,7 @@ class MetricsAccumulator {
   core::Twist2 last_u_;
   std::vector<double> orbit_angle_;                         // per disk: accumulated angle of this visit [rad]
   std::vector<Eigen::Vector2d> orbit_last_;                 // per disk: last p_r - centre, zero when away
+  bool circling_ = false;                                   // more than half a turn round a disk in this visit
   bool in_offset_contact_ = false, in_body_contact_ = false;
 };
 
