@@ -4,7 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <atomic>
+#include <cstdio>
+#include <mutex>
 #include <random>
+#include <thread>
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
@@ -28,6 +32,40 @@ bool acceptable(const Scenario& s) {
   if ((p_d - p_r).norm() >= c.max_error_ratio * c.rho_0) return false;
   return core::clearance(p_r, c.effectiveRadius() + c.delta, setup.obstacles) > 0.0 &&
          core::clearance(setup.initial_pose.position(), c.robot_radius, setup.obstacles) > 0.0;
+}
+
+struct VariantResult {
+  core::Pose2 initial_pose;
+  RunResult result;
+};
+
+// Every variant, on options.jobs threads (each takes the next index; results by index, so
+// the summary is the same for any number of jobs), with progress on stderr when asked.
+std::vector<VariantResult> runVariants(const Scenario& base, const MonteCarloOptions& options) {
+  const int runs = std::max(0, options.runs);
+  std::vector<VariantResult> results(runs);
+  std::atomic<int> next{0}, done{0};
+  std::mutex print;
+  const auto start = std::chrono::steady_clock::now();
+  auto worker = [&] {
+    for (int i = next++; i < runs; i = next++) {
+      const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
+      results[i] = {s.setup.initial_pose, runScenario(s, false)};
+      const int finished = ++done;
+      if (!options.progress) continue;
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::lock_guard<std::mutex> lock(print);
+      std::fprintf(stderr, "\r%s [%s]: %d/%d runs, %.0f s elapsed, about %.0f s left   ", base.name.c_str(),
+                   toString(base.setup.law).c_str(), finished, runs, elapsed, elapsed / finished * (runs - finished));
+      if (finished == runs) std::fputc('\n', stderr);
+    }
+  };
+  const int jobs = std::max(1, std::min(options.jobs, runs));
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  return results;
 }
 
 }  // namespace
@@ -72,6 +110,11 @@ Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, s
     s.setup.initial_pose.y += shift.y();
     s.setup.initial_pose.theta = core::wrapAngle(s.setup.initial_pose.theta + heading(rng));
     s.setup.sensor.seed = base.setup.sensor.seed + index + 1;
+    if (options.noise_std_max > 0.0)
+      s.setup.sensor.noise_std = std::uniform_real_distribution<double>(0.0, options.noise_std_max)(rng);
+    if (!options.sample_periods.empty())
+      s.setup.sample_period = options.sample_periods[std::uniform_int_distribution<size_t>(
+          0, options.sample_periods.size() - 1)(rng)];
     if (acceptable(s)) return s;
   }
   return base;
@@ -96,9 +139,9 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
   sum.tangential_avoidance = base.setup.controller.tangential_avoidance;
   sum.moving_obstacles = base.setup.controller.moving_obstacles;
   double sum_ase = 0.0, sum_aae = 0.0, sum_true_ase = 0.0, sum_true_ise = 0.0;
+  const std::vector<VariantResult> results = runVariants(base, options);
   for (int i = 0; i < options.runs; ++i) {
-    const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
-    const RunResult r = runScenario(s, false);
+    const RunResult& r = results[i].result;
     const sim::RunMetrics& m = r.summary.metrics;
     sum.runs_with_body_collision += m.body_collisions > 0;
     sum.body_collision_episodes += m.body_collisions;
@@ -130,7 +173,7 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
     sum.wall_time += r.wall_time;
     sum_ase += m.ase;
     sum_aae += m.aae;
-    sum.per_run.push_back({i, s.setup.initial_pose, m});
+    sum.per_run.push_back({i, results[i].initial_pose, m});
   }
   const double n = std::max(1, options.runs);
   sum.mean_ase = sum_ase / n;
@@ -150,6 +193,8 @@ void to_json(Json& j, const MonteCarloSummary& s) {
            {"pose_shift", jsonNumber(s.options.pose_shift)},
            {"heading_shift", jsonNumber(s.options.heading_shift)},
            {"obstacle_speed", jsonNumber(s.options.obstacle_speed)},
+           {"noise_std_max", jsonNumber(s.options.noise_std_max)},
+           {"sample_periods", s.options.sample_periods},
            {"tangential_avoidance", s.tangential_avoidance},
            {"moving_obstacles", s.moving_obstacles},
            {"body_collision_episodes", s.body_collision_episodes},

@@ -23,6 +23,12 @@ struct MonteCarloOptions {
   // its direction kept, re-timed so that it still reaches its (shifted) encounter point --
   // where the scenario's obstacle comes closest to the target -- at the same time.
   double obstacle_speed = 0.0;
+  // > 0: each variant's target noise std is drawn uniformly in [0, noise_std_max] [m].
+  double noise_std_max = 0.0;
+  // Non-empty: each variant's target sample period is drawn from these [s] (the rate varies).
+  std::vector<double> sample_periods;
+  int jobs = 1;           // threads running the variants (the result does not depend on it)
+  bool progress = false;  // print progress and an estimate of the time left on stderr
 };
 
 // The time in [0, duration] at which the obstacle (centre + velocity t) is closest to the
