@@ -24,7 +24,7 @@ RESULTS := $(WS)/build/test_results
 # $(call timed,PHASE,COMMAND): runs COMMAND and prints how long PHASE took (its exit code kept).
 timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
 
-PHONY := deps deps-robot build test demo map bench fuzz clean sim reproduce where help
+PHONY := deps deps-robot build test demo map bench fuzz clean sim reproduce clutter where help
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
@@ -100,6 +100,10 @@ sim: build ## offline simulator: SCENARIO=config/scenarios/X.yaml OUT=out/X ARGS
 # The paper's Section 5 and the baselines: writes docs/results.md and docs/figures/.
 reproduce: build ## the paper's Section 5 and the baselines: docs/results.md, docs/figures/
 	$(ROOT)/scripts/reports/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
+
+# The clutter benchmark alone (also part of reproduce): docs/clutter.md. QUICK=1: 4 variants per batch.
+clutter: build ## clutter benchmark, 12 classes x 5 laws x 50 Monte Carlo variants: docs/clutter.md (~10 min on 2 cores; QUICK=1)
+	$(ROOT)/scripts/reports/clutter.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/clutter $(if $(QUICK),--quick)
 
 # Longer libFuzzer run of the ARIA packet parser (ASan + UBSan): make fuzz FUZZ_SECONDS=600
 FUZZ_SECONDS ?= 600

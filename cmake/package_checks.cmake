@@ -16,6 +16,10 @@ if(CATKIN_ENABLE_TESTING)
                      ${PROJECT_SOURCE_DIR}/scripts/test/check_layers.py)
   amigobot_add_check(count_test_results_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_count_test_results.py
                      ${PROJECT_SOURCE_DIR}/scripts/test/count_test_results.py)
+  # The clutter benchmark's report in its quick mode on two classes, with the real simulator.
+  amigobot_add_check(clutter_report_quick ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_clutter_report.py
+                     ${PROJECT_SOURCE_DIR}/scripts/reports/clutter.py
+                     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/amigobot_sim)
   # Every Makefile target has its one-line `make help` entry (help fails naming one without).
   amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 

@@ -15,6 +15,7 @@ import sys
 import tempfile
 
 import beyond_paper
+import clutter
 import markdown
 from law_winners import write_law_winners
 import scenario_yaml
@@ -159,6 +160,7 @@ def main():
                                                        "mc_true"),
     }
     beyond = beyond_paper.main(sim, out_root, os.path.abspath(args.docs))
+    clutter.main(sim, os.path.join(out_root, "clutter"), os.path.abspath(args.docs))  # docs/clutter.md
     write_results(os.path.join(args.docs, "results.md"), results, fidelity, speed_free, mc, beyond)
     print(f"wrote {os.path.join(args.docs, 'results.md')}")
 
@@ -393,6 +395,11 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
     w("")
     for line in beyond:
         w(line)
+    w("")
+    w("## Clutter")
+    w("")
+    w("Twelve scene classes (pillar, U groups, gap, group threshold, corner, fast target, saddle, ring, doorway,")
+    w("moving obstacle), 50 Monte Carlo variants per class and law: [clutter.md](clutter.md) (`make clutter`).")
     w.save(path)
 
 

@@ -13,7 +13,7 @@ namespace core {
 namespace {
 
 PerformanceGains gainsOf(const ControllerConfig& config) {
-  return {config.lambda, config.rho_inf, config.k_r};
+  return {config.lambda, config.rho_inf, config.k_r, config.max_rho_rate};
 }
 
 // setImplicitHorizon: replaces the explicit term of the nearest obstacle the offset point

@@ -31,6 +31,8 @@ FieldTable<ControllerConfig> makeTable() {
             interval(0.0, true, 1.0, true)),
       field("max_relaxation_interval", &C::max_relaxation_interval, "s",
             "longest gap between steps the relaxation term of (13) spans (stalls)", positive()),
+      field("max_rho_rate", &C::max_rho_rate, "m/s",
+            "cap of the relaxation term's rate in (13) (band chattering); 0 = none, the paper", nonNegative()),
       // Beyond the paper: each default is the paper's law.
       field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
       field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),
@@ -85,14 +87,17 @@ double sustainedConflictRatio(double k_r, double k_o) {
   return hi;
 }
 
-std::string bandReachError(const ControllerConfig& config, double control_period) {
-  const double reach = maxOffsetSpeed(DiamondSet(config.v_max, config.w_max), config.offset) * control_period;
+std::string bandReachError(const ControllerConfig& config, double control_period, double obstacle_speed) {
+  const double worst_period = kWorstPeriodFactor * control_period;
+  const double speed = maxOffsetSpeed(DiamondSet(config.v_max, config.w_max), config.offset) + obstacle_speed;
+  const double reach = speed * worst_period;
   if (reach < config.delta) return "";
   std::ostringstream err;
-  err << "delta = " << config.delta << " m is crossed in one control period: the offset point moves up to "
-      << reach << " m in " << control_period << " s (v_max = " << config.v_max << " m/s, w_max = " << config.w_max
-      << " rad/s, offset = " << config.offset << " m); raise delta above " << reach
-      << " m, lower v_max/w_max or raise control_rate";
+  err << "delta = " << config.delta << " m is crossed in one control period: the offset point closes up to "
+      << reach << " m on a disk in a worst period of " << worst_period << " s (" << kWorstPeriodFactor << " x "
+      << control_period << " s, timer jitter; v_max = " << config.v_max << " m/s, w_max = " << config.w_max
+      << " rad/s, offset = " << config.offset << " m, obstacle speed " << obstacle_speed << " m/s); raise delta above "
+      << reach << " m, lower v_max/w_max or raise control_rate";
   return err.str();
 }
 

@@ -16,6 +16,8 @@ const FieldTable<EstimatorConfig>& estimatorFields() {
       field("rho_o0", &E::rho_o0, "m, m/s", "initial bound of both stages (>= rho_o)", positive()),
       field("jump_threshold", &E::jump_threshold, "m", "a sample this far from the prediction is a jump; 0 = off",
             nonNegative()),
+      field("max_acceleration", &E::max_acceleration, "m/s^2",
+            "jump rule: the target's rate may change by this times the sample interval per sample", nonNegative()),
   };
   return table;
 }
@@ -108,15 +110,55 @@ double solveImplicitStage(double c, double rho, double k, double eta_guess, doub
   return done(eta, std::tanh(eta));
 }
 
+void JumpRule::reset(const Eigen::Vector2d& chi, const Eigen::Vector2d& rate) {
+  last_chi_ = chi;
+  motion_rate_ = episode_rate_ = rate;
+  episode_length_ = 0;
+}
+
+JumpDecision JumpRule::decide(const EstimatorConfig& config, double h, const Eigen::Vector2d& chi,
+                              const Eigen::Vector2d& z2) {
+  JumpDecision d;
+  const Eigen::Vector2d previous = last_chi_;
+  const Eigen::Vector2d rate = (chi - previous) / h;
+  last_chi_ = chi;
+  const double threshold = config.jump_threshold;
+  // The rate may change by a_max h per sample: the repeated motion is uncertain by a_max h^2.
+  const double tolerance = threshold + config.max_acceleration * h * h;
+  const bool jumped = threshold > 0.0 && (chi - (previous + z2 * h)).norm() > threshold &&
+                      (chi - (previous + motion_rate_ * h)).norm() > tolerance;
+  if (!jumped) {
+    episode_length_ = 0;
+    motion_rate_ = rate;
+    return d;
+  }
+  // Consecutive jumping samples are one relocalisation; motion_rate_ stays the motion before it.
+  const bool repeats = episode_length_ > 0 && ((rate - episode_rate_) * h).norm() <= tolerance;
+  if (episode_length_ == 0) ++jumps_;
+  episode_length_ = repeats ? episode_length_ + 1 : 1;
+  episode_rate_ = rate;
+  if (episode_length_ >= 3) {  // the same displacement three times: steady motion, not a jump
+    --jumps_;
+    episode_length_ = 0;
+    motion_rate_ = rate;
+    d.kind = JumpDecision::kRestart;
+    d.rate = rate;
+    return d;
+  }
+  d.kind = JumpDecision::kJump;
+  d.shift = chi - (previous + z2 * h);
+  return d;
+}
+
 AxisEstimator::AxisEstimator(const EstimatorConfig& config) : config_(config) {}
 
 void AxisEstimator::reset(double t, double chi, double velocity_guess) {
   initialized_ = true;
   t0_ = last_t_ = t;
-  z1_ = last_chi_ = chi;
+  z1_ = chi;
   z2_ = velocity_guess;
   z1_rate_ = velocity_guess;
-  last_sample_rate_ = velocity_guess;
+  jump_rule_.reset({chi, 0.0}, {velocity_guess, 0.0});
   eta1_ = eta2_ = 0.0;
   eta1_change_ = eta2_change_ = eta1_change_before_ = eta2_change_before_ = last_h_ = h_before_ = 0.0;
   z1_prev_ = z2_prev_ = 0.0;
@@ -126,6 +168,15 @@ void AxisEstimator::reset(double t, double chi, double velocity_guess) {
 bool AxisEstimator::update(double t, double chi) { return update(t, chi, bound(t)); }
 
 bool AxisEstimator::update(double t, double chi, double bound_at_t) {
+  if (initialized_ && std::isfinite(chi) && t > last_t_ && std::isfinite(t)) {
+    const JumpDecision d = jump_rule_.decide(config_, t - last_t_, {chi, 0.0}, {z2_, 0.0});
+    return update(t, chi, bound_at_t, d.kind, d.shift.x(), d.rate.x());
+  }
+  return update(t, chi, bound_at_t, JumpDecision::kMotion, 0.0, 0.0);
+}
+
+bool AxisEstimator::update(double t, double chi, double bound_at_t, JumpDecision::Kind kind, double shift,
+                           double rate) {
   if (!std::isfinite(t) || !std::isfinite(chi)) {
     ++rejected_;
     return false;
@@ -139,21 +190,15 @@ bool AxisEstimator::update(double t, double chi, double bound_at_t) {
     ++rejected_;
     return false;
   }
-  const double rho = bound_at_t;
-  const double predicted = last_chi_ + z2_ * h;
-  // A relocalisation is a displacement unlike both the estimate and the previous sample's own
-  // motion: a target moving steadily faster than jump_threshold per sample (v_hat still 0 at
-  // the start) is motion from its second sample on, not a jump on every sample.
-  const double sample_rate = (chi - last_chi_) / h;
-  const bool jumped = config_.jump_threshold > 0.0 && std::abs(chi - predicted) > config_.jump_threshold &&
-                      std::abs(chi - (last_chi_ + last_sample_rate_ * h)) > config_.jump_threshold;
-  last_sample_rate_ = sample_rate;
-  if (jumped) {
-    z1_ += chi - predicted;  // relocalisation: move with the jump (error kept), do not differentiate it
-    z1_prev_ += chi - predicted;
-    ++jumps_;
+  if (kind == JumpDecision::kRestart) {  // steady motion the jump rule took for a jump: start over at its rate
+    reset(t, chi, rate);
+    return true;
   }
-  last_chi_ = chi;
+  const double rho = bound_at_t;
+  if (kind == JumpDecision::kJump) {
+    z1_ += shift;  // relocalisation: move with the jump (error kept), do not differentiate it
+    z1_prev_ += shift;
+  }
   // y' = a y + a_prev y_prev + b h f(y'): backward Euler (1, 0, 1) or BDF2 for the step ratio w.
   double a = 1.0, a_prev = 0.0, b = 1.0;
   const double w = last_h_ > 0.0 ? h / last_h_ : 0.0;
@@ -206,6 +251,7 @@ VelocityEstimator::VelocityEstimator(const EstimatorConfig& config) : x_(config)
 void VelocityEstimator::reset(double t, const Eigen::Vector2d& position, const Eigen::Vector2d& velocity_guess) {
   x_.reset(t, position.x(), velocity_guess.x());
   y_.reset(t, position.y(), velocity_guess.y());
+  jump_rule_.reset(position, velocity_guess);
 }
 
 bool VelocityEstimator::update(double t, const Eigen::Vector2d& position) {
@@ -213,9 +259,14 @@ bool VelocityEstimator::update(double t, const Eigen::Vector2d& position) {
     ++rejected_;  // reject the sample as a whole so both axes stay in step
     return false;
   }
-  const double bound = x_.initialized() ? x_.bound(t) : 0.0;  // both axes share rho_o(t)
-  const bool ok_x = x_.update(t, position.x(), bound);
-  const bool ok_y = y_.update(t, position.y(), bound);
+  if (!x_.initialized()) {
+    reset(t, position);
+    return true;
+  }
+  const double bound = x_.bound(t);  // both axes share rho_o(t)
+  const JumpDecision d = jump_rule_.decide(x_.config(), t - x_.lastStamp(), position, velocity());
+  const bool ok_x = x_.update(t, position.x(), bound, d.kind, d.shift.x(), d.rate.x());
+  const bool ok_y = y_.update(t, position.y(), bound, d.kind, d.shift.y(), d.rate.y());
   return ok_x && ok_y;
 }
 

@@ -16,7 +16,9 @@ double rhoRate(const PerformanceGains& gains, double rho, double conflict) {
 
 double rhoStep(const PerformanceGains& gains, double rho, double conflict, double h, double max_relaxation) {
   const double decayed = gains.rho_final + (rho - gains.rho_final) * std::exp(-gains.decay_rate * h);
-  return decayed - std::min(h, max_relaxation) * gains.relax_gain * std::min(0.0, conflict);
+  double relaxation = -std::min(h, max_relaxation) * gains.relax_gain * std::min(0.0, conflict);
+  if (gains.max_relaxation_rate > 0.0) relaxation = std::min(relaxation, gains.max_relaxation_rate * h);
+  return decayed + relaxation;
 }
 
 }  // namespace core

@@ -271,6 +271,9 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Refere
     m.conflict = out.active.conflict;
     m.escaping = !out.u_t.isZero(0.0);
     m.passing_side = out.passing_side;
+    m.avoiding = out.active.avoiding;
+    m.obstacles = &obstacles;
+    m.zone_radius = config.effectiveRadius();
     metrics.add(m);
 
     if (observer) {  // (filled only for an observer: the benchmark has none)

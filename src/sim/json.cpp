@@ -72,6 +72,12 @@ void to_json(Json& j, const RunMetrics& m) {
                 {"conflict_steps", m.conflict_steps},
                 {"escape_steps", m.escape_steps},
                 {"side_flips", m.side_flips},
+                {"stall_time_s", jsonNumber(m.stall_time)},
+                {"max_orbit_turns", jsonNumber(m.max_orbit_turns)},
+                {"escape_toggles", m.escape_toggles},
+                {"avoidance_toggles", m.avoidance_toggles},
+                {"max_delta_v", jsonNumber(m.max_delta_v)},
+                {"max_delta_omega", jsonNumber(m.max_delta_omega)},
                 {"sim_time_s", jsonNumber(m.sim_time)}};
 }
 

@@ -46,22 +46,80 @@ void MetricsAccumulator::add(const MetricSample& s) {
   sum_true_e2_ += h * true_norm * true_norm;
   sum_true_e_ += h * true_norm;
   m_.max_true_error = std::max(m_.max_true_error, true_norm);
-  // Headway over the window ending now: drop samples while the next one still starts it.
-  recent_.emplace_back(s.t, s.p_r);
-  while (recent_.size() > 1 && recent_[1].first <= s.t - kStallWindow + 1e-9) recent_.pop_front();
-  const double span = s.t - recent_.front().first;
-  const bool stalled = span >= kStallWindow - 1e-9 && true_norm > kStallError &&
-                       (s.p_r - recent_.front().second).norm() < kStallSpeed * span;
-  if (!stalled) {
-    stall_start_ = -1.0;
-  } else {
-    if (stall_start_ < 0.0) stall_start_ = s.t;
-    m_.longest_stall = std::max(m_.longest_stall, s.t - stall_start_ + kStallWindow);
-  }
+  const double excess = true_norm - bestStandoff(s);
+  addOrbits(s);
+  addStall(s, excess);
   if (s.conflict) ++m_.conflict_steps;
   if (s.escaping) ++m_.escape_steps;
   if (s.passing_side * last_side_ < 0) ++m_.side_flips;
   last_side_ = s.passing_side;
+  if (has_last_) {
+    m_.escape_toggles += s.escaping != last_escaping_;
+    m_.avoidance_toggles += s.avoiding != last_avoiding_;
+    m_.max_delta_v = std::max(m_.max_delta_v, std::abs(s.u.v - last_u_.v));
+    m_.max_delta_omega = std::max(m_.max_delta_omega, std::abs(s.u.omega - last_u_.omega));
+  }
+  has_last_ = true;
+  last_escaping_ = s.escaping;
+  last_avoiding_ = s.avoiding;
+  last_u_ = s.u;
+}
+
+double MetricsAccumulator::bestStandoff(const MetricSample& s) {
+  if (!s.obstacles) return 0.0;
+  const Eigen::Vector2d p_d = s.p_r + s.e_true;
+  double standoff = 0.0;  // the deepest zone the target is in (a lower bound where zones overlap)
+  for (const core::Disk& o : *s.obstacles)
+    standoff = std::max(standoff, s.zone_radius + o.radius - (p_d - o.center).norm());
+  return standoff;
+}
+
+void MetricsAccumulator::addStall(const MetricSample& s, double excess) {
+  // The window ending now: drop samples while the next one still starts it.
+  recent_.push_back({s.t, {s.p_r, excess}});
+  while (recent_.size() > 1 && recent_[1].first <= s.t - kStallWindow + 1e-9) recent_.pop_front();
+  const double span = s.t - recent_.front().first;
+  const Eigen::Vector2d& p_then = recent_.front().second.first;
+  const double excess_then = recent_.front().second.second;
+  const double needed = kStallSpeed * span;
+  const Eigen::Vector2d toward = s.e_true.norm() > 1e-12 ? Eigen::Vector2d(s.e_true.normalized()) : Eigen::Vector2d::Zero();
+  // Moving counts as progress too (a detour round a disk), except round and round one disk.
+  const bool moved = (s.p_r - p_then).norm() >= needed && !circling_;
+  const bool progress = excess_then - excess >= needed || (s.p_r - p_then).dot(toward) >= needed || moved;
+  const bool stalled = span >= kStallWindow - 1e-9 && excess > kStallError && !progress;
+  if (!stalled) {
+    stall_start_ = -1.0;
+    return;
+  }
+  if (stall_start_ < 0.0) {
+    stall_start_ = s.t;
+    m_.stall_time += kStallWindow;
+  } else {
+    m_.stall_time += s.t - last_stall_t_;
+  }
+  last_stall_t_ = s.t;
+  m_.longest_stall = std::max(m_.longest_stall, s.t - stall_start_ + kStallWindow);
+}
+
+void MetricsAccumulator::addOrbits(const MetricSample& s) {
+  if (!s.obstacles) return;
+  const std::vector<core::Disk>& disks = *s.obstacles;
+  orbit_angle_.resize(disks.size(), 0.0);
+  orbit_last_.resize(disks.size(), Eigen::Vector2d::Zero());
+  circling_ = false;
+  for (size_t j = 0; j < disks.size(); ++j) {
+    const Eigen::Vector2d d = s.p_r - disks[j].center;
+    if (d.norm() > s.zone_radius + disks[j].radius + kOrbitReach || d.isZero(0.0)) {
+      orbit_angle_[j] = 0.0;  // the visit ended
+      orbit_last_[j].setZero();
+      continue;
+    }
+    const Eigen::Vector2d& last = orbit_last_[j];
+    if (!last.isZero(0.0)) orbit_angle_[j] += std::atan2(last.x() * d.y() - last.y() * d.x(), last.dot(d));
+    orbit_last_[j] = d;
+    m_.max_orbit_turns = std::max(m_.max_orbit_turns, std::abs(orbit_angle_[j]) / (2.0 * M_PI));
+    circling_ = circling_ || std::abs(orbit_angle_[j]) > M_PI;
+  }
 }
 
 RunMetrics MetricsAccumulator::result() const {

@@ -4,7 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <atomic>
+#include <cstdio>
+#include <mutex>
 #include <random>
+#include <thread>
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
@@ -28,6 +32,40 @@ bool acceptable(const Scenario& s) {
   if ((p_d - p_r).norm() >= c.max_error_ratio * c.rho_0) return false;
   return core::clearance(p_r, c.effectiveRadius() + c.delta, setup.obstacles) > 0.0 &&
          core::clearance(setup.initial_pose.position(), c.robot_radius, setup.obstacles) > 0.0;
+}
+
+struct VariantResult {
+  core::Pose2 initial_pose;
+  RunResult result;
+};
+
+// Every variant, on options.jobs threads (each takes the next index; results by index, so
+// the summary is the same for any number of jobs), with progress on stderr when asked.
+std::vector<VariantResult> runVariants(const Scenario& base, const MonteCarloOptions& options) {
+  const int runs = std::max(0, options.runs);
+  std::vector<VariantResult> results(runs);
+  std::atomic<int> next{0}, done{0};
+  std::mutex print;
+  const auto start = std::chrono::steady_clock::now();
+  auto worker = [&] {
+    for (int i = next++; i < runs; i = next++) {
+      const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
+      results[i] = {s.setup.initial_pose, runScenario(s, false)};
+      const int finished = ++done;
+      if (!options.progress) continue;
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::lock_guard<std::mutex> lock(print);
+      std::fprintf(stderr, "\r%s [%s]: %d/%d runs, %.0f s elapsed, about %.0f s left   ", base.name.c_str(),
+                   toString(base.setup.law).c_str(), finished, runs, elapsed, elapsed / finished * (runs - finished));
+      if (finished == runs) std::fputc('\n', stderr);
+    }
+  };
+  const int jobs = std::max(1, std::min(options.jobs, runs));
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  return results;
 }
 
 }  // namespace
@@ -72,6 +110,11 @@ Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, s
     s.setup.initial_pose.y += shift.y();
     s.setup.initial_pose.theta = core::wrapAngle(s.setup.initial_pose.theta + heading(rng));
     s.setup.sensor.seed = base.setup.sensor.seed + index + 1;
+    if (options.noise_std_max > 0.0)
+      s.setup.sensor.noise_std = std::uniform_real_distribution<double>(0.0, options.noise_std_max)(rng);
+    if (!options.sample_periods.empty())
+      s.setup.sample_period = options.sample_periods[std::uniform_int_distribution<size_t>(
+          0, options.sample_periods.size() - 1)(rng)];
     if (acceptable(s)) return s;
   }
   return base;
@@ -82,7 +125,9 @@ void to_json(Json& j, const MonteCarloRun& r) {
   j["initial_pose"] = {jsonNumber(r.initial_pose.x), jsonNumber(r.initial_pose.y), jsonNumber(r.initial_pose.theta)};
   j.update(pick(r.metrics, {"ase", "true_ase", "max_true_error", "longest_stall_s", "aae", "max_e_over_rho",
                             "min_clearance_offset", "min_clearance_body", "body_collisions", "offset_collisions",
-                            "diamond_violations", "nan_count"}));
+                            "diamond_violations", "nan_count", "true_ise", "envelope_widenings", "stall_time_s",
+                            "max_orbit_turns", "escape_toggles", "avoidance_toggles", "side_flips", "max_delta_v",
+                            "max_delta_omega"}));
 }
 
 MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
@@ -93,10 +138,10 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
   sum.body_safe = base.setup.controller.body_safe;
   sum.tangential_avoidance = base.setup.controller.tangential_avoidance;
   sum.moving_obstacles = base.setup.controller.moving_obstacles;
-  double sum_ase = 0.0, sum_aae = 0.0, sum_true_ase = 0.0;
+  double sum_ase = 0.0, sum_aae = 0.0, sum_true_ase = 0.0, sum_true_ise = 0.0;
+  const std::vector<VariantResult> results = runVariants(base, options);
   for (int i = 0; i < options.runs; ++i) {
-    const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
-    const RunResult r = runScenario(s, false);
+    const RunResult& r = results[i].result;
     const sim::RunMetrics& m = r.summary.metrics;
     sum.runs_with_body_collision += m.body_collisions > 0;
     sum.body_collision_episodes += m.body_collisions;
@@ -104,6 +149,17 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
     sum_true_ase += m.true_ase;
     sum.runs_with_long_stall += m.longest_stall > 0.5;
     sum.worst_stall = std::max(sum.worst_stall, m.longest_stall);
+    sum.worst_true_ase = std::max(sum.worst_true_ase, m.true_ase);
+    sum.worst_true_ise = std::max(sum.worst_true_ise, m.true_ise);
+    sum_true_ise += m.true_ise;
+    sum.worst_orbit_turns = std::max(sum.worst_orbit_turns, m.max_orbit_turns);
+    sum.worst_escape_toggles = std::max(sum.worst_escape_toggles, m.escape_toggles);
+    sum.worst_avoidance_toggles = std::max(sum.worst_avoidance_toggles, m.avoidance_toggles);
+    sum.worst_side_flips = std::max(sum.worst_side_flips, m.side_flips);
+    sum.worst_max_delta_v = std::max(sum.worst_max_delta_v, m.max_delta_v);
+    sum.worst_max_delta_omega = std::max(sum.worst_max_delta_omega, m.max_delta_omega);
+    sum.diamond_violations += m.diamond_violations;
+    sum.nan_steps += m.nan_count;
     sum.runs_with_offset_collision += m.offset_collisions > 0;
     sum.runs_with_diamond_violation += m.diamond_violations > 0;
     sum.runs_with_nan += m.nan_count > 0;
@@ -117,12 +173,13 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
     sum.wall_time += r.wall_time;
     sum_ase += m.ase;
     sum_aae += m.aae;
-    sum.per_run.push_back({i, s.setup.initial_pose, m});
+    sum.per_run.push_back({i, results[i].initial_pose, m});
   }
   const double n = std::max(1, options.runs);
   sum.mean_ase = sum_ase / n;
   sum.mean_aae = sum_aae / n;
   sum.mean_true_ase = sum_true_ase / n;
+  sum.mean_true_ise = sum_true_ise / n;
   return sum;
 }
 
@@ -136,6 +193,8 @@ void to_json(Json& j, const MonteCarloSummary& s) {
            {"pose_shift", jsonNumber(s.options.pose_shift)},
            {"heading_shift", jsonNumber(s.options.heading_shift)},
            {"obstacle_speed", jsonNumber(s.options.obstacle_speed)},
+           {"noise_std_max", jsonNumber(s.options.noise_std_max)},
+           {"sample_periods", s.options.sample_periods},
            {"tangential_avoidance", s.tangential_avoidance},
            {"moving_obstacles", s.moving_obstacles},
            {"body_collision_episodes", s.body_collision_episodes},
@@ -155,6 +214,17 @@ void to_json(Json& j, const MonteCarloSummary& s) {
            {"mean_ase", jsonNumber(s.mean_ase)},
            {"mean_aae", jsonNumber(s.mean_aae)},
            {"mean_true_ase", jsonNumber(s.mean_true_ase)},
+           {"worst_true_ase", jsonNumber(s.worst_true_ase)},
+           {"mean_true_ise", jsonNumber(s.mean_true_ise)},
+           {"worst_true_ise", jsonNumber(s.worst_true_ise)},
+           {"worst_orbit_turns", jsonNumber(s.worst_orbit_turns)},
+           {"worst_escape_toggles", s.worst_escape_toggles},
+           {"worst_avoidance_toggles", s.worst_avoidance_toggles},
+           {"worst_side_flips", s.worst_side_flips},
+           {"worst_max_delta_v", jsonNumber(s.worst_max_delta_v)},
+           {"worst_max_delta_omega", jsonNumber(s.worst_max_delta_omega)},
+           {"diamond_violations", s.diamond_violations},
+           {"nan_steps", s.nan_steps},
            {"sim_time_s", jsonNumber(s.sim_time)},
            {"wall_time_s", jsonNumber(s.wall_time)},
            {"realtime_factor", jsonNumber(s.wall_time > 0.0 ? s.sim_time / s.wall_time : 0.0)},

@@ -328,6 +328,20 @@ void checkScenario(const Scenario& scenario) {
   const auto reference = scenario.makeReference();
   const Eigen::Vector2d p_d = reference->at(0.0).position;
   const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, setup.controller.offset);
+  // A start inside a disk's zone (R + r with body_safe) is infeasible, not a result: (10) is
+  // evaluated at its contact floor and rho blows up (ring.yaml's 5.9 cm: rho 1 -> 74 m).
+  const double zone = setup.controller.effectiveRadius();
+  for (size_t i = 0; i < setup.obstacles.size(); ++i) {
+    const core::Disk& o = setup.obstacles[i];
+    const double inside = zone + o.radius - (p_r - o.center).norm();
+    if (inside < 0.0) continue;
+    std::ostringstream msg;
+    msg << scenario.file << ": robot.initial_pose: the offset point p_r(0) = (" << p_r.x() << ", " << p_r.y()
+        << ") starts " << inside << " m inside the zone (R + r + radius = " << zone + o.radius
+        << " m) of obstacles[" << i << "] at (" << o.center.x() << ", " << o.center.y()
+        << "): an infeasible start (move robot.initial_pose)";
+    throw ScenarioError(msg.str());
+  }
   const double e0 = (p_d - p_r).norm();
   const bool has_rho = setup.law == sim::ControlLaw::kPaper || setup.law == sim::ControlLaw::kFixedRho;
   if (has_rho && !(e0 < setup.controller.rho_0)) {

@@ -5,7 +5,7 @@
 //   amigobot_sim --scenario FILE.yaml --out DIR [options]
 //   amigobot_sim --scenario FILE.yaml --benchmark N [--benchmark-json F]  (real-time factor)
 //   amigobot_sim --scenario FILE.yaml --out DIR --set controller.k_d=2 --set target.delay=0.1
-//   amigobot_sim --scenario FILE.yaml --out DIR --monte-carlo N --seed S
+//   amigobot_sim --scenario FILE.yaml --out DIR --monte-carlo N --seed S [--jobs J]
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -111,7 +112,9 @@ int main(int argc, char** argv) {
   std::string scenario_path, out, benchmark_json;
   std::vector<std::string> sets;
   int monte_carlo = 0, benchmark = 0;
+  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   double obstacle_speed = 0.0;
+  sim::MonteCarloOptions mc;
   bool no_plot = false;
   app.add_option("--scenario", scenario_path, "scenario file (config/scenarios/*.yaml)")->required();
   app.add_option("--out", out, "output folder: trajectory.csv, metrics.json, figures");
@@ -122,6 +125,18 @@ int main(int argc, char** argv) {
   app.add_option("--monte-carlo", monte_carlo, "N randomised variants; writes DIR/monte_carlo.json")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--obstacle-speed", obstacle_speed, "Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--jobs", jobs, "Monte Carlo: threads running the variants (default: every core)")
+      ->check(CLI::Range(1, 1024));
+  app.add_option("--mc-obstacle-shift", mc.obstacle_shift, "Monte Carlo: obstacle centres shift within this disk [m]")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--mc-pose-shift", mc.pose_shift, "Monte Carlo: the start shifts within this disk [m]")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--mc-heading-shift", mc.heading_shift, "Monte Carlo: the start heading within +-this [rad]")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--mc-noise", mc.noise_std_max, "Monte Carlo: target noise std drawn in [0, S] m")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--mc-sample-periods", mc.sample_periods, "Monte Carlo: target sample period drawn from these [s]")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--benchmark", benchmark, "run N times without output; print the real-time factor")
       ->check(CLI::Range(1, 1000000));
@@ -157,10 +172,11 @@ int main(int argc, char** argv) {
   try {
     std::filesystem::create_directories(out);
     if (monte_carlo > 0) {
-      sim::MonteCarloOptions mc;
       mc.runs = monte_carlo;
       mc.seed = seed;
       mc.obstacle_speed = obstacle_speed;
+      mc.jobs = jobs;
+      mc.progress = true;  // on stderr: progress and the time left
       const std::string json = sim::runMonteCarlo(scenario, mc);
       sim::writeText(out + "/monte_carlo.json", json);
       std::printf("%s", json.substr(0, json.find("\"per_run\"")).c_str());

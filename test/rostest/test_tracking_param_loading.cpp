@@ -116,6 +116,6 @@ TEST(TrackingParams, ShippedSimControllerLoads) {
   EXPECT_EQ(ros_layer::loadControllerConfig(shipped, node, &controller), "");
   EXPECT_DOUBLE_EQ(controller.k_d, 3.0);
   EXPECT_DOUBLE_EQ(controller.v_max, 5.0);
-  EXPECT_DOUBLE_EQ(controller.delta, 0.3);  // Table 1's 0.016 m is crossed in one 20 Hz period
+  EXPECT_DOUBLE_EQ(controller.delta, 0.4);  // Table 1's 0.016 m is crossed in one 20 Hz period (1.5x jitter)
   EXPECT_DOUBLE_EQ(controller.rho_0, 1.84);
 }

@@ -164,6 +164,55 @@ TEST(Estimator, FastTargetIsNotLockedByTheJumpRule) {
   EXPECT_LT(worst, 0.5);  // follows it (a 60 ms finite difference lags)
 }
 
+// The jump test is Euclidean: a diagonal relocalisation of (0.42, 0.42) m, 0.59 m, is a jump
+// although each axis moves less than jump_threshold (per axis it gave v_hat ~ 4 m/s).
+TEST(Estimator, DiagonalJumpIsCaughtOverBothAxes) {
+  VelocityEstimator est;  // jump_threshold 0.5 m
+  const Eigen::Vector2d v(0.2, 0.0);
+  double worst = 0.0;
+  for (int k = 0; k <= 80; ++k) {  // 20 Hz
+    const double t = 0.05 * k;
+    const Eigen::Vector2d p = v * t + (t >= 2.0 ? Eigen::Vector2d(0.42, 0.42) : Eigen::Vector2d::Zero());
+    ASSERT_TRUE(est.update(t, p));
+    if (t > 1.0) worst = std::max(worst, (est.velocity() - v).norm());
+  }
+  EXPECT_EQ(est.jumps(), 1u);
+  EXPECT_LT(worst, 0.05);
+}
+
+// A relocalisation delivered over two samples (+0.6 m, +0.6 m) is one jump: its second part
+// is not differentiated (v_hat 6 m/s for 0.2 s) and the next still sample is no false jump.
+TEST(Estimator, RelocalisationOverTwoSamplesIsOneJump) {
+  VelocityEstimator est;
+  double worst = 0.0;
+  for (int k = 0; k <= 100; ++k) {  // 20 Hz, a still target
+    const double t = 0.05 * k;
+    const double x = (k >= 40 ? 0.6 : 0.0) + (k >= 41 ? 0.6 : 0.0);
+    ASSERT_TRUE(est.update(t, {x, 0.0}));
+    if (t > 1.0) worst = std::max(worst, est.velocity().norm());
+    EXPECT_LT((Eigen::Vector2d(x, 0.0) - est.position()).norm(), std::sqrt(2.0) * est.axisX().bound(t)) << t;
+  }
+  EXPECT_EQ(est.jumps(), 1u);
+  EXPECT_LT(worst, 0.05);
+}
+
+// A target accelerating at 0.8 m/s^2 sampled at 1 Hz: its displacement per sample grows by
+// 0.8 m, more than jump_threshold, but the rate changes by a_max h at most: motion, followed.
+// (Before, every sample was a jump and v_hat froze at 0.39 m/s while the target reached 8 m/s.)
+TEST(Estimator, AcceleratingTargetSampledSlowlyIsFollowed) {
+  VelocityEstimator est;  // max_acceleration 1 m/s^2
+  const double a = 0.8;
+  for (int k = 0; k <= 10; ++k) ASSERT_TRUE(est.update(k, {0.5 * a * k * k, 0.0}));
+  EXPECT_EQ(est.jumps(), 0u);
+  EXPECT_GT(est.velocity().x(), 0.7 * a * 10.0) << "true speed " << a * 10.0 << " m/s";
+  // The same course at a_max = 0.1 m/s^2 is still taken for jumps: the parameter is what lets it through.
+  EstimatorConfig strict;
+  strict.max_acceleration = 0.1;
+  VelocityEstimator frozen(strict);
+  for (int k = 0; k <= 10; ++k) ASSERT_TRUE(frozen.update(k, {0.5 * a * k * k, 0.0}));
+  EXPECT_LT(frozen.velocity().x(), 0.5 * a * 10.0);
+}
+
 TEST(Estimator, LateAndNonFiniteSamplesAreIgnored) {
   AxisEstimator est;
   EXPECT_TRUE(est.update(1.0, 0.0));

@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <vector>
 
 #include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/sim/step_size.h"
@@ -169,4 +171,76 @@ TEST(StepSize, FixedWhenMaxIsNotAboveMin) {
   StepSituation s;
   s.distance = std::numeric_limits<double>::infinity();
   EXPECT_DOUBLE_EQ(chooseStep(StepPolicy{1e-3, 0.0}, s), 1e-3);
+}
+
+// The figures that cannot hide a failure (issue 20): orbits, an unreachable target's best
+// standoff, toggles and command jumps.
+namespace {
+
+// 100 Hz samples of p_r(t) with the true target p_d(t) among `disks` (zone R + r = 0.48 m).
+RunMetrics runCourse(const std::function<Eigen::Vector2d(double)>& p_r, const std::function<Eigen::Vector2d(double)>& p_d,
+                     const std::vector<Disk>& disks, double duration) {
+  MetricsAccumulator acc;
+  const int n = static_cast<int>(std::lround(duration / 0.01));
+  for (int k = 0; k <= n; ++k) {
+    MetricSample m;
+    m.t = 0.01 * k;
+    m.h = k < n ? 0.01 : 0.0;
+    m.p_r = p_r(m.t);
+    m.e_true = p_d(m.t) - m.p_r;
+    m.e = m.e_true;
+    m.obstacles = &disks;
+    m.zone_radius = 0.48;
+    acc.add(m);
+  }
+  return acc.result();
+}
+
+}  // namespace
+
+// Circling a pillar (0.3 m/s on a 0.9 m circle) while the reachable target waits behind it:
+// three turns, and a stall although p_r is never still (the old headway test scored 0 s).
+TEST(FailureMetrics, AnEndlessOrbitCountsTurnsAndStalls) {
+  const std::vector<Disk> pillar{{{0.0, 0.0}, 0.3}};
+  const double w = 0.3 / 0.9, turns = 3.0;
+  const RunMetrics m = runCourse([&](double t) { return Eigen::Vector2d(-0.9 * std::cos(w * t), 0.9 * std::sin(w * t)); },
+                                 [](double) { return Eigen::Vector2d(1.5, 0.0); }, pillar, turns * 2.0 * M_PI / w);
+  EXPECT_NEAR(m.max_orbit_turns, turns, 0.01);
+  EXPECT_GT(m.longest_stall, 3.0);
+  EXPECT_GT(m.stall_time, 20.0);
+  // Driving past the same pillar is half a turn at most, and no stall.
+  const RunMetrics pass = runCourse([](double t) { return Eigen::Vector2d(-3.0 + 0.3 * t, 0.9); },
+                                    [](double t) { return Eigen::Vector2d(-2.7 + 0.3 * t, 0.9); }, pillar, 20.0);
+  EXPECT_LT(pass.max_orbit_turns, 0.5);
+  EXPECT_EQ(pass.longest_stall, 0.0);
+}
+
+// The target inside the pillar's zone: parking at the best standoff, the zone's point nearest
+// to it (0.78 - 0.2 m away), is no stall (it was scored as one for the whole run); standing
+// 0.5 m farther out is.
+TEST(FailureMetrics, ParkingAtTheBestStandoffOfAnUnreachableTargetIsNoStall) {
+  const std::vector<Disk> pillar{{{0.0, 0.0}, 0.3}};
+  const auto target = [](double) { return Eigen::Vector2d(0.2, 0.0); };
+  const RunMetrics parked = runCourse([](double) { return Eigen::Vector2d(0.8, 0.0); }, target, pillar, 5.0);
+  EXPECT_EQ(parked.longest_stall, 0.0);
+  const RunMetrics short_of_it = runCourse([](double) { return Eigen::Vector2d(1.3, 0.0); }, target, pillar, 5.0);
+  EXPECT_NEAR(short_of_it.longest_stall, 5.0, 1e-9);
+}
+
+TEST(FailureMetrics, TogglesAndCommandJumps) {
+  MetricsAccumulator acc;
+  const bool escaping[] = {false, true, false, true, true, false};  // 4 switches, one through a released step
+  const double v[] = {0.0, 0.305, 0.3, 0.3, 0.0, 0.0};
+  for (int k = 0; k < 6; ++k) {
+    MetricSample m = sample(0.05, {0.1, 0.0}, 1.0, {v[k], k == 3 ? 1.0 : -0.6});
+    m.t = 0.05 * k;
+    m.escaping = escaping[k];
+    m.avoiding = k >= 1;
+    acc.add(m);
+  }
+  const RunMetrics r = acc.result();
+  EXPECT_EQ(r.escape_toggles, 4u);
+  EXPECT_EQ(r.avoidance_toggles, 1u);
+  EXPECT_NEAR(r.max_delta_v, 0.305, 1e-12);
+  EXPECT_NEAR(r.max_delta_omega, 1.6, 1e-12);
 }

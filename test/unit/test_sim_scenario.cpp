@@ -75,6 +75,7 @@ TEST(SimScenario, ReadsOptionalKeys) {
   std::string text = replaced(kMinimum, "body_safe: false}", "body_safe: true, variant: proportional, estimator: kalman, k_p: 7}");
   text = replaced(text, "{duration: 6.283}", "{duration: 6.283, control_period: 0.002, max_step: 0.01, seed: 5}");
   text += "target: {sample_period: 0.1, noise_std: 0.01, delay: 0.05, jumps: [{t: 2, offset: [0.3, 0]}]}\n";
+  text = replaced(text, "center: [1.5, 0.0]", "center: [1.5, 0.5]");  // p_r(0) outside the body-safe zone
   const sim::Scenario s = sim::parseScenario(text, "opt.yaml");
   EXPECT_TRUE(s.setup.controller.body_safe);
   EXPECT_EQ(s.setup.law, sim::ControlLaw::kProportional);
@@ -182,6 +183,28 @@ TEST(SimScenario, ShippedScenariosLoad) {
     const std::string path = std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/" + name + ".yaml";
     EXPECT_NO_THROW(sim::loadScenario(path)) << path;
   }
+}
+
+// A start inside a disk's R + r zone is refused naming the pose, the obstacle and the depth
+// (ring.yaml's old start [2.0, -0.6] was 5.9 cm inside: rho went 1 -> 24 -> 74 m in two steps).
+TEST(SimScenario, StartInsideAnObstacleZoneIsRefused) {
+  std::string ring = R"(
+robot:      {radius: 0.18, offset: 0.3, v_max: 1.0, w_max: 2.0, initial_pose: [2.0, -0.6, 1.5708]}
+controller: {k_d: 0.15, k_o: 1, k_r: 0.5, lambda: 0.5, rho_inf: 0.1, rho_0: 1.0, delta: 0.25,
+             a1: 1, a2: 1, lambda_o: 30, rho_o: 0.01, rho_o0: 1.0, body_safe: true}
+reference:  {type: circle, center: [0.0, 0.0], radius: 2.0, period: 29.92}
+obstacles:  [{center: [1.848, 0.765], radius: 0.08}, {center: [1.709, -0.708], radius: 0.08}]
+simulation: {duration: 1.0}
+)";
+  expectRefused(ring, "robot.initial_pose");
+  try {
+    sim::parseScenario(ring, "bad.yaml");
+  } catch (const sim::ScenarioError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("obstacles[1]"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("0.0588"), std::string::npos) << msg;  // 0.56 - 0.5011 m
+  }
+  EXPECT_NO_THROW(sim::parseScenario(replaced(ring, "[2.0, -0.6, 1.5708]", "[2.2, -0.45, 1.5708]"), "ok.yaml"));
 }
 
 // The switches beyond the paper, the robot pose's timing, moving obstacles.

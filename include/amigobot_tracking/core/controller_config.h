@@ -43,6 +43,10 @@ struct ControllerConfig {
   // so a stall of the control loop does not multiply a stale (near contact, huge) conflict
   // by the gap: a few control periods. The prescribed decay still spans the whole gap.
   double max_relaxation_interval = 0.2;
+  // [m/s] > 0: the relaxation term of (13) raises rho at most this fast, so band chattering
+  // (a band entered and left every step, each entry with a near-contact conflict) cannot make
+  // rho jump (prescribed_performance.h); 0: unbounded, the paper's (13).
+  double max_rho_rate = 0.0;
   EstimatorConfig estimator;
 
   // Beyond the paper: each switch off reproduces the paper exactly.
@@ -75,12 +79,17 @@ const FieldTable<ControllerConfig>& controllerFields();
 // rho' ~ lambda rho (k_r xi T(xi) / k_o - 1) in (13)). 1 when that is 1 in double precision.
 double sustainedConflictRatio(double k_r, double k_o);
 
-// Empty when a command held for control_period [s] cannot carry the offset point across the
-// detection band (max offset-point speed of the diamond * control_period < delta); otherwise
-// an error naming delta, v_max, w_max, offset and the control period with their values.
+// A timer period can stretch: the band check assumes a period up to this times the nominal one.
+constexpr double kWorstPeriodFactor = 1.5;
+
+// Empty when a command held for the worst period (kWorstPeriodFactor * control_period [s])
+// cannot close the detection band on a disk moving at obstacle_speed [m/s] toward the offset
+// point ((max offset-point speed of the diamond + obstacle_speed) * worst period < delta);
+// otherwise an error naming delta, v_max, w_max, offset, the periods and the obstacle speed.
 // The explicit (10) then never sees the band it jumps over (the offline simulator avoids
-// this with its band-implicit step; a fixed-rate node cannot).
-std::string bandReachError(const ControllerConfig& config, double control_period);
+// this with its band-implicit step; a fixed-rate node cannot): the band is entered and left
+// on alternate steps and rho jumps (Section 5.3's course with delta = 0.016 at 20 Hz).
+std::string bandReachError(const ControllerConfig& config, double control_period, double obstacle_speed = 0.0);
 
 }  // namespace core
 }  // namespace amigobot_tracking

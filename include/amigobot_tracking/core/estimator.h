@@ -22,11 +22,16 @@
 // Stage 1 tracks the sample chi with z1; its rate over the step, z1dot = (z1' - z1)/h,
 // is the input of stage 2, whose state z2 is the velocity estimate.
 //
-// Jumps: a sample farther than jump_threshold from the prediction chi_prev + z2 h (a SLAM
-// relocalisation) translates z1 by the jump instead of differentiating it, so the
-// velocity estimate does not spike; the jump is counted. A sample within jump_threshold of
-// chi_prev + (chi_prev - chi_prev2) (the last displacement repeated) is motion, not a jump:
-// otherwise a target faster than jump_threshold per sample kept z2 at 0 for ever.
+// Jumps (JumpRule below): a sample farther than jump_threshold (Euclidean, over the whole
+// position, not per axis) both from the prediction chi_prev + z2 h and from the last motion
+// repeated, chi_prev + w h (w the rate of the last sample judged motion, the repeat widened by
+// max_acceleration h^2: the rate may change by a_max h per sample, so an accelerating target
+// sampled slowly is motion, not a jump on every sample), is a relocalisation: z1 is translated
+// by it instead of differentiating it, so the velocity estimate does not spike. Consecutive
+// jumping samples are one jump (a relocalisation delivered over several samples), and w is the
+// motion before it, so the next still sample is not a false jump. Three consecutive jumping
+// samples of the same displacement are motion after all (a target faster than jump_threshold
+// per sample): the estimator restarts at that rate and the episode is not counted.
 // Late samples (stamp not after the last one) are ignored and counted.
 #pragma once
 
@@ -47,11 +52,13 @@ struct EstimatorConfig {
   double rho_o = 0.01;          // steady-state bound of both stages ([m], [m/s]).
   double rho_o0 = 1.0;          // initial bound rho_oi(0) of both stages.
   double jump_threshold = 0.5;  // [m] a sample this far from the prediction is a jump; 0 = off.
+  double max_acceleration = 1.0;  // [m/s^2] a_max: the rate may change by a_max h per sample (jump rule).
   bool bdf2 = false;            // second-order BDF2 steps (offline simulation); false: backward Euler.
 
   bool operator==(const EstimatorConfig& o) const {
     return a1 == o.a1 && a2 == o.a2 && lambda_o == o.lambda_o && rho_o == o.rho_o && rho_o0 == o.rho_o0 &&
-           jump_threshold == o.jump_threshold && bdf2 == o.bdf2;
+           jump_threshold == o.jump_threshold &&
+           max_acceleration == o.max_acceleration && bdf2 == o.bdf2;
   }
 
   // Empty when valid, otherwise "key: reason" for the first bad field (the table's bounds,
@@ -73,6 +80,30 @@ double solveImplicitStage(double c, double rho, double k, double eta_guess, doub
 // Maximum |eta| used (tanh(18) < 1 in double precision).
 constexpr double kMaxEta = 18.0;
 
+// What the jump rule made of one sample.
+struct JumpDecision {
+  enum Kind { kMotion, kJump, kRestart } kind = kMotion;
+  Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // kJump: chi - (chi_prev + z2 h), added to z1
+  Eigen::Vector2d rate = Eigen::Vector2d::Zero();   // kRestart: the steady rate found
+};
+
+// The jump rule of the header comment on a 2-D position (the 1-D estimator uses y = 0).
+class JumpRule {
+ public:
+  void reset(const Eigen::Vector2d& chi, const Eigen::Vector2d& rate);
+  // The sample chi after h > 0, with the velocity estimate z2 before it.
+  JumpDecision decide(const EstimatorConfig& config, double h, const Eigen::Vector2d& chi,
+                      const Eigen::Vector2d& z2);
+  std::uint64_t jumps() const { return jumps_; }
+
+ private:
+  Eigen::Vector2d last_chi_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d motion_rate_ = Eigen::Vector2d::Zero();   // w: the last motion's rate
+  Eigen::Vector2d episode_rate_ = Eigen::Vector2d::Zero();  // rate of the last jumping sample
+  int episode_length_ = 0;                                  // consecutive jumping samples
+  std::uint64_t jumps_ = 0;
+};
+
 // Estimator of one scalar signal and its derivative.
 class AxisEstimator {
  public:
@@ -85,6 +116,8 @@ class AxisEstimator {
   bool update(double t, double chi);
   // The same with the bound rho_o(t) already computed (the 2-D wrapper shares it between axes).
   bool update(double t, double chi, double bound_at_t);
+  // The same with the jump rule's decision taken outside (the 2-D wrapper, over both axes).
+  bool update(double t, double chi, double bound_at_t, JumpDecision::Kind kind, double shift, double rate);
 
   bool initialized() const { return initialized_; }
   double position() const { return z1_; }        // z1
@@ -94,17 +127,16 @@ class AxisEstimator {
   double xi2() const;
   double lastStamp() const { return last_t_; }
   double bound(double t) const { return estimatorBound(config_, t - t0_); }  // rho_o1 = rho_o2
-  std::uint64_t jumps() const { return jumps_; }
+  std::uint64_t jumps() const { return jump_rule_.jumps(); }
   std::uint64_t rejectedSamples() const { return rejected_; }
   const EstimatorConfig& config() const { return config_; }
+  JumpRule& jumpRule() { return jump_rule_; }
 
  private:
   EstimatorConfig config_;
   bool initialized_ = false;
   double t0_ = 0.0;
   double last_t_ = 0.0;
-  double last_chi_ = 0.0;
-  double last_sample_rate_ = 0.0;  // (chi - previous chi) / h of the last sample
   double z1_ = 0.0;
   double z2_ = 0.0;
   double z1_rate_ = 0.0;
@@ -119,7 +151,7 @@ class AxisEstimator {
   double z1_prev_ = 0.0;  // z1 and z2 one sample back (BDF2), valid when has_prev_
   double z2_prev_ = 0.0;
   bool has_prev_ = false;
-  std::uint64_t jumps_ = 0;
+  JumpRule jump_rule_;  // its own (1-D) unless the 2-D wrapper decides
   std::uint64_t rejected_ = 0;
 };
 
@@ -138,12 +170,13 @@ class VelocityEstimator {
   double lastStamp() const { return x_.lastStamp(); }
   const AxisEstimator& axisX() const { return x_; }
   const AxisEstimator& axisY() const { return y_; }
-  std::uint64_t jumps() const { return x_.jumps() + y_.jumps(); }
+  std::uint64_t jumps() const { return jump_rule_.jumps(); }
   std::uint64_t rejectedSamples() const { return rejected_; }
 
  private:
   AxisEstimator x_;
   AxisEstimator y_;
+  JumpRule jump_rule_;  // Euclidean: one decision for both axes
   std::uint64_t rejected_ = 0;
 };
 

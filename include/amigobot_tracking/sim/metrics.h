@@ -14,18 +14,29 @@
 //
 // The e above is the controller's own error (measured target minus believed offset point).
 // With a delayed or noisy sensor it differs from the true error e* = p_d(t) - p_r(t) (true
-// target, true robot); true_ase, true_aae and max_true_error use e*. A *stall*: the offset
-// point makes no headway although it is far behind. A step at t is stalled when p_r(t) is
-// less than kStallSpeed * kStallWindow from p_r(t - kStallWindow) (net, so chattering in
-// place counts) and |e*(t)| > kStallError; a run of consecutive stalled steps t_a..t_b is a
-// stall over [t_a - kStallWindow, t_b], of length t_b - t_a + kStallWindow. longest_stall is
-// the longest (0 without any stalled step).
+// target, true robot); true_ase, true_aae and max_true_error use e*. A *stall*: the target is
+// reachable but not approached. The excess of a step is |e*| minus the best standoff (how far
+// p_d(t) lies inside the zone of radius zone_radius + r_o of a disk: 0 when the target is
+// reachable), so parking at the best standoff of an unreachable target is no stall. A step
+// at t is stalled when the excess is > kStallError and over the last kStallWindow neither did
+// the excess fall by kStallSpeed * kStallWindow nor did p_r move that far net (so chattering
+// in place counts) -- where moving counts only while p_r has not gone more than half a turn
+// round a disk in its current visit, or toward the target: an endless orbit stalls. A run of consecutive stalled steps t_a..t_b is a stall over
+// [t_a - kStallWindow, t_b], of length t_b - t_a + kStallWindow. longest_stall is the longest
+// (0 without any stalled step), stall_time the total.
+//
+// Orbits: while p_r stays within zone_radius + r_o + kOrbitReach of a disk's centre, the angle
+// of p_r about it is accumulated; max_orbit_turns is the largest |angle| / 2 pi of such a
+// visit (passing a disk gives about 0.5, circling it once 1). Toggles: steps where the escape
+// (u_t != 0), or the avoidance (a disk in its band), switches on or off. Command jumps: the
+// largest |v_k - v_(k-1)| and |w_k - w_(k-1)| between consecutive steps.
 #pragma once
 
 #include <cstdint>
 #include <deque>
 #include <limits>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -55,6 +66,9 @@ struct MetricSample {
   bool conflict = false;          // e_hat^T u_c < 0 this step
   bool escaping = false;          // the tangential term was non-zero this step
   int passing_side = 0;           // its latched side (+1, -1; 0 released)
+  bool avoiding = false;          // some disk in its detection band
+  const std::vector<core::Disk>* obstacles = nullptr;  // where the disks are at t (orbits, standoff)
+  double zone_radius = 0.0;       // [m] R or R + r: p_r's keep-out distance beyond a disk's radius
 };
 
 struct RunMetrics {
@@ -89,6 +103,12 @@ struct RunMetrics {
   std::uint64_t conflict_steps = 0;     // steps with e_hat^T u_c < 0
   std::uint64_t escape_steps = 0;       // steps with a non-zero tangential term
   std::uint64_t side_flips = 0;         // steps whose passing side is the opposite of the last step's
+  double stall_time = 0.0;              // [s] total length of the stalls
+  double max_orbit_turns = 0.0;         // [-] largest |angle| / 2 pi of p_r about a disk in one visit
+  std::uint64_t escape_toggles = 0;     // steps where the escape switched on or off
+  std::uint64_t avoidance_toggles = 0;  // steps where the avoidance switched on or off
+  double max_delta_v = 0.0;             // [m/s] largest per-step change of v
+  double max_delta_omega = 0.0;         // [rad/s] largest per-step change of omega
 };
 
 class MetricsAccumulator {
@@ -98,11 +118,22 @@ class MetricsAccumulator {
   RunMetrics result() const;
 
  private:
+  static double bestStandoff(const MetricSample& s);
+  void addStall(const MetricSample& s, double excess);
+  void addOrbits(const MetricSample& s);
+
   RunMetrics m_;
   double sum_e2_ = 0.0, sum_e_ = 0.0, sum_v2_ = 0.0, sum_true_e2_ = 0.0, sum_true_e_ = 0.0;
-  std::deque<std::pair<double, Eigen::Vector2d>> recent_;  // (t, p_r) over the last window
+  // (t, p_r, excess) over the last window
+  std::deque<std::pair<double, std::pair<Eigen::Vector2d, double>>> recent_;
   int last_side_ = 0;
   double stall_start_ = -1.0;                               // t_a of the stall in progress, or < 0
+  double last_stall_t_ = 0.0;                               // t of the last stalled step
+  bool has_last_ = false, last_escaping_ = false, last_avoiding_ = false;
+  core::Twist2 last_u_;
+  std::vector<double> orbit_angle_;                         // per disk: accumulated angle of this visit [rad]
+  std::vector<Eigen::Vector2d> orbit_last_;                 // per disk: last p_r - centre, zero when away
+  bool circling_ = false;                                   // more than half a turn round a disk in this visit
   bool in_offset_contact_ = false, in_body_contact_ = false;
 };
 
@@ -110,6 +141,7 @@ constexpr double kDiamondTolerance = 1e-9;
 constexpr double kStallSpeed = 0.05;   // [m/s] net headway below this counts as standing
 constexpr double kStallWindow = 0.5;   // [s] over which the headway is measured
 constexpr double kStallError = 0.2;    // [m] twice the experiment's rho_inf: clearly not arrived
+constexpr double kOrbitReach = 0.5;    // [m] beyond a disk's zone where p_r's angle about it still counts
 
 }  // namespace sim
 }  // namespace amigobot_tracking

@@ -23,6 +23,12 @@ struct MonteCarloOptions {
   // its direction kept, re-timed so that it still reaches its (shifted) encounter point --
   // where the scenario's obstacle comes closest to the target -- at the same time.
   double obstacle_speed = 0.0;
+  // > 0: each variant's target noise std is drawn uniformly in [0, noise_std_max] [m].
+  double noise_std_max = 0.0;
+  // Non-empty: each variant's target sample period is drawn from these [s] (the rate varies).
+  std::vector<double> sample_periods;
+  int jobs = 1;           // threads running the variants (the result does not depend on it)
+  bool progress = false;  // print progress and an estimate of the time left on stderr
 };
 
 // The time in [0, duration] at which the obstacle (centre + velocity t) is closest to the
@@ -60,6 +66,12 @@ struct MonteCarloSummary {
   double worst_min_clearance_offset = std::numeric_limits<double>::infinity();  // [m]
   double worst_max_e_over_rho = 0.0;
   double mean_ase = 0.0, mean_aae = 0.0, mean_true_ase = 0.0;  // [m^2], [m], [m^2]
+  double worst_true_ase = 0.0, mean_true_ise = 0.0, worst_true_ise = 0.0;  // [m^2], [m^2 s], [m^2 s]
+  // The figures that cannot hide a failure (metrics.h), worst over the runs.
+  double worst_orbit_turns = 0.0;
+  std::uint64_t worst_escape_toggles = 0, worst_avoidance_toggles = 0, worst_side_flips = 0;
+  double worst_max_delta_v = 0.0, worst_max_delta_omega = 0.0;  // [m/s], [rad/s]
+  std::uint64_t diamond_violations = 0, nan_steps = 0;          // summed over the runs
   double sim_time = 0.0, wall_time = 0.0;  // [s] summed over the runs
   std::vector<MonteCarloRun> per_run;
 };
