@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <string>
 
 #include "amigobot_tracking/localization/distance_field.h"
 #include "amigobot_tracking/localization/localizer.h"
@@ -21,14 +22,16 @@ namespace {
 struct Drive {
   OccupancyMap map;
   double worst_position = 0.0;
+  int loops = 0;
 };
 
 // 1.2 loops through the room with odometry 4 % long and 3 % over-turning.
-Drive driveAndMap() {
+Drive driveAndMap(const std::string& method = "icp") {
   std::mt19937 random(7);
   std::normal_distribution<double> noise(0.0, 1.0);
   LocalizationConfig c;
   c.mode = "mapping";
+  c.mapping_method = method;
   c.initial_pose = amigobot_test::kLoopStart;
   Mapper mapper(c);
   core::Pose2 truth = c.initial_pose, odom{};
@@ -42,13 +45,11 @@ Drive driveAndMap() {
   }
   EXPECT_EQ(mapper.estimate().scans, 300);
   drive.map = mapper.map();
+  drive.loops = mapper.loopClosures();
   return drive;
 }
 
-}  // namespace
-
-TEST(Mapper, BuildsAMapWhoseWallsAreWhereTheRoomsAre) {
-  const Drive drive = driveAndMap();
+void expectTheRoomsWalls(const Drive& drive) {
   EXPECT_LT(drive.worst_position, 0.1);
   const OccupancyMap& map = drive.map;
   ASSERT_FALSE(map.empty());
@@ -78,6 +79,17 @@ TEST(Mapper, BuildsAMapWhoseWallsAreWhereTheRoomsAre) {
     }
   }
   EXPECT_GT(static_cast<double>(found) / wall_points, 0.85) << found << " of " << wall_points;
+}
+
+}  // namespace
+
+TEST(Mapper, BuildsAMapWhoseWallsAreWhereTheRoomsAre) { expectTheRoomsWalls(driveAndMap()); }
+
+// The pose graph (mapping_method graph) in the same room: it closes the loop after one turn.
+TEST(Mapper, TheGraphMethodBuildsTheRoomToo) {
+  const Drive drive = driveAndMap("graph");
+  expectTheRoomsWalls(drive);
+  EXPECT_GT(drive.loops, 0);
 }
 
 TEST(Mapper, ItsSavedMapLocalisesTheRobot) {
