@@ -68,7 +68,7 @@ class ColaSession : public LaserSession {
     if (body == "sRN LMPoutputRange") {  // sectors, resolution, start, stop (clearpath LMS1xx, sick_scan)
       const ColaGeometry& g = model_.cola;
       return "sRA LMPoutputRange 1 " + cola::hex(static_cast<std::uint32_t>(g.angular_step)) + " " +
-             cola::hexSigned(g.start_angle) + " " + cola::hexSigned(g.start_angle + g.angular_step * (g.beams - 1));
+             cola::hexSigned(g.start_angle) + " " + cola::hexSigned(stopAngle());
     }
     if (body.rfind("sWN LMPoutputRange ", 0) == 0) return "sWA LMPoutputRange";  // the range stays the full one
     if (body.rfind("sWN LMDscandatacfg ", 0) == 0) return scanDataConfig(body);
@@ -90,7 +90,15 @@ class ColaSession : public LaserSession {
     const ColaGeometry& g = model_.cola;
     return cola::hex(static_cast<std::uint32_t>(g.scan_frequency)) + " 1 " +
            cola::hex(static_cast<std::uint32_t>(g.angular_step)) + " " + cola::hexSigned(g.start_angle) + " " +
-           cola::hexSigned(g.start_angle + g.angular_step * (g.beams - 1));
+           cola::hexSigned(stopAngle());
+  }
+
+  // The nominal stop angle, as devices report it: a real TiM5xx answers 225 deg (225510),
+  // not start + 810 x 0.3333 deg (sick_scan's doc/tim5xx_startup_sequence.txt).
+  int stopAngle() const {
+    const ColaGeometry& g = model_.cola;
+    const long span = static_cast<long>(g.angular_step) * (g.beams - 1);
+    return g.start_angle + static_cast<int>((span + 500) / 1000 * 1000);  // to 0.1 deg
   }
 
   // sWN LMDscandatacfg channel 00 remission resolution unit encoder 00 position name comment

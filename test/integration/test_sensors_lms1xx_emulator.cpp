@@ -25,7 +25,7 @@ TEST(Lms1xxDriver, LogsInReadsTheScanConfigurationAndGivesTheRayCastTruth) {
   EXPECT_NEAR(scan.angle_increment, 0.5 * M_PI / 180.0, 1e-9);
   EXPECT_NEAR(scan.scan_time, 0.04, 1e-9);
   EXPECT_NEAR(scan.time_increment, 0.04 / 720, 1e-7);  // 0.5 deg of a 25 Hz turn
-  EXPECT_DOUBLE_EQ(scan.range_min, 0.5);
+  EXPECT_DOUBLE_EQ(scan.range_min, 0.01);  // as clearpath's LMS1xx driver: real echoes from 0.126 m
   EXPECT_DOUBLE_EQ(scan.range_max, 20.0);
   const std::string id = driver.identity();
   EXPECT_NE(id.find("LMS111"), std::string::npos) << id;

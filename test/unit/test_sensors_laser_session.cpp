@@ -174,3 +174,27 @@ TEST(ColaSession, Lms1xxNeedsTheClientLoginToMeasureAndReportsItsConfiguration) 
   EXPECT_EQ(telegram.scan_frequency, 2500u);
   EXPECT_EQ(telegram.measurement_frequency, 180u);  // 720 beams per turn at 25 Hz, in 100 Hz
 }
+
+TEST(ColaSession, AnswersTheOutputRangeAndTheScanDataConfigurationAsTheDeviceDoes) {
+  const LaserModel tim = laserModel("sick_tim5xx");
+  auto session = makeSession(tim, "TIM1");
+  const EmulatedScan scan = rampScan(tim.beams());
+  auto ask = [&](const std::string& body) { return session->receive(cola::frame(body), scan); };
+  // The TiM's output range as sick_scan's start-up log shows a real one: 0.3333 deg, -45 .. 225 deg.
+  EXPECT_EQ(ask("sRN LMPoutputRange"), cola::frame("sRA LMPoutputRange 1 D05 FFF92230 225510"));
+  EXPECT_EQ(ask("sWN LMPoutputRange 1 D05 FFF92230 225510"), cola::frame("sWA LMPoutputRange"));
+  EXPECT_EQ(ask("sWN LMDscandatacfg 01"), cola::frame("sFA 3"));  // too few parameters
+  // Remission at 8-bit resolution: RSSI1 among the 8-bit channels, one value per beam.
+  EXPECT_EQ(ask("sWN LMDscandatacfg 01 00 1 0 0 00 00 0 0 0 0 +1"), cola::frame("sWA LMDscandatacfg"));
+  ask("sEN LMDscandata 1");
+  std::string buffer = session->stream(scan), body;
+  ASSERT_TRUE(cola::nextTelegram(&buffer, &body));
+  EXPECT_NE(body.find(" 0 1 DIST1 "), std::string::npos);
+  cola::ScanTelegram telegram;
+  ASSERT_EQ(cola::decodeScan(body, &telegram), "");
+  ASSERT_EQ(telegram.rssi.size(), telegram.ranges.size());
+  for (std::size_t i = 0; i < telegram.ranges.size(); ++i) {
+    EXPECT_EQ(telegram.rssi[i] == 0, telegram.ranges[i] == 0) << i;  // no echo, no remission
+    EXPECT_LE(telegram.rssi[i], 255u);
+  }
+}

@@ -118,3 +118,43 @@ TEST(RplidarSession, AnswersInfoHealthAndStreamsNodesAfterScan) {
   // A command with a payload (MOTOR_PWM 0xF0, 2 bytes, checksum) is skipped whole.
   EXPECT_EQ(session->receive(bytes({0xA5, 0xF0, 0x02, 0x94, 0x02, 0xC1}) + rplidar::request(rplidar::kGetHealth), scan), health);
 }
+
+TEST(Rplidar, CapsulesCarryTheirChecksumStartBitAndMillimetreDistances) {
+  rplidar::Capsule in;
+  in.start = true;
+  in.start_angle_q6 = 1234;
+  for (std::size_t i = 0; i < in.distance_mm.size(); ++i) in.distance_mm[i] = static_cast<std::uint16_t>(i * 500);
+  const std::string b = rplidar::encodeCapsule(in);
+  ASSERT_EQ(b.size(), 84u);
+  EXPECT_EQ(static_cast<std::uint8_t>(b[0]) >> 4, 0xA);
+  EXPECT_EQ(static_cast<std::uint8_t>(b[1]) >> 4, 0x5);
+  EXPECT_EQ(static_cast<std::uint8_t>(b[3]) & 0x80, 0x80);  // start bit: bit 15 of the start angle
+  EXPECT_EQ(static_cast<std::uint8_t>(b[9]) | (static_cast<std::uint8_t>(b[10]) << 8), 1000 << 2);  // cabin 1, distance 1
+  rplidar::Capsule out;
+  ASSERT_EQ(rplidar::decodeCapsule(reinterpret_cast<const std::uint8_t*>(b.data()), &out), "");
+  EXPECT_TRUE(out.start);
+  EXPECT_EQ(out.start_angle_q6, 1234);
+  EXPECT_EQ(out.distance_mm, in.distance_mm);
+  std::string bad = b;
+  bad[40] ^= 0x04;
+  EXPECT_EQ(rplidar::decodeCapsule(reinterpret_cast<const std::uint8_t*>(bad.data()), &out), "capsule: checksum mismatch");
+}
+
+TEST(RplidarSession, AnswersGetLidarConfPerModeAndIgnoresUnknownKeys) {
+  auto session = makeSession(laserModel("rplidar"), "S");
+  const EmulatedScan scan;
+  auto conf = [&](std::uint32_t key, int mode) {
+    std::string payload = {static_cast<char>(key & 0xFF), static_cast<char>((key >> 8) & 0xFF), 0, 0};
+    if (mode >= 0) payload += std::string{static_cast<char>(mode), 0};
+    return session->receive(rplidar::request(rplidar::kGetLidarConf, payload), scan);
+  };
+  const std::string name = conf(rplidar::kConfScanModeName, 1);
+  ASSERT_EQ(name.size(), 7u + 4 + 8);  // descriptor, key, "Express\0"
+  EXPECT_EQ(static_cast<std::uint8_t>(name[6]), rplidar::kLidarConfType);
+  EXPECT_EQ(name.substr(11), std::string("Express") + '\0');
+  const std::string type = conf(rplidar::kConfScanModeAnsType, 0);
+  ASSERT_EQ(type.size(), 12u);
+  EXPECT_EQ(static_cast<std::uint8_t>(type[11]), rplidar::kMeasurementType);
+  EXPECT_EQ(conf(rplidar::kConfScanModeName, 5), "");  // no such mode
+  EXPECT_EQ(conf(0x81, -1), "");                       // a key this firmware does not know
+}
