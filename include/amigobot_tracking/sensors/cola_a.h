@@ -41,8 +41,13 @@ struct ScanTelegram {
 };
 
 std::string encodeScan(const ScanTelegram& scan);
-// Empty when `body` is a complete scan telegram (then *scan holds it), else what is wrong.
+// Empty when `body` is a complete scan telegram with a usable geometry (then *scan holds
+// it), else what is wrong.
 std::string decodeScan(const std::string& body, ScanTelegram* scan);
+// Empty when the decoded geometry can be used, else "scan telegram: <field>: ..." (a NaN, zero
+// or negative scale factor, a step of 0 or over 360 deg, a span over 360 deg): such a scan
+// is an error, never an empty "fresh" scan that hides a blind laser (issue 25).
+std::string validateScanGeometry(const ScanTelegram& scan);
 
 }  // namespace cola
 }  // namespace sensors
