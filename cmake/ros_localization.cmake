@@ -6,6 +6,7 @@ amigobot_add_library(amigobot_tracking_ros_localization
   src/ros/localization_nodelet.cpp
 )
 target_link_libraries(amigobot_tracking_ros_localization amigobot_tracking_localization amigobot_tracking_ros_params ${catkin_LIBRARIES})
+add_dependencies(amigobot_tracking_ros_localization ${PROJECT_NAME}_generate_messages_cpp)  # LocalizationStatus
 
 amigobot_add_tool(localization_node src/ros/programs/localization_node.cpp)
 target_link_libraries(localization_node amigobot_tracking_ros_localization)

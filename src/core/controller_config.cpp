@@ -13,7 +13,7 @@ namespace {
 FieldTable<ControllerConfig> makeTable() {
   using C = ControllerConfig;
   FieldTable<C> t = {
-      field("robot_radius", &C::robot_radius, "m", "body radius R", positive()),
+      field("robot_radius", &C::robot_radius, "m", "body radius R", boundedRadius()),
       field("offset", &C::offset, "m", "distance r of the controlled point ahead of the centre", positive()),
       live(field("v_max", &C::v_max, "m/s", "diamond half-width in v", positive())),
       live(field("w_max", &C::w_max, "rad/s", "diamond half-width in omega", positive())),

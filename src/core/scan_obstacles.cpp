@@ -34,9 +34,9 @@ const FieldTable<ScanObstacleConfig>& scanObstacleFields() {
   static const FieldTable<S> table = {
       field("cluster_tolerance", &S::cluster_tolerance, "m", "max gap between consecutive points of one cluster",
             positive()),
-      field("max_disk_radius", &S::max_disk_radius, "m", "bound on each obstacle disk's radius", positive()),
+      field("max_disk_radius", &S::max_disk_radius, "m", "bound on each obstacle disk's radius", boundedRadius()),
       field("min_disk_radius", &S::min_disk_radius, "m", "radius of a one-point disk, floor of all disks",
-            positive()),
+            boundedRadius()),
       field("min_cluster_points", &S::min_cluster_points, "-", "smaller clusters are noise", atLeast(1)),
       // +inf allowed: no limit besides the scan's range_max.
       field("max_range", &S::max_range, "m", "beams farther than this are ignored", allowInfinite(positive())),

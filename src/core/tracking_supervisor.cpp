@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace amigobot_tracking {
@@ -30,23 +31,58 @@ Twist2 TrackingSupervisor::disable(double t) {
 std::string TrackingSupervisor::staleReason(double t, const SupervisorInputs& in) const {
   if (!std::isfinite(t)) return "time is not finite";
   if (!in.have_pose) return "no robot pose " + config_.pose_link;
+  if (!in.pose_problem.empty()) return "robot pose " + config_.pose_link + ": " + in.pose_problem;
   if (!fresh(in.pose_age, config_.pose_timeout)) return "robot pose is stale (" + std::to_string(in.pose_age) + " s)";
   if (!in.have_target) return "no target " + config_.target_link;
+  if (!in.target_problem.empty()) return "target " + config_.target_link + ": " + in.target_problem;
   if (!fresh(in.target_age, config_.pose_timeout)) return "target is stale (" + std::to_string(in.target_age) + " s)";
+  if (config_.require_scan && !in.scan_problem.empty()) return "scan: " + in.scan_problem;
   if (config_.require_scan && !scanFresh(in.scan_age)) {
     return in.scan_age < 0.0 ? "no scan yet" : "scan is stale (" + std::to_string(in.scan_age) + " s)";
+  }
+  if (!in.body_intrusion.empty()) return "body intrusion: " + in.body_intrusion;
+  return "";
+}
+
+std::string TrackingSupervisor::localizationReason(double t, const SupervisorInputs& in) {
+  if (in.have_pose && in.pose_position.allFinite() && std::isfinite(t)) {
+    if (have_position_ && config_.pose_jump_limit > 0.0) {
+      const double moved = (in.pose_position - last_position_).norm();
+      const double explained = config_.max_speed * std::max(0.0, t - last_position_time_);
+      if (moved - explained > config_.pose_jump_limit) {
+        char why[120];
+        std::snprintf(why, sizeof(why), "pose jumped %.2f m in one cycle (> tracking bound %.2f m)", moved,
+                      config_.pose_jump_limit);
+        jump_ = why;
+        jumped_ = true;
+        good_since_ = t;
+      }
+    }
+    have_position_ = true;
+    last_position_ = in.pose_position;
+    last_position_time_ = t;
+  }
+  if (!in.localization_problem.empty()) {
+    good_since_ = t;  // the settling time counts from good localisation
+    return "localisation: " + in.localization_problem;
+  }
+  if (jumped_) {
+    if (!(t - good_since_ >= config_.jump_settle)) return "localisation: " + jump_;
+    jumped_ = false;
   }
   return "";
 }
 
 TrackingSupervisor::Decision TrackingSupervisor::begin(double t, const SupervisorInputs& in) {
   Decision d;
+  const std::string localization = localizationReason(t, in);  // every cycle: jumps are tracked while off
   if (!enabled_) {
     state_ = State::kDisabled;
     status_ = "disabled";
     return d;
   }
   std::string stale = staleReason(t, in);
+  if (stale.empty()) stale = localization;
   if (!stale.empty()) {
     lost_ = true;
     d.publish = true;

@@ -1,5 +1,7 @@
 #include "amigobot_tracking/core/virtual_obstacles.h"
 
+#include "amigobot_tracking/core/field_table.h"  // kMaxRadius
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -14,8 +16,8 @@ std::string validateVirtualObstacle(const VirtualObstacle& obstacle) {
     err << "id must not be empty";
   } else if (!obstacle.disk.center.allFinite()) {
     err << "center of '" << obstacle.id << "' must be finite";
-  } else if (!(std::isfinite(obstacle.disk.radius) && obstacle.disk.radius > 0.0)) {
-    err << "radius of '" << obstacle.id << "' must be a finite number > 0, got " << obstacle.disk.radius;
+  } else if (!(obstacle.disk.radius > 0.0 && obstacle.disk.radius <= kMaxRadius)) {
+    err << "radius of '" << obstacle.id << "' must be in (0, " << kMaxRadius << "] m, got " << obstacle.disk.radius;
   }
   return err.str();
 }

@@ -63,11 +63,6 @@ geometry_msgs::TransformStamped toTransform(const std::string& parent, const std
   return t;
 }
 
-double ageOf(const ros::Time& stamp, const ros::Time& now) {
-  if (stamp.isZero()) return 0.0;  // static transform: always current
-  return std::max(0.0, (now - stamp).toSec());
-}
-
 geometry_msgs::Quaternion toQuaternion(double yaw) {
   tf2::Quaternion q;
   q.setRPY(0.0, 0.0, yaw);

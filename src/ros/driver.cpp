@@ -48,6 +48,8 @@ const core::FieldTable<DriverParams>& driverFields() {
         field("battery_low_voltage", &D::battery_low_voltage, "V", "diagnostics warn below this",
               core::nonNegative()),
         field("sonar_min_range", &D::sonar_min_range, "m", "sensor_msgs/Range min_range", core::nonNegative()),
+        field("cmd_vel_source", &D::cmd_vel_source, "-",
+              "node whose cmd_vel is driven; empty: the first publisher until silent 1 s"),
     };
     core::include(&t, "", &D::client, aria::clientFields());
     return t;
@@ -109,6 +111,7 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   client_->setSipCallback([this](const aria::RobotState& state) { onSip(state); });
   client_->start();
   link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.sip_cycle), [this](const ros::TimerEvent&) { checkLink(); });
+  cmd_vel_lock_ = std::make_unique<core::CommandLock>(params_.cmd_vel_source, kCommandLockRelease);
   cmd_vel_sub_ = nh_.subscribe("cmd_vel", 1, &AmigobotDriver::onCmdVel, this);
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>>(pnh_);
   reconfigure_->setCallback([this](amigobot_tracking::DriverConfig& config, std::uint32_t level) {
@@ -140,7 +143,17 @@ AmigobotDriver::~AmigobotDriver() {
   client_->stop();
 }
 
-void AmigobotDriver::onCmdVel(const geometry_msgs::Twist::ConstPtr& msg) {
+void AmigobotDriver::onCmdVel(const ros::MessageEvent<const geometry_msgs::Twist>& event) {
+  const std::string& publisher = event.getPublisherName();
+  // Wall time: a paused simulation clock must not hand the lock over.
+  if (!cmd_vel_lock_->accept(publisher, ros::WallTime::now().toSec())) {
+    const char* why = cmd_vel_lock_->configured() ? "~cmd_vel_source" : "first publisher";
+    ROS_WARN_STREAM_THROTTLE_NAMED(2.0, "driver", "cmd_vel from " << publisher << " ignored: "
+                                                                   << cmd_vel_lock_->owner() << " drives (" << why
+                                                                   << ")");
+    return;
+  }
+  const geometry_msgs::Twist::ConstPtr msg = event.getConstMessage();
   client_->setVelocity({msg->linear.x, msg->angular.z});  // NaN is refused (and stops) inside
 }
 

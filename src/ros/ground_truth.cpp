@@ -30,7 +30,7 @@ const core::FieldTable<GroundTruthConfig>& groundTruthFields() {
       field("transform_tolerance", &G::transform_tolerance, "s", "map -> odom is stamped this far ahead",
             core::nonNegative()),
       field("socket_timeout", &G::socket_timeout, "s", "a slower status reply counts as a lost link",
-            core::positive()),
+            core::boundedTimeout()),
       field("reconnect_period", &G::reconnect_period, "s", "between reconnection attempts", core::positive()),
       field("publish_tf", &G::publish_tf, "-", "broadcast map -> odom (false: only the ground_truth topic)"),
   };

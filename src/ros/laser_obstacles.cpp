@@ -8,8 +8,14 @@ namespace amigobot_tracking {
 namespace ros_layer {
 
 LaserObstacles::LaserObstacles(tf2_ros::Buffer& tf, std::string global_frame, const core::ScanObstacleConfig& scan,
-                               const core::ObstacleTrackerConfig& tracker, ros::Time epoch)
-    : tf_(tf), global_frame_(std::move(global_frame)), config_(scan), epoch_(epoch), tracker_(tracker) {}
+                               const core::ObstacleTrackerConfig& tracker, ros::Time epoch,
+                               double future_stamp_tolerance)
+    : tf_(tf),
+      global_frame_(std::move(global_frame)),
+      config_(scan),
+      epoch_(epoch),
+      tracker_(tracker),
+      age_(future_stamp_tolerance) {}
 
 LaserObstacles::~LaserObstacles() {
   filter_.reset();  // before the subscriber it reads from
@@ -33,13 +39,16 @@ void LaserObstacles::subscribe(ros::NodeHandle nh) {
 void LaserObstacles::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
   std::lock_guard<std::mutex> lock(latest_mutex_);
   latest_ = scan;
+  latest_arrival_ = ros::Time::now();
 }
 
 double LaserObstacles::update(const ros::Time& now) {
   sensor_msgs::LaserScan::ConstPtr scan;
+  ros::Time arrival;
   {
     std::lock_guard<std::mutex> lock(latest_mutex_);
     scan = latest_;
+    arrival = latest_arrival_;
   }
   if (scan && scan != processed_) {
     processed_ = scan;
@@ -51,6 +60,7 @@ double LaserObstacles::update(const ros::Time& now) {
                                 &disks_next_)) {
         disks_.swap(disks_next_);  // the previous disks stay until a good scan replaces them
         used_ = scan;
+        age_.arrived(scan->header.stamp.toSec(), arrival.toSec());
         tracker_.update((scan->header.stamp - epoch_).toSec(), disks_);
       } else {
         ROS_WARN_THROTTLE(5.0, "tracking: scan with invalid geometry ignored (frame %s)", scan->header.frame_id.c_str());
@@ -59,7 +69,9 @@ double LaserObstacles::update(const ros::Time& now) {
       ROS_WARN_THROTTLE(5.0, "tracking: scan dropped: %s", ex.what());
     }
   }
-  return used_ ? ageOf(used_->header.stamp, now) : -1.0;
+  const core::InputAge age = age_.at(now.toSec());
+  scan_problem_ = age.problem;
+  return age.have ? age.age : -1.0;
 }
 
 void LaserObstacles::obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const {

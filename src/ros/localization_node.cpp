@@ -3,6 +3,10 @@
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <nav_msgs/OccupancyGrid.h>
 
+#include <cstdio>
+
+#include "amigobot_tracking/LocalizationStatus.h"
+
 #include "amigobot_tracking/localization/poses.h"
 #include "amigobot_tracking/ros/localization_messages.h"
 #include "amigobot_tracking/ros/param_reader.h"
@@ -34,6 +38,7 @@ LocalizationNode::LocalizationNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   rate_ = std::make_unique<RateMonitor>("scans", "scans processed [Hz]", 1.0, 100.0, 0.1, 10);
   map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
   pose_pub_ = pnh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 5);
+  status_pub_ = nh_.advertise<amigobot_tracking::LocalizationStatus>("localization_status", 5);
   if (localizer_) publishMap(localizer_->map());
   worker_ = std::thread([this] { workLoop(); });
   tf_thread_ = std::thread([this] { tfLoop(); });
@@ -134,6 +139,7 @@ void LocalizationNode::process(const Work& work) {
   }
   publishTransform(update.map_to_odom);
   publishPose(work.stamp);
+  publishStatus(work.stamp, update);
   if (map_to_publish) publishMap(*map_to_publish);
 }
 
@@ -169,6 +175,21 @@ void LocalizationNode::publishPose(const ros::Time& stamp) {
     msg.pose = toPoseWithCovariance(output_.estimate.pose, output_.estimate.covariance);
   }
   pose_pub_.publish(msg);
+}
+
+void LocalizationNode::publishStatus(const ros::Time& stamp, const Estimate& estimate) {
+  amigobot_tracking::LocalizationStatus msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = config_.global_frame;
+  msg.match = estimate.match;
+  msg.min_match = config_.min_match;
+  if (localizer_ && estimate.lost) {
+    char why[96];
+    std::snprintf(why, sizeof(why), "match %.2f < min_match %.2f", estimate.match, config_.min_match);
+    msg.reason = why;
+  }
+  msg.ok = msg.reason.empty();
+  status_pub_.publish(msg);
 }
 
 void LocalizationNode::publishMap(const localization::OccupancyMap& map) {
@@ -209,6 +230,14 @@ void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStam
     output_.estimate.pose = pose;
   }
   publishTransform(map_to_odom);
+  // Until the next scan is measured there, the pose is the operator's word only: tracking waits.
+  amigobot_tracking::LocalizationStatus status;
+  status.header.stamp = ros::Time::now();
+  status.header.frame_id = config_.global_frame;
+  status.min_match = config_.min_match;
+  status.ok = false;
+  status.reason = "initial pose set, no scan matched there yet";
+  status_pub_.publish(status);
 }
 
 bool LocalizationNode::onSaveMap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {

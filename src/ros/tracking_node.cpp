@@ -7,6 +7,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/body_intrusion.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/markers.h"
 #include "amigobot_tracking/ros/reconfigure_mapping.h"
@@ -15,8 +16,10 @@ namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
 
-core::SupervisorConfig supervisorConfigOf(const TrackingNodeConfig& node) {
+core::SupervisorConfig supervisorConfigOf(const TrackingNodeConfig& node, const core::ControllerConfig& controller) {
   core::SupervisorConfig c;
+  c.pose_jump_limit = controller.rho_inf;  // a localisation jump larger than the tracking bound stops
+  c.max_speed = node.robot_v_max;
   c.pose_timeout = node.pose_timeout;
   c.scan_timeout = node.scan_timeout;
   c.require_scan = node.require_scan;
@@ -64,9 +67,11 @@ bool TrackingNode::start() {
     return false;
   }
   controller_ = core::PerformanceController(controller_config_);
-  supervisor_ = core::TrackingSupervisor(supervisorConfigOf(node_config_));
+  supervisor_ = core::TrackingSupervisor(supervisorConfigOf(node_config_, controller_config_));
   pending_config_ = controller_config_;
   epoch_ = ros::Time::now();
+  pose_age_ = core::InputAgeTracker(node_config_.future_stamp_tolerance);
+  target_age_ = core::InputAgeTracker(node_config_.future_stamp_tolerance);
   const double rate = node_config_.control_rate, inf = std::numeric_limits<double>::infinity();
   control_rate_ = std::make_unique<RateMonitor>("control rate", "control rate measured [Hz]", rate, rate, 0.1, 1);
   cmd_vel_rate_ = std::make_unique<RateMonitor>("cmd_vel", "cmd_vel rate measured [Hz]", rate, inf, 0.1, 1);
@@ -76,8 +81,10 @@ bool TrackingNode::start() {
   markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
   virtual_obstacles_ = std::make_unique<VirtualObstacleInterface>(nh_, pnh_, *tf_, node_config_.global_frame,
                                                                   node_config_.clicked_point_radius, initial);
-  laser_ = std::make_unique<LaserObstacles>(*tf_, node_config_.global_frame, scan_config_, tracker_config_, epoch_);
+  laser_ = std::make_unique<LaserObstacles>(*tf_, node_config_.global_frame, scan_config_, tracker_config_, epoch_,
+                                            node_config_.future_stamp_tolerance);
   laser_->subscribe(nh_);
+  localization_sub_ = nh_.subscribe("localization_status", 5, &TrackingNode::onLocalizationStatus, this);
 
   enable_srv_ = pnh_.advertiseService("enable", &TrackingNode::onEnable, this);
   disable_srv_ = pnh_.advertiseService("disable", &TrackingNode::onDisable, this);
@@ -125,11 +132,15 @@ CycleStats TrackingNode::cycleStats() const {
   return stats_.cycles();
 }
 
-TrackingNode::Lookup TrackingNode::lookup(const std::string& frame, const ros::Time& now) const {
+TrackingNode::Lookup TrackingNode::lookup(const std::string& frame, const ros::Time& now,
+                                          core::InputAgeTracker* age) const {
   Lookup result;
   try {
     result.transform = tf_->lookupTransform(node_config_.global_frame, frame, ros::Time(0));
-    result.age = ageOf(result.transform.header.stamp, now);
+    age->seen(result.transform.header.stamp.toSec(), now.toSec());
+    const core::InputAge a = age->at(now.toSec());
+    result.age = a.age;
+    result.problem = a.problem;
     result.ok = true;
   } catch (const tf2::TransformException& ex) {
     result.error = ex.what();
@@ -139,6 +150,11 @@ TrackingNode::Lookup TrackingNode::lookup(const std::string& frame, const ros::T
 
 void TrackingNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
   if (laser_) laser_->onScan(scan);
+}
+
+void TrackingNode::onLocalizationStatus(const amigobot_tracking::LocalizationStatus::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(localization_mutex_);
+  localization_problem_ = msg->ok ? "" : (msg->reason.empty() ? "not ok" : msg->reason);
 }
 
 void TrackingNode::onTimer(const ros::TimerEvent&) { controlCycle(ros::Time::now()); }
@@ -153,8 +169,8 @@ void TrackingNode::controlCycle(const ros::Time& now) {
       controller_config_ = pending_config_;
       config_pending_ = false;
     }
-    const Lookup pose = lookup(node_config_.base_frame, now);
-    const Lookup target = lookup(node_config_.target_frame, now);
+    const Lookup pose = lookup(node_config_.base_frame, now, &pose_age_);
+    const Lookup target = lookup(node_config_.target_frame, now, &target_age_);
     scan_age_ = laser_->update(now);
     obstacles_.clear();
     if (supervisor_.scanFresh(scan_age_)) {
@@ -174,7 +190,7 @@ void TrackingNode::controlCycle(const ros::Time& now) {
     core::ControllerOutput out;
     bool have_output = false;
     const core::TrackingSupervisor::Decision decision =
-        supervisor_.begin(sinceEpoch(now), {pose.ok, pose.age, target.ok, target.age, scan_age_});
+        supervisor_.begin(sinceEpoch(now), supervisorInputsLocked(pose, target));
     if (decision.publish) {
       publishLocked(decision.u);
       logStopLocked();
@@ -187,6 +203,31 @@ void TrackingNode::controlCycle(const ros::Time& now) {
     stats_.endCycle(sinceEpoch(now), wall_start);
   }
   if (diagnostics_) diagnostics_->update();  // rate-limited by the updater; takes the lock itself
+}
+
+core::SupervisorInputs TrackingNode::supervisorInputsLocked(const Lookup& pose, const Lookup& target) const {
+  core::SupervisorInputs in;
+  in.have_pose = pose.ok;
+  in.pose_age = pose.age;
+  in.have_target = target.ok;
+  in.target_age = target.age;
+  in.scan_age = scan_age_;
+  in.pose_problem = pose.problem;
+  in.target_problem = target.problem;
+  in.scan_problem = laser_->scanProblem();
+  {
+    std::lock_guard<std::mutex> lock(localization_mutex_);
+    in.localization_problem = localization_problem_;
+  }
+  if (pose.ok) {
+    const auto& p = pose.transform.transform.translation;
+    in.pose_position = {p.x, p.y};
+    const std::size_t laser_count = obstacles_.size() - virtual_count_;  // laser disks come first
+    const std::vector<core::Disk> laser(obstacles_.begin(), obstacles_.begin() + laser_count);
+    in.body_intrusion = core::bodyIntrusion({p.x, p.y}, controller_config_.robot_radius, laser,
+                                            virtual_obstacles_->snapshot().all());
+  }
+  return in;
 }
 
 bool TrackingNode::stepLocked(const ros::Time& now, const Lookup& pose, const Lookup& target, bool restart,

@@ -1,5 +1,7 @@
 #include "amigobot_tracking/sensors/cola_a.h"
 
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -183,7 +185,30 @@ std::string decodeScan(const std::string& body, ScanTelegram* scan) {
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
+  const std::string geometry = validateScanGeometry(s);
+  if (!geometry.empty()) return geometry;
   *scan = std::move(s);
+  return "";
+}
+
+std::string validateScanGeometry(const ScanTelegram& s) {
+  constexpr std::int64_t kFullTurn = 3600000;  // 360 deg in 1/10000 deg
+  if (!(std::isfinite(s.scale_factor) && s.scale_factor > 0.0f)) {
+    return "scan telegram: scale factor: must be a finite number > 0, got " + std::to_string(s.scale_factor);
+  }
+  if (s.angular_step == 0 || s.angular_step > kFullTurn) {
+    return "scan telegram: angular step: must be in (0, 360] deg, got " + std::to_string(s.angular_step / 1e4) +
+           " deg";
+  }
+  if (std::llabs(static_cast<long long>(s.start_angle)) > kFullTurn) {
+    return "scan telegram: starting angle: must be within +-360 deg, got " + std::to_string(s.start_angle / 1e4) +
+           " deg";
+  }
+  const std::int64_t span = static_cast<std::int64_t>(s.angular_step) * static_cast<std::int64_t>(s.ranges.size());
+  if (span > kFullTurn + static_cast<std::int64_t>(s.angular_step)) {  // n beams span (n - 1) steps
+    return "scan telegram: angular step: " + std::to_string(s.ranges.size()) + " beams of " +
+           std::to_string(s.angular_step / 1e4) + " deg span more than 360 deg";
+  }
   return "";
 }
 

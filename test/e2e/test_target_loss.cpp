@@ -4,59 +4,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <thread>
 
-#include <tf2_ros/transform_broadcaster.h>
-
-#include "amigobot_tracking/core/reference.h"
-#include "amigobot_tracking/ros/conversions.h"
+#include "circle_target.h"
 #include "experiment.h"
 #include "judge.h"
 
 using e2e::EmulatorStatus;
 using e2e::kSipPeriod;
+using e2e::CircleTarget;
 using e2e::requiredParam;
-
-namespace {
-
-// The target's tf broadcast by the test itself (the circle of circle_reference.yaml), so
-// the test can cut it and restore it. The circle keeps its own clock through a cut: the
-// target reappears where it has moved meanwhile.
-class CircleTarget {
- public:
-  CircleTarget() : circle_({0.0, 0.0}, 1.0, 40.0), start_(ros::Time::now()) {
-    thread_ = std::thread([this] {
-      ros::WallRate rate(50.0);
-      while (!stop_ && ros::ok()) {
-        const ros::Time now = ros::Time::now();
-        const auto s = circle_.at((now - start_).toSec());
-        if (!paused_) {
-          tf_.sendTransform(amigobot_tracking::ros_layer::toTransform(
-              "map", "target", {s.position.x(), s.position.y(), std::atan2(s.velocity.y(), s.velocity.x())}, now));
-        }
-        rate.sleep();
-      }
-    });
-  }
-  ~CircleTarget() {
-    stop_ = true;
-    thread_.join();
-  }
-  void pause(bool paused) { paused_ = paused; }
-
- private:
-  amigobot_tracking::core::CircleReference circle_;
-  ros::Time start_;
-  tf2_ros::TransformBroadcaster tf_;
-  std::atomic<bool> stop_{false}, paused_{false};
-  std::thread thread_;
-};
-
-}  // namespace
 
 // the target's tf stops; a zero setpoint must reach the wire within pose_timeout
 // plus one control period, and the robot stand still after braking; the tf comes back and

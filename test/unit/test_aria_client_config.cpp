@@ -44,6 +44,9 @@ TEST(AriaClientConfig, BadFieldsAreNamed) {
   EXPECT_NE(error([](ClientConfig& c) { c.v_max = std::nan(""); }).find("v_max"), std::string::npos);
   EXPECT_NE(error([](ClientConfig& c) { c.w_max = 10.0; }).find("w_max"), std::string::npos);
   EXPECT_NE(error([](ClientConfig& c) { c.command_timeout = -1; }).find("cmd_vel_timeout"), std::string::npos);
+  // Upper bound (issue 25): 1e308 s was accepted, i.e. no watchdog at all.
+  EXPECT_NE(error([](ClientConfig& c) { c.command_timeout = 1e308; }).find("cmd_vel_timeout"), std::string::npos);
+  EXPECT_NE(error([](ClientConfig& c) { c.link_timeout = 61.0; }).find("link_timeout"), std::string::npos);
   EXPECT_NE(error([](ClientConfig& c) { c.command_refresh = 2.5; }).find("watchdog"), std::string::npos);
   EXPECT_NE(error([](ClientConfig& c) { c.port = ""; }).find("port"), std::string::npos);
   EXPECT_NE(error([](ClientConfig& c) { c.robot.vel2_divisor = 0; }).find("robot.vel2_divisor"), std::string::npos);

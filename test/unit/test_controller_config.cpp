@@ -26,6 +26,7 @@ TEST(ControllerConfig, DefaultsAreValid) { EXPECT_EQ(ControllerConfig().validate
 TEST(ControllerConfig, RejectsEachBadField) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   expectRejected([](ControllerConfig& c) { c.robot_radius = 0.0; }, "robot_radius");
+  expectRejected([](ControllerConfig& c) { c.robot_radius = 1e308; }, "robot_radius");  // <= 100 m
   expectRejected([](ControllerConfig& c) { c.offset = -0.3; }, "offset");
   expectRejected([](ControllerConfig& c) { c.offset = 0.0; }, "offset");
   expectRejected([](ControllerConfig& c) { c.v_max = 0.0; }, "v_max");

@@ -221,6 +221,9 @@ TEST(ScanObstacles, ConfigValidationNamesTheField) {
   c.max_disk_radius = -1.0;
   EXPECT_EQ(first_word(c), "max_disk_radius");
   c = good;
+  c.max_disk_radius = 1e308;  // upper bound: 100 m
+  EXPECT_EQ(first_word(c), "max_disk_radius");
+  c = good;
   c.min_disk_radius = 0.5;  // above max_disk_radius
   EXPECT_EQ(first_word(c), "min_disk_radius");
   c = good;

@@ -171,4 +171,29 @@ TEST(ColaA, EncodesRssiWhereTheConfigurationAskedForIt) {
     EXPECT_EQ(out.ranges, in.ranges);
     EXPECT_EQ(out.rssi, in.rssi);
   }
+// Issue 25: these gave a "fresh" scan with every range dropped (blind but driving).
+TEST(ColaA, AnInvalidGeometryIsAnErrorNamingTheField) {
+  const std::string good =
+      "sRA LMDscandata 1 1 1 0 0 1 1 1 1 0 0 0 0 0 5DC A2 0 1 DIST1 3F800000 0 FFF92230 D05 3 1 2 3 0 0 0 0 0 0";
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string body = good;
+    body.replace(body.find(from), from.size(), to);
+    cola::ScanTelegram scan;
+    return cola::decodeScan(body, &scan);
+  };
+  EXPECT_NE(with(" 3F800000 ", " 7FC00000 ").find("scale factor"), std::string::npos);  // NaN
+  EXPECT_NE(with(" 3F800000 ", " 0 ").find("scale factor"), std::string::npos);         // 0
+  EXPECT_NE(with(" 3F800000 ", " BF800000 ").find("scale factor"), std::string::npos);  // -1
+  EXPECT_NE(with(" 3F800000 ", " 7F800000 ").find("scale factor"), std::string::npos);  // +inf
+  EXPECT_NE(with(" D05 3 ", " 0 3 ").find("angular step"), std::string::npos);
+  EXPECT_NE(with(" D05 3 ", " 36EE81 3 ").find("angular step"), std::string::npos);  // 360.0001 deg
+  EXPECT_NE(with(" D05 3 ", " 1E8480 3 ").find("span more than 360"), std::string::npos);  // 3 beams, 200 deg apart
+  EXPECT_EQ(with(" D05 3 ", " 1B7740 3 "), "");  // 3 beams 180 deg apart: 0..360 deg, usable
+  EXPECT_NE(with(" FFF92230 ", " 7FFFFFFF ").find("starting angle"), std::string::npos);
+  cola::ScanTelegram kept;
+  kept.scan_counter = 42;
+  const std::string nan_body = good.substr(0, good.find(" 3F800000 ")) + " 7FC00000" +
+                               good.substr(good.find(" 3F800000 ") + 9);
+  EXPECT_NE(cola::decodeScan(nan_body, &kept), "");
+  EXPECT_EQ(kept.scan_counter, 42u) << "a refused telegram leaves *scan as it was";
 }

@@ -24,6 +24,11 @@ TEST(TrackingParams, ValidateNamesTheBadField) {
       {"pose_timeout", [](TrackingNodeConfig& c) { c.pose_timeout = -1.0; }},
       {"scan_timeout", [](TrackingNodeConfig& c) { c.scan_timeout = std::numeric_limits<double>::infinity(); }},
       {"clicked_point_radius", [](TrackingNodeConfig& c) { c.clicked_point_radius = 0.0; }},
+      // Upper bounds (issue 25): a minute without input is not fresh, no disk is 100 m.
+      {"pose_timeout", [](TrackingNodeConfig& c) { c.pose_timeout = 61.0; }},
+      {"scan_timeout", [](TrackingNodeConfig& c) { c.scan_timeout = 1e308; }},
+      {"clicked_point_radius", [](TrackingNodeConfig& c) { c.clicked_point_radius = 1e6; }},
+      {"target_exclusion_radius", [](TrackingNodeConfig& c) { c.target_exclusion_radius = 101.0; }},
       {"robot_v_max", [](TrackingNodeConfig& c) { c.robot_v_max = std::numeric_limits<double>::quiet_NaN(); }},
       {"robot_w_max", [](TrackingNodeConfig& c) { c.robot_w_max = -2.0; }},
       {"resume_v_accel", [](TrackingNodeConfig& c) { c.resume_v_accel = 0.0; }},

@@ -85,7 +85,16 @@ TEST(TrackingSupervisor, StaleOrMissingInputsStopWithTheReason) {
   old_target.target_age = 0.51;
   no_scan.scan_age = -1.0;
   old_scan.scan_age = 0.7;
-  for (const Case& c : {Case{no_pose, "no robot pose map -> base_link"}, Case{old_pose, "robot pose is stale (0.6"},
+  // Untrusted stamps (issue 25) and something inside the body.
+  SupervisorInputs future_target = freshInputs(), zero_scan = freshInputs(), zero_pose = freshInputs(),
+                   intrusion = freshInputs();
+  future_target.target_problem = "stamped 30.000 s in the future (tolerance 0.100 s)";
+  zero_scan.scan_problem = "stamp is 0";
+  zero_pose.pose_problem = "stamp is 0";
+  intrusion.body_intrusion = "scan point 0.06 m from the centre";
+  for (const Case& c : {Case{future_target, "target map -> target: stamped 30.000 s in the future"},
+                        Case{zero_scan, "scan: stamp is 0"}, Case{zero_pose, "robot pose map -> base_link: stamp is 0"},
+                        Case{intrusion, "body intrusion: scan point 0.06 m"},Case{no_pose, "no robot pose map -> base_link"}, Case{old_pose, "robot pose is stale (0.6"},
                         Case{no_target, "no target map -> target"}, Case{old_target, "target is stale (0.51"},
                         Case{no_scan, "no scan yet"}, Case{old_scan, "scan is stale (0.7"}}) {
     const double t = 0.0;
@@ -236,4 +245,53 @@ TEST(TrackingSupervisor, NaNInputsNeverPass) {
   TrackingSupervisor s = trackingAt(0.2, 0.1, &t);
   s.begin(t, freshInputs());
   EXPECT_EQ(s.finish(kNaN, output(0.2, 0.1), kDiamond).v, 0.0) << "a NaN time never passes a command";
+}
+
+// Issue 25: after a wrong /initialpose the robot drove 2.85 m on a pose 3 m off.
+TEST(TrackingSupervisor, BadLocalisationStopsAndResumesOnTheRampWhenGood) {
+  TrackingSupervisor s;
+  s.enable();
+  SupervisorInputs lost = freshInputs();
+  lost.localization_problem = "match 0.31 < min_match 0.50";
+  EXPECT_TRUE(s.begin(0.0, freshInputs()).step);
+  s.finish(0.0, output(0.1, 0.0), kDiamond);
+  const auto d = s.begin(kPeriod, lost);
+  EXPECT_FALSE(d.step);
+  EXPECT_TRUE(d.publish);
+  EXPECT_EQ(d.u.v, 0.0);
+  EXPECT_EQ(s.status(), "localisation: match 0.31 < min_match 0.50");
+  const auto back = s.begin(2 * kPeriod, freshInputs());
+  EXPECT_TRUE(back.step);
+  EXPECT_TRUE(back.restart);
+  EXPECT_TRUE(s.ramping());
+}
+
+TEST(TrackingSupervisor, APoseJumpBeyondTheTrackingBoundHoldsUntilLocalisationSettles) {
+  SupervisorConfig config;
+  config.pose_jump_limit = 0.1;  // rho_inf
+  config.max_speed = 0.3;
+  config.jump_settle = 1.0;
+  TrackingSupervisor s(config);
+  s.enable();
+  SupervisorInputs in = freshInputs();
+  double t = 0.0;
+  for (; t < 1.0; t += kPeriod) {  // driving at 0.3 m/s is no jump, nor a late cycle
+    in.pose_position.x() += 0.3 * kPeriod;
+    EXPECT_TRUE(s.begin(t, in).step) << t << ": " << s.status();
+    s.finish(t, output(0.1, 0.0), kDiamond);
+  }
+  in.pose_position.x() += 0.3 * 0.5;  // a cycle 0.5 s late
+  EXPECT_TRUE(s.begin(t += 0.5, in).step) << s.status();
+  in.pose_position.x() += 3.0;  // a wrong initial pose
+  EXPECT_FALSE(s.begin(t += kPeriod, in).step);
+  EXPECT_EQ(s.status().rfind("localisation: pose jumped 3.", 0), 0u) << s.status();
+  SupervisorInputs bad = in;
+  bad.localization_problem = "match 0.20 < min_match 0.50";
+  for (int i = 0; i < 60; ++i) EXPECT_FALSE(s.begin(t += kPeriod, bad).step);  // 3 s lost: held
+  const double last_bad = t;
+  EXPECT_FALSE(s.begin(last_bad + kPeriod, in).step) << "good again, but not yet for jump_settle";
+  EXPECT_FALSE(s.begin(last_bad + 0.95, in).step);
+  const auto resumed = s.begin(last_bad + 1.01, in);
+  EXPECT_TRUE(resumed.step) << s.status();
+  EXPECT_TRUE(resumed.restart);
 }

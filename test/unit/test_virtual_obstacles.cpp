@@ -84,3 +84,11 @@ TEST(VirtualObstacles, FreshIdsAreUnused) {
   set.upsert(obstacle(id, 0, 0, 0.1));
   EXPECT_NE(set.freshId("click_"), id);
 }
+
+TEST(VirtualObstacles, AHugeRadiusIsRefusedAndNamed) {  // issue 25: 1e6 m was accepted
+  VirtualObstacleSet set;
+  std::string why;
+  EXPECT_EQ(set.upsert(obstacle("huge", 0, 0, 1e6), &why), VirtualObstacleSet::Change::kRejected);
+  EXPECT_NE(why.find("radius of 'huge'"), std::string::npos) << why;
+  EXPECT_EQ(set.upsert(obstacle("big", 0, 0, 100.0), &why), VirtualObstacleSet::Change::kAdded);
+}

@@ -40,6 +40,14 @@ inline Bounds interval(double min, bool min_open, double max, bool max_open) {
 }
 inline Bounds positive() { return interval(0.0, true, std::numeric_limits<double>::infinity(), false); }
 inline Bounds nonNegative() { return interval(0.0, false, std::numeric_limits<double>::infinity(), false); }
+// Safety ceilings: a timeout or radius beyond these is a typo (1e308 once reached a robot),
+// never a setting. A minute without input is not "still fresh"; no AmigoBot disk is 100 m.
+constexpr double kMaxTimeout = 60.0;  // [s]
+constexpr double kMaxRadius = 100.0;  // [m]
+inline Bounds boundedTimeout() { return interval(0.0, true, kMaxTimeout, false); }
+inline Bounds boundedTimeoutOrOff() { return interval(0.0, false, kMaxTimeout, false); }  // 0 = off
+inline Bounds boundedRadius() { return interval(0.0, true, kMaxRadius, false); }
+inline Bounds boundedRadiusOrOff() { return interval(0.0, false, kMaxRadius, false); }  // 0 = off
 inline Bounds atLeast(double min) { return interval(min, false, std::numeric_limits<double>::infinity(), false); }
 inline Bounds oneOf(std::vector<std::string> choices) {
   Bounds b;

@@ -14,6 +14,10 @@
 //   step the command leaves zero by at most the ramp's accelerations times the time since the
 //   last command (capped at one control period), until the controller's command is within
 //   reach; then it passes unchanged. Braking is never held back.
+// - Bad localisation (its status, or a pose jump larger than the tracking bound) gives zero
+//   until localisation has been good for jump_settle; then the resume is the usual one.
+// - Something inside the body (a scan point, a virtual obstacle around the robot) gives zero:
+//   the laser is blind or the robot is already where it must not be.
 // Non-finite ages or times count as stale; a non-finite command is never sent.
 #pragma once
 
@@ -33,6 +37,12 @@ struct SupervisorConfig {
   bool require_scan = true;     // a stale scan -> zero
   double control_period = 0.05; // [s] the ramp's time step never exceeds it
   RampLimits ramp;
+  // Localisation jumps: the robot's pose moving further in one cycle than pose_jump_limit
+  // (the tracking bound rho_inf) beyond what max_speed explains is a jump; tracking stops and
+  // resumes when localisation has been good for jump_settle. 0 = off.
+  double pose_jump_limit = 0.0;  // [m]
+  double max_speed = 1.0;        // [m/s] the robot's own motion between two cycles
+  double jump_settle = 1.0;      // [s]
   // Named in the reasons: "no robot pose <pose_link>", "no target <target_link>".
   std::string pose_link = "map -> base_link";
   std::string target_link = "map -> target";
@@ -45,6 +55,16 @@ struct SupervisorInputs {
   bool have_target = false;
   double target_age = 0.0;  // [s]
   double scan_age = -1.0;   // [s] of the last scan turned into disks; < 0: none yet
+  // Why a stamp is not trusted (core/input_age.h: "stamp is 0", "stamped 30 s in the
+  // future"); "" when usable. Non-empty is stale, named in the status.
+  std::string pose_problem, target_problem, scan_problem;
+  // What is inside the robot's body ("" when nothing): a scan point, or a virtual obstacle
+  // containing the robot. Non-empty stops with "body intrusion: ...".
+  std::string body_intrusion;
+  // Localisation quality (the localisation_status topic): "" when good or not watched, else
+  // why it is bad ("match 0.31 < min_match 0.5"). Non-empty stops with "localisation: ...".
+  std::string localization_problem;
+  Eigen::Vector2d pose_position = Eigen::Vector2d::Zero();  // [m] the robot in the global frame (jumps)
 };
 
 class TrackingSupervisor {
@@ -92,6 +112,7 @@ class TrackingSupervisor {
 
  private:
   std::string staleReason(double t, const SupervisorInputs& in) const;  // "" when fresh
+  std::string localizationReason(double t, const SupervisorInputs& in);  // "" when good; tracks jumps
   Twist2 stop(double t, State state, std::string why);  // an immediate zero; re-arms the ramp
   Twist2 ramp(double t, const Twist2& u);
 
@@ -102,6 +123,10 @@ class TrackingSupervisor {
   Twist2 last_command_;          // last command sent (zero after a stop)
   bool have_command_time_ = false;
   double last_command_time_ = 0.0;  // [s]
+  bool have_position_ = false, jumped_ = false;
+  Eigen::Vector2d last_position_ = Eigen::Vector2d::Zero();
+  double last_position_time_ = 0.0, good_since_ = 0.0;  // [s]
+  std::string jump_;  // the last jump, while it holds tracking
   State state_ = State::kDisabled;
   std::string status_ = "disabled";
 };

@@ -26,9 +26,6 @@ geometry_msgs::Twist toTwist(const core::Twist2& u);
 // parent -> child transform placing `pose` (x, y, yaw) in the parent frame.
 geometry_msgs::TransformStamped toTransform(const std::string& parent, const std::string& child,
                                             const core::Pose2& pose, const ros::Time& stamp);
-// Age [s] at `now` of a message or transform stamped `stamp`, >= 0; a zero stamp (a static
-// transform) is always current.
-double ageOf(const ros::Time& stamp, const ros::Time& now);
 // Rotation by `yaw` about z.
 geometry_msgs::Quaternion toQuaternion(double yaw);
 // Fills the controller part of the state message (the node adds status, ages, flags).

@@ -20,6 +20,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "amigobot_tracking/aria/client.h"
+#include "amigobot_tracking/core/command_lock.h"
 #include "amigobot_tracking/ros/driver_state_topics.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 
@@ -40,6 +41,9 @@ struct DriverParams {
   double heading_variance = 1e-2;   // [rad^2]
   double battery_low_voltage = 11.0;  // [V] diagnostics warn below this
   double sonar_min_range = 0.1;       // [m] sensor_msgs/Range min_range
+  // The node whose cmd_vel is driven (its caller id, e.g. "/amigobot_manager"); "": the first
+  // publisher, until it has been silent for kCommandLockRelease (core/command_lock.h).
+  std::string cmd_vel_source;
 
   // "" or "key: reason": the table's bounds, non-empty frames, then client.validate() (with
   // client.robot and client.command_mode already chosen from robot_model/robot_params/command_mode).
@@ -54,11 +58,15 @@ DriverParams loadDriverParams(const ros::NodeHandle& pnh);
 
 class AmigobotDriver {
  public:
+  // With cmd_vel_source empty, another publisher may drive after the lock holder has been
+  // silent this long [s] (longer than any publisher's period, shorter than an operator waits).
+  static constexpr double kCommandLockRelease = 1.0;
+
   AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh);
   ~AmigobotDriver();  // stops the robot: zero velocity, ENABLE 0, CLOSE
 
  private:
-  void onCmdVel(const geometry_msgs::Twist::ConstPtr& msg);
+  void onCmdVel(const ros::MessageEvent<const geometry_msgs::Twist>& event);
   void onSip(const aria::RobotState& state);  // client I/O thread
   bool enableMotors(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool disableMotors(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
@@ -87,6 +95,7 @@ class AmigobotDriver {
   int last_motors_state_ = -1;  // -1: not yet published
   std::unique_ptr<DriverStateTopics> state_topics_;  // battery_state, stall, bumper, estop
   std::unique_ptr<aria::AriaClient> client_;
+  std::unique_ptr<core::CommandLock> cmd_vel_lock_;  // one source drives (cmd_vel callback only)
   std::unique_ptr<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>> reconfigure_;
 };
 

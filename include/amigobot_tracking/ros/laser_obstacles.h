@@ -15,6 +15,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
 
+#include "amigobot_tracking/core/input_age.h"
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 
@@ -25,7 +26,7 @@ class LaserObstacles {
  public:
   // Times [s] given to the tracker count from `epoch`.
   LaserObstacles(tf2_ros::Buffer& tf, std::string global_frame, const core::ScanObstacleConfig& scan,
-                 const core::ObstacleTrackerConfig& tracker, ros::Time epoch);
+                 const core::ObstacleTrackerConfig& tracker, ros::Time epoch, double future_stamp_tolerance = 0.1);
   LaserObstacles(const LaserObstacles&) = delete;
   LaserObstacles& operator=(const LaserObstacles&) = delete;
   ~LaserObstacles();
@@ -37,8 +38,10 @@ class LaserObstacles {
 
   // In the control cycle: turns a new scan into disks; returns the age [s] at `now` of the
   // last scan turned into disks, -1 when none was yet. A bad scan keeps the previous disks
-  // and does not count as fresh: it must not hide a blind laser.
+  // and does not count as fresh: it must not hide a blind laser. The age is taken on this
+  // node's clock (core/input_age.h): +inf for a scan stamped 0 or in the future.
   double update(const ros::Time& now);
+  const std::string& scanProblem() const { return scan_problem_; }  // why its stamp is untrusted, or ""
   // *out = the laser obstacles at `now`: the last scan's disks, or with `moving` the
   // tracked disks with their velocities.
   void obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const;
@@ -53,11 +56,14 @@ class LaserObstacles {
 
   std::mutex latest_mutex_;
   sensor_msgs::LaserScan::ConstPtr latest_;  // written by onScan only
+  ros::Time latest_arrival_;                 // when it arrived, on this node's clock
 
   // The control cycle's (the caller serialises update and obstacles).
   sensor_msgs::LaserScan::ConstPtr processed_;  // last scan looked at
   sensor_msgs::LaserScan::ConstPtr used_;       // last scan turned into disks_ (its age counts)
   std::vector<core::Disk> disks_, disks_next_;  // disks_next_: scratch for the next scan
+  core::InputAgeTracker age_;
+  std::string scan_problem_;
 
   std::unique_ptr<message_filters::Subscriber<sensor_msgs::LaserScan>> sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> filter_;

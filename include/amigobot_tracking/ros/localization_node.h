@@ -74,6 +74,9 @@ class LocalizationNode {
   void process(const Work& work);
   void publishTransform(const core::Pose2& map_to_odom);
   void publishPose(const ros::Time& stamp);
+  // localization_status: ok when the last scan matched the map at the estimated pose (the
+  // match is measured on every scan, at the pose the engine holds).
+  void publishStatus(const ros::Time& stamp, const Estimate& estimate);
   void publishMap(const localization::OccupancyMap& map);
   bool lookup(const std::string& parent, const std::string& child, const ros::Time& stamp, core::Pose2* out);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -87,7 +90,7 @@ class LocalizationNode {
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> filter_;
   ros::Subscriber initial_pose_sub_;
-  ros::Publisher map_pub_, pose_pub_;
+  ros::Publisher map_pub_, pose_pub_, status_pub_;
   ros::ServiceServer save_map_srv_, global_srv_;
   diagnostic_updater::Updater updater_;
   ros::Timer diagnostics_timer_;

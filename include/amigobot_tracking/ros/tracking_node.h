@@ -22,8 +22,10 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "amigobot_tracking/LocalizationStatus.h"
 #include "amigobot_tracking/TrackingConfig.h"
 #include "amigobot_tracking/core/controller.h"
+#include "amigobot_tracking/core/input_age.h"
 #include "amigobot_tracking/core/tracking_supervisor.h"
 #include "amigobot_tracking/ros/laser_obstacles.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
@@ -62,12 +64,17 @@ class TrackingNode {
   struct Lookup {
     bool ok = false;
     geometry_msgs::TransformStamped transform;
-    double age = 0.0;  // [s]
+    double age = 0.0;     // [s] on this node's clock (core/input_age.h)
+    std::string problem;  // why the stamp is not trusted, or ""
     std::string error;
   };
-  Lookup lookup(const std::string& frame, const ros::Time& now) const;
+  // `age` tracks the stream's arrivals (a frozen transform ages even when stamped ahead).
+  Lookup lookup(const std::string& frame, const ros::Time& now, core::InputAgeTracker* age) const;
+  // The supervisor's inputs of this cycle (issue 25's checks: stamps, body intrusion).
+  core::SupervisorInputs supervisorInputsLocked(const Lookup& pose, const Lookup& target) const;
 
   void onTimer(const ros::TimerEvent& event);
+  void onLocalizationStatus(const amigobot_tracking::LocalizationStatus::ConstPtr& msg);
   bool onEnable(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool onDisable(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   void onReconfigure(TrackingConfig& config, uint32_t level);
@@ -108,8 +115,14 @@ class TrackingNode {
   ros::Time epoch_;
   core::ControllerOutput last_output_;
   double last_pose_age_ = -1.0, last_target_age_ = -1.0, scan_age_ = -1.0;  // [s], -1: none
+  core::InputAgeTracker pose_age_, target_age_;
   TrackingStatistics stats_;
   std::unique_ptr<RateMonitor> control_rate_, cmd_vel_rate_;
+
+  // localization_status (issue 25): "" while good or never heard of, else why not.
+  mutable std::mutex localization_mutex_;
+  std::string localization_problem_;
+  ros::Subscriber localization_sub_;
 
   // ROS wiring (created by start()).
   ros::Publisher cmd_pub_, state_pub_, markers_pub_;

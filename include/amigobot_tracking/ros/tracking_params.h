@@ -27,6 +27,7 @@ struct TrackingNodeConfig {
   double control_rate = 20.0;
   double pose_timeout = 0.5;
   double scan_timeout = 0.5;
+  double future_stamp_tolerance = 0.1;  // [s] a stamp further ahead of the receiver's clock is stale
   bool require_scan = true;
   bool autostart = false;
   double clicked_point_radius = 0.2;

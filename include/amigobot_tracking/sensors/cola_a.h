@@ -49,10 +49,15 @@ struct ScanTelegram {
 };
 
 std::string encodeScan(const ScanTelegram& scan);
-// Empty when `body` is a complete scan telegram (then *scan holds it), else what is wrong.
-// Reads the header, the encoder block, the 16-bit and the 8-bit channels as the telegram
-// listing lays them out: DIST1 anywhere among them (RSSI1 kept, DIST2.., RSSI2.. skipped).
+// Empty when `body` is a complete scan telegram with a usable geometry (then *scan holds
+// it), else what is wrong. Reads the header, the encoder block, the 16-bit and the 8-bit
+// channels as the telegram listing lays them out: DIST1 anywhere among them (RSSI1 kept,
+// DIST2.., RSSI2.. skipped).
 std::string decodeScan(const std::string& body, ScanTelegram* scan);
+// Empty when the decoded geometry can be used, else "scan telegram: <field>: ..." (a NaN, zero
+// or negative scale factor, a step of 0 or over 360 deg, a span over 360 deg): such a scan
+// is an error, never an empty "fresh" scan that hides a blind laser (issue 25).
+std::string validateScanGeometry(const ScanTelegram& scan);
 
 }  // namespace cola
 }  // namespace sensors
