@@ -16,6 +16,9 @@ if(CATKIN_ENABLE_TESTING)
     amigobot_add_unit_test(test_localization_${unit} test/unit/test_localization_${unit}.cpp)
     target_link_libraries(test_localization_${unit} amigobot_tracking_localization)
   endforeach()
+  # Hostile files for every loader (map, world, scenario, robot parameters).
+  amigobot_add_unit_test(test_input_files test/unit/test_input_files.cpp)
+  target_link_libraries(test_input_files amigobot_tracking_localization amigobot_tracking_sim amigobot_tracking_aria)
 endif()
 
 # `make bench`: localisation update per scan (360 and 720 beams), mapping update per scan.
