@@ -10,6 +10,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/controller.cpp
   src/core/controller_config.cpp
   src/core/field_table.cpp
+  src/core/input_file.cpp
   src/core/unicycle.cpp
   src/core/reference.cpp
   src/core/obstacle_tracker.cpp

@@ -24,6 +24,9 @@ if(CATKIN_ENABLE_TESTING)
   endforeach()
   # The real building (test/data/real/intel.gfs.log) replayed in each mode.
   target_compile_definitions(test_localization_real_log PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  # Hostile files for every loader (map, world, scenario, robot parameters).
+  amigobot_add_unit_test(test_input_files test/unit/test_input_files.cpp)
+  target_link_libraries(test_input_files amigobot_tracking_localization amigobot_tracking_sim amigobot_tracking_aria)
 endif()
 
 # `make bench`: localisation update per scan (360 and 720 beams), mapping update per scan.

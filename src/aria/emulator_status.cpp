@@ -29,8 +29,10 @@ bool readFlag(std::istringstream& in, bool* flag) {
 }  // namespace
 
 std::string formatStatusLine(const EmulatorStatus& s) {
+  // %.17g: every double reads back exactly, 1e300 as 1e+300 (not 300 digits); 9 fields
+  // of at most 24 characters each fit.
   char line[256];
-  std::snprintf(line, sizeof(line), "%.4f %.6f %.6f %.6f %.6f %.6f %d %d %d", s.t, s.pose.x, s.pose.y, s.pose.theta,
+  std::snprintf(line, sizeof(line), "%.17g %.17g %.17g %.17g %.17g %.17g %d %d %d", s.t, s.pose.x, s.pose.y, s.pose.theta,
                 s.v, s.w, s.motors ? 1 : 0, s.open ? 1 : 0, s.watchdog ? 1 : 0);
   return line;
 }

@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "amigobot_tracking/aria/commands.h"
+#include "amigobot_tracking/core/input_file.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -83,11 +84,14 @@ RobotParams builtinRobotParams(const std::string& model) {
 
 RobotParams loadRobotParams(const std::string& path) {
   YAML::Node root;
+  const std::string text = core::readInputFile(path);
   try {
-    root = YAML::LoadFile(path);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw std::runtime_error(path + ": cannot read robot parameters: " + e.what());
+    throw std::runtime_error(path + ":" + std::to_string(e.mark.line + 1) + ": cannot read robot parameters: " + e.msg);
   }
+  if (const auto big = core::yamlSizeProblem(root))
+    throw std::runtime_error(path + ":" + std::to_string(big->node.Mark().line + 1) + ": " + big->reason);
   if (!root.IsMap()) throw std::runtime_error(path + ": expected a map of robot parameters");
   RobotParams p = RobotParams::amigo();
   auto get = [&](const char* key, auto& field) {
@@ -142,7 +146,9 @@ RobotParams loadRobotParams(const std::string& path) {
                                   "max_rot_velocity", "trans_accel", "trans_decel", "rot_accel", "rot_decel",
                                   "sip_cycle", "watchdog", "switch_to_baud", "sonars", "sonar_max_range",
                                   "sonar_polling"};
-    const std::string key = it->first.as<std::string>();
+    if (!it->first.IsScalar())
+      throw std::runtime_error(path + ":" + std::to_string(it->first.Mark().line + 1) + ": a key must be a word, not a list or mapping");
+    const std::string key = it->first.Scalar();
     bool found = false;
     for (const char* k : known) found = found || key == k;
     if (!found) throw std::runtime_error(path + ":" + std::to_string(it->first.Mark().line + 1) + ": unknown key '" + key + "'");

@@ -78,6 +78,10 @@ SplineReference::SplineReference(const std::vector<Eigen::Vector2d>& waypoints, 
     rhs[i] -= m * rhs[i - 1];
   }
   for (size_t i = n - 2; i >= 1; --i) second_[i] = (rhs[i] - upper[i] * second_[i + 1]) / diag[i];
+  // A step tiny next to the others overflows the curvature: refuse rather than return NaN.
+  for (const Eigen::Vector2d& m : second_) {
+    if (!m.allFinite()) throw std::invalid_argument("spline waypoint steps too uneven (a step near zero)");
+  }
 }
 
 ReferenceState SplineReference::at(double t) const {

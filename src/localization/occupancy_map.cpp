@@ -4,11 +4,15 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include <yaml-cpp/yaml.h>
+
+#include "amigobot_tracking/core/input_file.h"
 
 namespace amigobot_tracking {
 namespace localization {
@@ -35,7 +39,18 @@ OccupancyMap makeMap(double resolution, double origin_x, double origin_y, int wi
 
 namespace {
 
+// The image's cap: 10^8 cells (a 500 m square at 5 cm) and the bytes of such a P2 file.
+constexpr std::uintmax_t kMaxMapCells = 100000000;
+constexpr std::uintmax_t kMaxImageBytes = 4 * kMaxMapCells;
+
 [[noreturn]] void fail(const std::string& file, const std::string& what) { throw std::runtime_error(file + ": " + what); }
+
+// "FILE:LINE: KEY: what" for a key of the map YAML.
+[[noreturn]] void failAt(const std::string& file, const YAML::Node& node, const std::string& key,
+                         const std::string& what) {
+  const int line = node.IsDefined() ? node.Mark().line : -1;
+  fail(file + (line >= 0 ? ":" + std::to_string(line + 1) : ""), key + ": " + what);
+}
 
 // The next header token of a PGM, skipping whitespace and # comments.
 std::string pgmToken(std::istream& in) {
@@ -47,7 +62,7 @@ std::string pgmToken(std::istream& in) {
       if (!token.empty()) return token;
     } else if (std::isspace(c)) {
       if (!token.empty()) return token;
-    } else {
+    } else if (token.size() < 16) {  // a header number has at most 10 digits
       token += static_cast<char>(c);
     }
   }
@@ -65,8 +80,11 @@ int pgmNumber(std::istream& in, const std::string& file, const char* what) {
   fail(file, std::string("bad PGM header: ") + what + " '" + token + "'");
 }
 
-// The grey values of a PGM (P5 or P2, maxval <= 255), top row first.
-std::vector<int> readPgm(const std::string& file, int* width, int* height) {
+// The grey values of a PGM (P5 or P2, maxval <= 255), top row first, scaled to 0..255. The
+// size is checked against the cap and the file's own length before anything is allocated.
+std::vector<std::uint8_t> readPgm(const std::string& file, int* width, int* height) {
+  const std::string problem = core::regularFileProblem(file, kMaxImageBytes);
+  if (!problem.empty()) fail(file, "cannot read the map image: " + problem);
   std::ifstream in(file, std::ios::binary);
   if (!in) fail(file, "cannot read the map image");
   const std::string magic = pgmToken(in);
@@ -75,17 +93,38 @@ std::vector<int> readPgm(const std::string& file, int* width, int* height) {
   *height = pgmNumber(in, file, "height");
   const int maxval = pgmNumber(in, file, "maxval");
   if (maxval > 255) fail(file, "16-bit PGM (maxval " + std::to_string(maxval) + ") is not supported");
-  std::vector<int> pixels(static_cast<std::size_t>(*width) * *height);
+  const std::uintmax_t cells = static_cast<std::uintmax_t>(*width) * static_cast<std::uintmax_t>(*height);
+  const std::string size = std::to_string(*width) + " x " + std::to_string(*height);
+  if (cells > kMaxMapCells) fail(file, size + " pixels: more than the " + std::to_string(kMaxMapCells) + " accepted");
+  // P5 holds one byte per pixel, P2 at least a digit and a separator per pixel but the last.
+  const std::uintmax_t needed = magic == "P5" ? cells : 2 * cells - 1;
+  const std::streamoff header = in.tellg();
+  const std::uintmax_t left = std::filesystem::file_size(file) - static_cast<std::uintmax_t>(header < 0 ? 0 : header);
+  if (header < 0 || left < needed) {
+    fail(file, size + " pixels need at least " + std::to_string(needed) + " bytes of image data, the file has " +
+                   std::to_string(header < 0 ? 0 : left));
+  }
+  std::vector<std::uint8_t> pixels(cells);
+  const auto ends = [&](std::size_t i) {
+    fail(file, "image data ends after " + std::to_string(i) + " of " + std::to_string(pixels.size()) + " pixels");
+  };
   for (std::size_t i = 0; i < pixels.size(); ++i) {
-    int value = 0;
+    long value = 0;
     if (magic == "P5") {
       const int c = in.get();
-      if (c == EOF) fail(file, "image data ends after " + std::to_string(i) + " of " + std::to_string(pixels.size()) + " pixels");
+      if (c == EOF) ends(i);
       value = c;
-    } else if (!(in >> value)) {
-      fail(file, "image data ends after " + std::to_string(i) + " of " + std::to_string(pixels.size()) + " pixels");
+    } else {
+      const std::string token = pgmToken(in);
+      if (token.empty()) ends(i);
+      char* end = nullptr;
+      value = std::strtol(token.c_str(), &end, 10);
+      if (*end != '\0' || token[0] == '-' || token[0] == '+') value = -1;
     }
-    pixels[i] = value * 255 / maxval;
+    if (value < 0 || value > maxval) {
+      fail(file, "pixel " + std::to_string(i) + ": not a grey value in [0, " + std::to_string(maxval) + "]");
+    }
+    pixels[i] = static_cast<std::uint8_t>(value * 255 / maxval);
   }
   return pixels;
 }
@@ -93,11 +132,11 @@ std::vector<int> readPgm(const std::string& file, int* width, int* height) {
 template <class T>
 T required(const YAML::Node& root, const std::string& file, const char* key) {
   const YAML::Node node = root[key];
-  if (!node) fail(file, std::string(key) + ": missing");
+  if (!node) failAt(file, root, key, "missing");
   try {
     return node.as<T>();
   } catch (const YAML::Exception&) {
-    fail(file, std::string(key) + ": cannot read '" + YAML::Dump(node) + "'");
+    failAt(file, node, key, node.IsScalar() ? "cannot read '" + node.Scalar() + "'" : "expected a value, got a list or mapping");
   }
 }
 
@@ -106,43 +145,53 @@ std::string folderOf(const std::string& path) {
   return slash == std::string::npos ? "" : path.substr(0, slash + 1);
 }
 
+YAML::Node parseYaml(const std::string& yaml_path) {
+  YAML::Node root;
+  const std::string text = core::readInputFile(yaml_path);
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    fail(yaml_path + ":" + std::to_string(e.mark.line + 1), e.msg);
+  }
+  if (const auto big = core::yamlSizeProblem(root)) failAt(yaml_path, big->node, "(document)", big->reason);
+  if (!root.IsMap()) fail(yaml_path, "not a map_server YAML (expected keys image, resolution, origin, ...)");
+  for (const auto& entry : root) {
+    static const std::vector<std::string> known = {"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode"};
+    if (!entry.first.IsScalar()) failAt(yaml_path, entry.first, "(key)", "a key must be a word, not a list or mapping");
+    const std::string key = entry.first.Scalar();
+    if (std::find(known.begin(), known.end(), key) == known.end()) failAt(yaml_path, entry.first, key, "unknown key");
+  }
+  return root;
+}
+
 }  // namespace
 
 OccupancyMap loadMap(const std::string& yaml_path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(yaml_path);
-  } catch (const YAML::BadFile&) {
-    fail(yaml_path, "cannot read the map file");
-  } catch (const YAML::Exception& e) {
-    fail(yaml_path, "line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
-  }
-  if (!root.IsMap()) fail(yaml_path, "not a map_server YAML (expected keys image, resolution, origin, ...)");
+  const YAML::Node root = parseYaml(yaml_path);
   const std::string image = required<std::string>(root, yaml_path, "image");
   const double resolution = required<double>(root, yaml_path, "resolution");
-  if (!(resolution > 0.0) || !std::isfinite(resolution)) fail(yaml_path, "resolution: must be > 0 m");
+  if (!(resolution > 0.0) || !std::isfinite(resolution)) failAt(yaml_path, root["resolution"], "resolution", "must be > 0 m");
   const std::vector<double> origin = required<std::vector<double>>(root, yaml_path, "origin");
-  if (origin.size() != 3) fail(yaml_path, "origin: expected [x, y, yaw]");
+  if (origin.size() != 3) failAt(yaml_path, root["origin"], "origin", "expected [x, y, yaw]");
   for (double v : origin)
-    if (!std::isfinite(v)) fail(yaml_path, "origin: must be finite");
-  if (std::abs(origin[2]) > 1e-9) fail(yaml_path, "origin: a rotated map (yaw != 0) is not supported");
+    if (!std::isfinite(v)) failAt(yaml_path, root["origin"], "origin", "must be finite");
+  if (std::abs(origin[2]) > 1e-9) failAt(yaml_path, root["origin"], "origin", "a rotated map (yaw != 0) is not supported");
   const int negate = required<int>(root, yaml_path, "negate");
-  if (negate != 0 && negate != 1) fail(yaml_path, "negate: must be 0 or 1");
+  if (negate != 0 && negate != 1) failAt(yaml_path, root["negate"], "negate", "must be 0 or 1");
   const double occupied_thresh = required<double>(root, yaml_path, "occupied_thresh");
   const double free_thresh = required<double>(root, yaml_path, "free_thresh");
-  if (!(occupied_thresh > 0.0 && occupied_thresh <= 1.0)) fail(yaml_path, "occupied_thresh: must be in (0, 1]");
-  if (!(free_thresh >= 0.0 && free_thresh < occupied_thresh)) fail(yaml_path, "free_thresh: must be in [0, occupied_thresh)");
+  if (!(occupied_thresh > 0.0 && occupied_thresh <= 1.0))
+    failAt(yaml_path, root["occupied_thresh"], "occupied_thresh", "must be in (0, 1]");
+  if (!(free_thresh >= 0.0 && free_thresh < occupied_thresh))
+    failAt(yaml_path, root["free_thresh"], "free_thresh", "must be in [0, occupied_thresh)");
   const std::string mode = root["mode"] ? required<std::string>(root, yaml_path, "mode") : "trinary";
-  if (mode != "trinary" && mode != "scale" && mode != "raw") fail(yaml_path, "mode: must be trinary, scale or raw, got '" + mode + "'");
-  for (const auto& entry : root) {
-    static const std::vector<std::string> known = {"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode"};
-    const std::string key = entry.first.as<std::string>();
-    if (std::find(known.begin(), known.end(), key) == known.end()) fail(yaml_path, key + ": unknown key");
-  }
+  if (mode != "trinary" && mode != "scale" && mode != "raw")
+    failAt(yaml_path, root["mode"], "mode", "must be trinary, scale or raw, got '" + mode + "'");
+  if (image.empty()) failAt(yaml_path, root["image"], "image", "empty (expected the PGM's path)");
 
-  const std::string image_path = !image.empty() && image[0] == '/' ? image : folderOf(yaml_path) + image;
+  const std::string image_path = image[0] == '/' ? image : folderOf(yaml_path) + image;
   int width = 0, height = 0;
-  const std::vector<int> pixels = readPgm(image_path, &width, &height);
+  const std::vector<std::uint8_t> pixels = readPgm(image_path, &width, &height);
   OccupancyMap map = makeMap(resolution, origin[0], origin[1], width, height);
   for (int row = 0; row < height; ++row) {
     for (int col = 0; col < width; ++col) {

@@ -1,18 +1,20 @@
 #include "amigobot_tracking/sim/scenario.h"
 
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
+#include "amigobot_tracking/core/input_file.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/sim/scenario_fields.h"
 
 namespace amigobot_tracking {
 namespace sim {
 namespace {
+
+constexpr double kMinWaypointStep = 1e-3;  // [m]
 
 [[noreturn]] void fail(const std::string& file, const YAML::Node& node, const std::string& key,
                        const std::string& reason) {
@@ -36,6 +38,9 @@ class Section {
   Section(const YAML::Node& node, std::string path, const std::string& file)
       : node_(node), path_(std::move(path)), file_(file) {
     if (!node.IsMap()) fail(file_, node, path_, "expected a mapping {key: value, ...}, got " + describe(node));
+    for (const auto& item : node_) {
+      if (!item.first.IsScalar()) fail(file_, item.first, key("(key)"), "a key must be a word, got " + describe(item.first));
+    }
   }
 
   std::string key(const std::string& name) const { return path_.empty() ? name : path_ + "." + name; }
@@ -74,7 +79,7 @@ class Section {
 
   void finish() const {
     for (const auto& item : node_) {
-      const std::string name = item.first.as<std::string>();
+      const std::string name = item.first.Scalar();  // a word: checked by the constructor
       if (!used_.count(name)) fail(file_, item.first, key(name), "unknown key (misspelt?)");
     }
   }
@@ -216,9 +221,11 @@ ReferenceSpec parseReference(Section s) {
     for (size_t i = 0; i < points.size(); ++i) {
       const std::vector<double> p = s.toNumbers(points[i], s.key("waypoints") + "[" + std::to_string(i) + "]", 2);
       r.waypoints.emplace_back(p[0], p[1]);
-      if (i > 0 && (r.waypoints[i] - r.waypoints[i - 1]).norm() <= 0.0)
+      // A step far below the others makes the spline's knot spacing underflow or its
+      // curvature overflow; a millimetre is far below any robot's reference.
+      if (i > 0 && !((r.waypoints[i] - r.waypoints[i - 1]).norm() >= kMinWaypointStep))
         fail(s.file(), points[i], s.key("waypoints") + "[" + std::to_string(i) + "]",
-             "equals the previous waypoint (a spline needs distinct consecutive points)");
+             "within 1 mm of the previous waypoint (a spline needs distinct consecutive points)");
     }
     r.duration = positive(s, "duration", s.number("duration"));
   } else {
@@ -325,7 +332,12 @@ void checkScenario(const Scenario& scenario) {
   }
   const std::string err = sim::validateSetup(setup);
   if (!err.empty()) throw ScenarioError(scenario.file + ": " + err);
-  const auto reference = scenario.makeReference();
+  std::unique_ptr<core::Reference> reference;
+  try {
+    reference = scenario.makeReference();
+  } catch (const std::invalid_argument& e) {
+    throw ScenarioError(scenario.file + ": reference: " + e.what());
+  }
   const Eigen::Vector2d p_d = reference->at(0.0).position;
   const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, setup.controller.offset);
   // A start inside a disk's zone (R + r with body_safe) is infeasible, not a result: (10) is
@@ -360,6 +372,7 @@ Scenario parseScenario(const std::string& text, const std::string& file, const s
   } catch (const YAML::Exception& e) {
     throw ScenarioError(file + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
+  if (const auto big = core::yamlSizeProblem(root)) fail(file, big->node, "(document)", big->reason);
   for (const std::string& o : overrides) applyOverride(&root, file, o);
   Scenario scenario;
   scenario.file = file;
@@ -382,11 +395,13 @@ Scenario parseScenario(const std::string& text, const std::string& file, const s
 }
 
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
-  if (!in) throw ScenarioError(path + ": cannot open the scenario file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseScenario(text.str(), path, overrides);
+  std::string text;
+  try {
+    text = core::readInputFile(path);
+  } catch (const std::runtime_error& e) {
+    throw ScenarioError(std::string(e.what()) + " (the scenario file)");
+  }
+  return parseScenario(text, path, overrides);
 }
 
 }  // namespace sim

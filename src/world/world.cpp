@@ -7,6 +7,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "amigobot_tracking/core/input_file.h"
+
 namespace amigobot_tracking {
 namespace world {
 namespace {
@@ -51,7 +53,7 @@ Problem polygonProblem(const Polygon& p) {
 
 [[noreturn]] void fail(const std::string& path, const YAML::Node& node, const std::string& key,
                        const std::string& what) {
-  const int line = node.Mark().line;
+  const int line = node.IsDefined() ? node.Mark().line : -1;
   throw std::runtime_error(path + (line >= 0 ? ":" + std::to_string(line + 1) : "") + ": " + key + ": " + what);
 }
 
@@ -59,7 +61,8 @@ Problem polygonProblem(const Polygon& p) {
 void onlyKeys(const std::string& path, const YAML::Node& map, const std::string& where,
               const std::set<std::string>& known) {
   for (const auto& item : map) {
-    const std::string name = item.first.as<std::string>();
+    if (!item.first.IsScalar()) fail(path, item.first, where + "(key)", "a key must be a word, not a list or mapping");
+    const std::string name = item.first.Scalar();
     if (!known.count(name)) fail(path, item.first, where + name, "unknown key (misspelt?)");
   }
 }
@@ -146,18 +149,25 @@ void forEntries(const std::string& path, const YAML::Node& root, const std::stri
   for (std::size_t i = 0; i < list.size(); ++i) read(list[i], name + "[" + std::to_string(i) + "]");
 }
 
-YAML::Node parseFile(const std::string& path) {
+// The file's tree, refused when its aliases expand past core::kMaxYamlNodes (a loader
+// walking them would build the expansion).
+YAML::Node parseText(const std::string& text, const std::string& path) {
+  YAML::Node root;
   try {
-    return YAML::LoadFile(path);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw std::runtime_error(path + ": cannot read world: " + e.what());
+    throw std::runtime_error(path + ":" + std::to_string(e.mark.line + 1) + ": cannot read world: " + e.msg);
   }
+  if (const auto big = core::yamlSizeProblem(root)) fail(path, big->node, "(document)", big->reason);
+  return root;
 }
 
 }  // namespace
 
-World loadWorld(const std::string& path) {
-  const YAML::Node root = parseFile(path);
+World loadWorld(const std::string& path) { return parseWorld(core::readInputFile(path), path); }
+
+World parseWorld(const std::string& text, const std::string& path) {
+  const YAML::Node root = parseText(text, path);
   if (!root.IsMap()) fail(path, root, "(top level)", "expected a mapping {initial_pose: ..., obstacles: [...], walls: [...]}");
   onlyKeys(path, root, "", {"initial_pose", "obstacles", "walls", "polygons"});
   World world;

@@ -37,15 +37,34 @@ TEST(EmulatorStatus, WriterAndParserRoundTrip) {
     EmulatorStatus out;
     const std::string line = formatStatusLine(in);
     ASSERT_EQ(parseStatusLine(line, &out), "") << line;
-    EXPECT_NEAR(out.t, in.t, 5e-5);  // the line keeps 4 decimals of t, 6 of the rest
-    EXPECT_NEAR(out.pose.x, in.pose.x, 5e-7);
-    EXPECT_NEAR(out.pose.y, in.pose.y, 5e-7);
-    EXPECT_NEAR(out.pose.theta, in.pose.theta, 5e-7);
-    EXPECT_NEAR(out.v, in.v, 5e-7);
-    EXPECT_NEAR(out.w, in.w, 5e-7);
+    EXPECT_EQ(out.t, in.t);  // %.17g: every double reads back exactly
+    EXPECT_EQ(out.pose.x, in.pose.x);
+    EXPECT_EQ(out.pose.y, in.pose.y);
+    EXPECT_EQ(out.pose.theta, in.pose.theta);
+    EXPECT_EQ(out.v, in.v);
+    EXPECT_EQ(out.w, in.w);
     EXPECT_EQ(out.motors, in.motors);
     EXPECT_EQ(out.open, in.open);
     EXPECT_EQ(out.watchdog, in.watchdog);
+  }
+}
+
+TEST(EmulatorStatus, HugeAndTinyValuesReadBackExactly) {
+  // Written with %.6f, 1e300 was 300 digits and the line did not parse back.
+  for (const double value : {1e300, -1e300, std::numeric_limits<double>::max(), 1e-300,
+                             std::numeric_limits<double>::min(), -0.1}) {
+    EmulatorStatus in;
+    in.t = value;
+    in.pose = {value, -value, value};
+    in.v = value;
+    in.w = value;
+    EmulatorStatus out;
+    const std::string line = formatStatusLine(in);
+    ASSERT_EQ(parseStatusLine(line, &out), "") << line;
+    EXPECT_LT(line.size(), 200u) << line;
+    EXPECT_EQ(out.t, value) << line;
+    EXPECT_EQ(out.pose.y, -value) << line;
+    EXPECT_EQ(out.w, value) << line;
   }
 }
 

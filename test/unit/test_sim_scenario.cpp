@@ -71,6 +71,16 @@ TEST(SimScenario, AcceptsCircleAndSplineReferences) {
   EXPECT_NEAR(spline.makeReference()->at(60.0).position.y(), 2.0, 1e-12);
 }
 
+TEST(SimScenario, RefusesASplineStepNearZero) {
+  // A step of 1e-320 m made the knot spacing underflow: std::invalid_argument escaped
+  // without the file's name.
+  const std::string rose = "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}";
+  expectRefused(replaced(kMinimum, rose, "{type: spline, waypoints: [[3, 0], [3, 1e-320], [0, 2]], duration: 60}"),
+                "reference.waypoints[1]: within 1 mm of the previous waypoint");
+  expectRefused(replaced(kMinimum, rose, "{type: spline, waypoints: [[3, 0], [3, 0.0005], [0, 2]], duration: 60}"),
+                "reference.waypoints[1]");
+}
+
 TEST(SimScenario, ReadsOptionalKeys) {
   std::string text = replaced(kMinimum, "body_safe: false}", "body_safe: true, variant: proportional, estimator: kalman, k_p: 7}");
   text = replaced(text, "{duration: 6.283}", "{duration: 6.283, control_period: 0.002, max_step: 0.01, seed: 5}");

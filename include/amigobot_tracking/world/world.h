@@ -50,8 +50,12 @@ inline World disksOnly(std::vector<core::Disk> disks) {
 }
 
 // Reads a world file. Throws std::runtime_error "FILE:LINE: KEY: what is wrong" for an
-// unreadable file, a malformed entry or an unknown key.
+// unreadable file, a malformed entry or an unknown key. Only a regular file up to
+// core::kMaxConfigFileBytes is read, and a tree whose aliases expand past core::kMaxYamlNodes
+// is refused (core/input_file.h).
 World loadWorld(const std::string& path);
+// The same from the file's text; `path` names it in the errors.
+World parseWorld(const std::string& text, const std::string& path);
 
 // The world as a world file loadWorld reads back (walls as {from, to}; full precision).
 std::string worldYaml(const World& world);
