@@ -21,7 +21,7 @@ target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML
 # amigobot_sim is built in sim_mrpt.cmake (it also runs the MRPT peer).
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit closed_loop metrics tracking_verdict baselines controller_extensions)
+  foreach(unit closed_loop metrics tracking_verdict baselines controller_extensions recommended_law)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_sim)
   endforeach()

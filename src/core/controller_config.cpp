@@ -31,6 +31,12 @@ FieldTable<ControllerConfig> makeTable() {
             interval(0.0, true, 1.0, true)),
       field("max_relaxation_interval", &C::max_relaxation_interval, "s",
             "longest gap between steps the relaxation term of (13) spans (stalls)", positive()),
+      field("law", &C::law, "-", "control law: paper (eqs. 9-13) or recommended (field, safety filter, 13')",
+            oneOf({"paper", "recommended"})),
+      field("barrier_rate", &C::barrier_rate, "1/s",
+            "recommended law: barrier rate gamma, clearance' >= -gamma (clearance - min_margin)", positive()),
+      field("field_margin", &C::field_margin, "m", "recommended law: width of the field's bend around a disk's zone",
+            positive()),
       // Beyond the paper: each default is the paper's law.
       field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
       field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),

@@ -329,7 +329,8 @@ void checkScenario(const Scenario& scenario) {
   const Eigen::Vector2d p_d = reference->at(0.0).position;
   const Eigen::Vector2d p_r = core::offsetPoint(setup.initial_pose, setup.controller.offset);
   const double e0 = (p_d - p_r).norm();
-  const bool has_rho = setup.law == sim::ControlLaw::kPaper || setup.law == sim::ControlLaw::kFixedRho;
+  const bool has_rho = setup.law == sim::ControlLaw::kPaper || setup.law == sim::ControlLaw::kFixedRho ||
+                       setup.law == sim::ControlLaw::kRecommended;
   if (has_rho && !(e0 < setup.controller.rho_0)) {
     std::ostringstream msg;
     msg << scenario.file << ": controller.rho_0: " << setup.controller.rho_0
