@@ -278,7 +278,7 @@ bool PerformanceController::commandRecommended(const Pose2& pose, const std::vec
   out.active.avoiding = command.active_barriers > 0;
   out.active.conflict = command.shortfall > 0.0;
   // The fixed-rho baseline never relaxes.
-  shortfall_ = config_.adaptive_rho ? command.shortfall : 0.0;
+  shortfall_ = config_.adaptive_rho ? command.relaxation : 0.0;
   return true;
 }
 

@@ -51,15 +51,16 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   out.active_barriers = safe.active;
   const Eigen::Vector2d applied = safe.u.v * heading + config.offset * safe.u.omega * Eigen::Vector2d(-heading.y(), heading.x());
   out.shortfall = std::max(0.0, e_hat.dot(out.u_track - applied));
+  out.relaxation = (1.0 + config.k_r) * xi * xi * out.shortfall;
   out.min_clearance = std::numeric_limits<double>::infinity();
   for (const Disk& o : obstacles)
     out.min_clearance = std::min(out.min_clearance, (in.p_r - o.center).norm() - radius - o.radius);
   return out;
 }
 
-double recommendedRhoStep(const ControllerConfig& config, double rho, double shortfall, double h) {
+double recommendedRhoStep(const ControllerConfig& config, double rho, double relaxation, double h) {
   const double decayed = config.rho_inf + (rho - config.rho_inf) * std::exp(-config.lambda * h);
-  return decayed + std::min(h, config.max_relaxation_interval) * (1.0 + config.k_r) * shortfall;
+  return decayed + std::min(h, config.max_relaxation_interval) * relaxation;
 }
 
 }  // namespace core

@@ -39,7 +39,7 @@ inline std::vector<Scene> clutterScenes() {
     cup.push_back(disk(3.5 + std::cos(a), std::sin(a), 0.2));
   }
   s.push_back({"u_behind", cup, {}, {{0.6, 0.0}, {2.2, 0.0}, {5.8, -1.5}, {5.8, 1.5}}, 45.0, 60.0});
-  s.push_back({"u_through", cup, {}, {{0.6, 0.0}, {7.0, 0.0}}, 40.0, 55.0});
+  s.push_back({"u_through", cup, {}, {{0.6, 0.0}, {7.0, 0.0}}, 40.0, 70.0});  // 30 s to arrive after the target parks
   // Two 0.1 m disks whose zones leave a 0.14 m corridor for p_r.
   s.push_back({"gap", {disk(2.5, 0.65, 0.1), disk(2.5, -0.65, 0.1)}, {}, {{0.6, 0.0}, {5.5, 0.0}}, 30.0, 35.0});
   for (double d : {1.75, 1.77})

@@ -49,6 +49,7 @@ Outcome run(const Scene& scene, sim::ControlLaw law) {
   std::vector<double> winding(scene.disks.size(), 0.0), last_angle(scene.disks.size(), NAN);
   std::vector<int> last_side(scene.disks.size(), 0);
   Eigen::Vector2d last_p_r(NAN, NAN);
+  std::vector<Eigen::Vector2d> last_center(scene.disks.size());
   Outcome o;
   const double zone = setup.controller.effectiveRadius() + setup.controller.delta;
   auto observe = [&](const sim::ClosedLoopStep& step) {
@@ -63,9 +64,11 @@ Outcome run(const Scene& scene, sim::ControlLaw law) {
       const double c = (p - d.center).norm() - d.radius;
       if (c < nearest_clearance) nearest_clearance = c, nearest = j;
     }
-    // The side: the sense in which p_r moves around the nearest disk, while near it and moving.
+    // The side: the sense in which p_r moves around the nearest disk (relative to the disk,
+    // which may move), while near it and moving.
     if (!std::isnan(last_p_r.x()) && nearest_clearance < zone) {
-      const Eigen::Vector2d move = p - last_p_r, away = p - (*step.obstacles)[nearest].center;
+      const Eigen::Vector2d& center = (*step.obstacles)[nearest].center;
+      const Eigen::Vector2d move = p - last_p_r - (center - last_center[nearest]), away = p - center;
       if (move.norm() > 0.02 * setup.control_period) {
         const int side = away.x() * move.y() - away.y() * move.x() > 0.0 ? 1 : -1;
         if (last_side[nearest] != 0 && side != last_side[nearest]) ++o.side_flips;
@@ -73,6 +76,7 @@ Outcome run(const Scene& scene, sim::ControlLaw law) {
       }
     }
     last_p_r = p;
+    for (size_t j = 0; j < step.obstacles->size(); ++j) last_center[j] = (*step.obstacles)[j].center;
   };
   const sim::ClosedLoopSummary summary = sim::runClosedLoop(setup, reference, observe);
   o.contacts = summary.metrics.body_collisions + summary.metrics.offset_collisions;

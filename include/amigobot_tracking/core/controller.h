@@ -141,7 +141,7 @@ class PerformanceController {
   double rho_ = 0.0;
   double start_ratio_ = 0.0;  // > 0: the next start uses restart()'s rule
   double conflict_ = 0.0;  // second argument of the min in (13), from the last step
-  double shortfall_ = 0.0; // Delta of (13') (recommended law), from the last step
+  double shortfall_ = 0.0; // relaxation term of (13') (recommended law), from the last step
   int passing_side_ = 0;   // latched side of the tangential term (0 = released)
   // Applied commands, each held from its time to the next one's (zero before the first),
   // over the last max_prediction seconds: pose-age compensation replays them.

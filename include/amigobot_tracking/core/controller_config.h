@@ -51,7 +51,7 @@ struct ControllerConfig {
   std::string law = "paper";
   double barrier_rate = 2.0;           // [1/s] gamma of the recommended law's barrier rows:
                                        // clearance' >= -gamma (clearance - min_margin)
-  double field_margin = 0.3;           // [m] the recommended law's field bends around a disk's
+  double field_margin = 0.1;           // [m] the recommended law's field bends around a disk's
                                        // zone within this, and blends in when the line of sight
                                        // to the target passes closer than this
   // Beyond the paper: each switch off reproduces the paper exactly.

@@ -28,7 +28,7 @@ namespace core {
 
 struct NavigationFieldConfig {
   double robot_radius = 0.48;  // R_eff [m]
-  double margin = 0.3;         // [m] width of the slowness ramp and of the line-of-sight blend
+  double margin = 0.1;         // [m] width of the slowness ramp and of the line-of-sight blend
   double cell = 0.05;          // [m] grid spacing
   double padding = 2.5;        // [m] the grid spans p_r and p_d plus this on every side
   double max_extent = 24.0;    // [m] at most this wide and tall (centred on p_r)

@@ -8,7 +8,7 @@
 //             (d: the field's direction; d = e_hat with a clear line of sight, then u_nom = u_track)
 //   u       = safetyFilter(G^-1 u_nom)
 //   Delta   = max(0, e_hat^T (u_track - G u))                               (the shortfall)
-//   rho'    = -lambda (rho - rho_inf) + (1 + k_r) Delta                    (13')
+//   rho'    = -lambda (rho - rho_inf) + (1 + k_r) xi^2 Delta               (13')
 #pragma once
 
 #include <vector>
@@ -39,6 +39,7 @@ struct RecommendedCommand {
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();
   double blend = 0.0;       // 0: straight at the target; 1: the field's direction
   double shortfall = 0.0;   // Delta of (13')
+  double relaxation = 0.0;  // (1 + k_r) xi^2 Delta, the relaxation term of (13')
   double slack = 0.0;       // the filter's slack (0 unless the barrier rows conflict)
   int barrier_rows = 0;
   int active_barriers = 0;
@@ -49,8 +50,8 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
                                       const RecommendedInput& in, const std::vector<Disk>& obstacles);
 
 // One step of (13') of length h: the prescribed decay integrated exactly, plus the relaxation
-// (1 + k_r) Delta held over min(h, max_relaxation).
-double recommendedRhoStep(const ControllerConfig& config, double rho, double shortfall, double h);
+// term (RecommendedCommand::relaxation, from the last step) held over min(h, max_relaxation_interval).
+double recommendedRhoStep(const ControllerConfig& config, double rho, double relaxation, double h);
 
 }  // namespace core
 }  // namespace amigobot_tracking
