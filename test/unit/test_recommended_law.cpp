@@ -15,6 +15,8 @@
 #include "amigobot_tracking/core/recommended_law.h"
 #include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/sim/closed_loop.h"
+#include "amigobot_tracking/sim/scenario.h"
+#include "amigobot_tracking/sim/simulator.h"
 #include "clutter_scenes.h"
 
 using namespace amigobot_tracking;
@@ -125,4 +127,105 @@ TEST(RecommendedLaw, PassesEveryClutterClassWhereThePaperLawFails) {
   // The checks bite: the paper's law fails them in these classes (measured).
   for (const char* name : {"pillar_park", "u_behind", "u_through", "doorway", "fast_target"})
     EXPECT_FALSE(paper_failures[name].empty()) << name << ": the paper's law passed every check";
+}
+
+// A disk sliding toward another until their zones join (the group threshold of the escape,
+// r_a + r_b + 2 (R + r + delta) = 1.76 m here, is crossed on the way): the recommended command
+// changes by a small amount per millimetre, with no step anywhere.
+TEST(RecommendedLaw, CommandIsContinuousAsADiskJoinsAGroup) {
+  core::ControllerConfig config;
+  config.law = "recommended";
+  const core::DiamondSet diamond(config.v_max, config.w_max);
+  core::RecommendedInput in;
+  in.pose = {0.0, 0.3, 0.0};
+  in.p_r = {0.3, 0.3};
+  in.e = Eigen::Vector2d(3.2, -0.3);  // the target behind the pair, off its axis
+  in.rho = 4.0;
+  double largest_jump = 0.0;
+  core::RecommendedCommand last;
+  for (int k = 0; k <= 200; ++k) {
+    const double gap = 1.90 - 0.001 * k;  // centre distance 1.90 m .. 1.70 m
+    const std::vector<core::Disk> disks = {clutter_scenes::disk(2.0, 0.5 * gap, 0.15),
+                                           clutter_scenes::disk(2.0, -0.5 * gap, 0.15)};
+    const core::RecommendedCommand c = core::recommendedCommand(config, diamond, in, disks);
+    ASSERT_TRUE(c.valid);
+    ASSERT_TRUE(diamond.contains(c.u, 1e-9));
+    if (k > 0) largest_jump = std::max(largest_jump, std::hypot(c.u.v - last.u.v, config.offset * (c.u.omega - last.u.omega)));
+    last = c;
+  }
+  EXPECT_LT(largest_jump, 0.01);  // [m/s] per mm; the escape jumped 0 -> 0.305 m/s here
+}
+
+// Small state changes: the pose moved across the pillar's shadow, where the field bends and the
+// barrier row binds. Continuity, not only a small step: the largest change per step shrinks
+// with the step (a jump would not).
+TEST(RecommendedLaw, CommandIsContinuousInThePose) {
+  core::ControllerConfig config;
+  config.law = "recommended";
+  const core::DiamondSet diamond(config.v_max, config.w_max);
+  const std::vector<core::Disk> disks = {clutter_scenes::disk(1.5, 0.0, 0.3)};
+  const Eigen::Vector2d target(3.5, 0.0);
+  auto largestJump = [&](double step) {
+    double largest = 0.0;
+    core::RecommendedCommand last;
+    for (int k = 0; k * step <= 0.2; ++k) {
+      core::RecommendedInput in;
+      in.pose = {0.0, -0.1 + step * k, 0.0};
+      in.p_r = in.pose.position() + Eigen::Vector2d(config.offset, 0.0);
+      in.e = target - in.p_r;
+      in.rho = 4.0;
+      const core::RecommendedCommand c = core::recommendedCommand(config, diamond, in, disks);
+      EXPECT_TRUE(c.valid);
+      if (k > 0) largest = std::max(largest, std::hypot(c.u.v - last.u.v, config.offset * (c.u.omega - last.u.omega)));
+      last = c;
+    }
+    return largest;
+  };
+  const double coarse = largestJump(0.002), fine = largestJump(0.0005);
+  EXPECT_LT(coarse, 0.05);        // [m/s] per 2 mm
+  EXPECT_LT(fine, 0.5 * coarse);  // about a quarter for a Lipschitz command
+}
+
+// (13') holds |e| < rho by itself against an infeasible reference (0.6 m/s against v_bar 0.3),
+// where the paper's (13) needs the guard hundreds of times: |e|/rho stays below
+// max(xi(0), 1/sqrt(1 + k_r), tanh(estimation error / k_d)).
+TEST(RecommendedLaw, RhoLawKeepsTheErrorInsideWithoutTheGuard) {
+  for (const Scene& scene : clutter_scenes::clutterScenes()) {
+    if (scene.name != "fast_target") continue;
+    for (sim::ControlLaw law : {sim::ControlLaw::kRecommended, sim::ControlLaw::kPaper}) {
+      sim::ClosedLoopSetup setup = setupOf(scene, law);
+      const core::SplineReference reference(scene.waypoints, scene.spline_duration);
+      const sim::ClosedLoopSummary s = sim::runClosedLoop(setup, reference);
+      if (law == sim::ControlLaw::kRecommended) {
+        EXPECT_EQ(s.envelope_widenings, 0u);
+        EXPECT_LT(s.max_error_ratio, 0.99);
+      } else {
+        EXPECT_GT(s.envelope_widenings, 100u);  // measured 357: the paper's law leans on the guard
+      }
+    }
+  }
+}
+
+// The band of (10) at 20 Hz with Table 1's delta = 0.016 m on the Section 5.3 course: the
+// paper's law enters and leaves it step after step and rho jumps by metres (issue 20); the
+// recommended law has no band (its barrier rows are continuous), so rho moves smoothly.
+TEST(RecommendedLaw, RhoDoesNotJumpWithAThinBandAt20Hz) {
+  double largest_step[2] = {0.0, 0.0}, largest_rho[2] = {0.0, 0.0};
+  int i = 0;
+  for (const char* variant : {"recommended", "paper"}) {
+    sim::Scenario s = sim::loadScenario(std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/experiment_5_3.yaml",
+                                        {std::string("controller.variant=") + variant, "controller.delta=0.016",
+                                         "simulation.control_period=0.05", "simulation.max_step=0"});
+    double last_rho = -1.0;
+    const auto ref = s.makeReference();
+    sim::runClosedLoop(s.setup, *ref, [&](const sim::ClosedLoopStep& step) {
+      if (last_rho > 0.0) largest_step[i] = std::max(largest_step[i], std::abs(step.output.rho - last_rho));
+      largest_rho[i] = std::max(largest_rho[i], step.output.rho);
+      last_rho = step.output.rho;
+    });
+    ++i;
+  }
+  EXPECT_LT(largest_step[0], 0.1) << "recommended";
+  EXPECT_LT(largest_rho[0], 3.0) << "recommended";
+  EXPECT_GT(largest_step[1], 1.0) << "paper (measured 7.1 m in the audit)";
 }
