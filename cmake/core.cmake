@@ -8,6 +8,9 @@ amigobot_add_library(amigobot_tracking_core
   src/core/band_implicit.cpp
   src/core/prescribed_performance.cpp
   src/core/controller.cpp
+  src/core/navigation_field.cpp
+  src/core/safety_filter.cpp
+  src/core/recommended_law.cpp
   src/core/controller_config.cpp
   src/core/field_table.cpp
   src/core/input_file.cpp
@@ -28,7 +31,7 @@ target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
 
 if(CATKIN_ENABLE_TESTING)
   foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance disk_clusters band_implicit controller_config controller_guards
-          obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference input_age command_lock body_intrusion)
+          obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference input_age command_lock body_intrusion safety_filter)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_core)
   endforeach()

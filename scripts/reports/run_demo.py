@@ -10,7 +10,8 @@ metrics.json, the paper's Figs 3-8 (scripts/reports/plot_run.py), rviz_*.png, su
 Exit 0: safe run that tracked; 3: collision or a command outside the diamond; 4: the run did
 not happen; 5: safe, but it did not track (run_report's tracking verdict: true error above
 rho_inf + tolerance outside the obstacle episodes and their recovery time, or at the end).
-Tracking runs with config/demo_tracking.yaml (tangential escape) unless --paper-law.
+Tracking runs with config/demo_tracking.yaml (the recommended law) unless --paper-law
+(config/paper_law.yaml: the paper's law alone).
 Usage: run_demo.py [--ws WS] [--out report/demo] [--world config/worlds/lab.yaml] [--paper-law] [--tolerance 0.05]
                    [--recovery-time 20]
 """
@@ -35,8 +36,10 @@ SETTLE_S = 6.0        # after the course ends: the robot closes the last gap (th
 FIRST_PASS = 0.22     # share of the course at which the target crosses the virtual square first (screenshot)
 VIRTUAL = "{id: square, center: {x: 2.0, y: 1.0, z: 0.0}, radius: 0.25}"  # the paper's square, as a disk
 DEMO_PARAMS = os.path.join(ROOT, "config", "demo_tracking.yaml")
-LAW_TEXT = {"escape": "the paper's law with the tangential escape, config/demo_tracking.yaml",
-            "paper": "the paper's law alone, --paper-law"}
+PAPER_PARAMS = os.path.join(ROOT, "config", "paper_law.yaml")
+LAW_TEXT = {"recommended": "the recommended law, config/demo_tracking.yaml",
+            "escape": "the paper's law with the tangential escape",
+            "paper": "the paper's law alone, --paper-law (config/paper_law.yaml)"}
 EXIT_NAMES = {0: "SAFE, TRACKED", 3: "UNSAFE", 4: "DID NOT RUN", 5: "SAFE, DID NOT TRACK"}
 TOPICS = ["/tracking/state", "/tracking/virtual_obstacles", "/cmd_vel", "/ground_truth", "/odom", "/scan",
           "/tf", "/tf_static", "/robot_trail", "/target_trail"]
@@ -65,7 +68,7 @@ def main():
     parser.add_argument("--out", default=os.path.join(ROOT, "report", "demo"), help="report folder (replaced)")
     parser.add_argument("--world", default=WORLD, help="world YAML of the run and its scoring (default: lab.yaml)")
     parser.add_argument("--paper-law", action="store_true",
-                        help="the paper's law alone (without config/demo_tracking.yaml's tangential escape)")
+                        help="the paper's law alone (config/paper_law.yaml instead of config/demo_tracking.yaml)")
     parser.add_argument("--tolerance", type=float, default=0.05,
                         help="[m] tracking verdict: true |e| within rho_inf + this (localisation error, sampling skew)")
     parser.add_argument("--recovery-time", type=float, default=10.0,
@@ -93,7 +96,7 @@ def main():
                                             f"status_port:={status}", f"laser_port:={laser}",
                                             f"start_delay:={START_DELAY_S}", f"world:={os.path.abspath(args.world)}",
                                             f"reference:={REFERENCE}", "rviz:=true"]
-                             + ([] if args.paper_law else [f"tracking_params:={DEMO_PARAMS}"]),
+                             + [f"tracking_params:={PAPER_PARAMS if args.paper_law else DEMO_PARAMS}"],
                              env)
         t_launch = time.time()
         # The C++ recorder itself: Debian's `rosbag record` wrapper chains its SIGINT handler to the
@@ -136,7 +139,8 @@ def main():
         procs.stop()
     log(f"stack stopped after {time.time() - started:.0f} s; scoring the run")
 
-    law = "escape" if params.get("tangential_avoidance") else "paper"
+    law = ("recommended" if params.get("law") == "recommended"
+           else "escape" if params.get("tangential_avoidance") else "paper")
     report_args = ["--bag", bag, "--world", os.path.abspath(args.world), "--out", out, "--name", "make demo", "--law", law,
                    "--tolerance", str(args.tolerance), "--recovery-time", str(args.recovery_time)]
     for key in ("rho_inf", "delta", "v_max", "w_max"):  # the values the node ran with

@@ -6,6 +6,7 @@
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/band_implicit.h"
 #include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/recommended_law.h"
 #include "amigobot_tracking/core/unicycle.h"
 
 namespace amigobot_tracking {
@@ -86,6 +87,7 @@ void PerformanceController::reset() {
   rho_ = 0.0;
   start_ratio_ = 0.0;
   conflict_ = 0.0;
+  shortfall_ = 0.0;
   passing_side_ = 0;
   commands_.clear();
 }
@@ -175,6 +177,10 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
     rho_ = config_.rho_0;
     if (start_ratio_ > 0.0) rho_ = std::max(rho_, error_norm / start_ratio_);
     start_ratio_ = 0.0;
+  } else if (t > last_t_ && config_.recommended()) {
+    // (13'): the relaxation counts the last step's shortfall (recommended_law.h).
+    rho_ = recommendedRhoStep(config_, rho_, shortfall_, t - last_t_);
+    out.active.rho_relaxed = shortfall_ > 0.0;
   } else if (t > last_t_) {
     // The conflict is the last step's: over a stall it is stale, and near contact (1/margin)
     // it is large, so the relaxation is held for at most max_relaxation_interval.
@@ -188,6 +194,11 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
     ++envelope_widenings_;
   }
   out.rho = rho_;
+  if (config_.recommended()) {
+    if (!commandRecommended(pose, obstacles, out)) return invalid(t, "desired command is not finite");
+    remember(t, out.u);
+    return out;
+  }
 
   const double ratio = error_norm / rho_;
   const double t_ratio = transformT(ratio);
@@ -246,6 +257,29 @@ ControllerOutput PerformanceController::stepStamped(double t, const PoseSample& 
   // The fixed-rho baseline never relaxes: (13) without its adaptive term.
   conflict_ = config_.adaptive_rho ? t_ratio * alignment - clipping : 0.0;
   return out;
+}
+
+bool PerformanceController::commandRecommended(const Pose2& pose, const std::vector<Disk>& obstacles,
+                                               ControllerOutput& out) {
+  RecommendedInput in;
+  in.pose = pose;
+  in.p_r = out.p_r;
+  in.e = out.e;
+  in.v_hat = out.v_hat;
+  in.rho = rho_;
+  const RecommendedCommand command = recommendedCommand(config_, diamond_, in, obstacles);
+  if (!command.valid) return false;
+  out.u = command.u;
+  out.u_d = command.u_nominal;
+  out.u_r = command.u_nom;
+  out.detected_obstacles = command.barrier_rows;
+  out.min_clearance = command.min_clearance;
+  out.active.saturated = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega) > 0.0;
+  out.active.avoiding = command.active_barriers > 0;
+  out.active.conflict = command.shortfall > 0.0;
+  // The fixed-rho baseline never relaxes.
+  shortfall_ = config_.adaptive_rho ? command.relaxation : 0.0;
+  return true;
 }
 
 }  // namespace core

@@ -33,6 +33,12 @@ FieldTable<ControllerConfig> makeTable() {
             "longest gap between steps the relaxation term of (13) spans (stalls)", positive()),
       field("max_rho_rate", &C::max_rho_rate, "m/s",
             "cap of the relaxation term's rate in (13) (band chattering); 0 = none, the paper", nonNegative()),
+      field("law", &C::law, "-", "control law: paper (eqs. 9-13) or recommended (field, safety filter, 13')",
+            oneOf({"paper", "recommended"})),
+      field("barrier_rate", &C::barrier_rate, "1/s",
+            "recommended law: barrier rate gamma, clearance' >= -gamma (clearance - min_margin)", positive()),
+      field("field_margin", &C::field_margin, "m", "recommended law: width of the field's bend around a disk's zone",
+            positive()),
       // Beyond the paper: each default is the paper's law.
       field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
       field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),

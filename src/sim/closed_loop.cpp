@@ -31,8 +31,11 @@ class Law {
       proportional_ = std::make_unique<ProportionalController>(setup.controller, setup.baseline.k_p);
     } else {
       core::ControllerConfig config = setup.controller;
-      config.adaptive_rho = setup.law == ControlLaw::kPaper && config.adaptive_rho;
-      implicit_band_ = setup.integrator != Integrator::kExplicit && !config.moving_obstacles;
+      const bool recommended = setup.law == ControlLaw::kRecommended;
+      config.law = recommended ? "recommended" : "paper";  // the variant names the law
+      config.adaptive_rho = setup.law != ControlLaw::kFixedRho && config.adaptive_rho;
+      // The band-implicit step treats (10), which the recommended law does not use.
+      implicit_band_ = !recommended && setup.integrator != Integrator::kExplicit && !config.moving_obstacles;
       config.estimator.bdf2 = implicit_band_ && setup.integrator == Integrator::kSecondOrder;
       paper_ = std::make_unique<core::PerformanceController>(config);
     }

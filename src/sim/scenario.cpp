@@ -355,7 +355,8 @@ void checkScenario(const Scenario& scenario) {
     throw ScenarioError(msg.str());
   }
   const double e0 = (p_d - p_r).norm();
-  const bool has_rho = setup.law == sim::ControlLaw::kPaper || setup.law == sim::ControlLaw::kFixedRho;
+  const bool has_rho = setup.law == sim::ControlLaw::kPaper || setup.law == sim::ControlLaw::kFixedRho ||
+                       setup.law == sim::ControlLaw::kRecommended;
   if (has_rho && !(e0 < setup.controller.rho_0)) {
     std::ostringstream msg;
     msg << scenario.file << ": controller.rho_0: " << setup.controller.rho_0

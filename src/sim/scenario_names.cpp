@@ -17,7 +17,7 @@ struct Named {
 };
 
 constexpr Named<sim::ControlLaw> kLaws[] = {
-    {"paper", sim::ControlLaw::kPaper}, {"fixed_rho", sim::ControlLaw::kFixedRho},
+    {"recommended", sim::ControlLaw::kRecommended}, {"paper", sim::ControlLaw::kPaper}, {"fixed_rho", sim::ControlLaw::kFixedRho},
     {"proportional", sim::ControlLaw::kProportional}, {"mrpt_reactive", sim::ControlLaw::kMrptReactive}};
 constexpr Named<sim::VelocitySource> kSources[] = {
     {"paper", sim::VelocitySource::kPaperEstimator}, {"finite_difference", sim::VelocitySource::kFiniteDifference},

@@ -22,6 +22,7 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
 
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
@@ -41,7 +42,8 @@ struct Shorthand {
   const char* help;
 };
 constexpr Shorthand kShorthands[] = {
-    {"--variant", "controller.variant", "control law paper|fixed_rho|proportional|mrpt_reactive"},
+    {"--variant", "controller.variant",
+     "control law recommended|paper|fixed_rho|proportional|mrpt_reactive (default: the file's, else recommended)"},
     {"--estimator", "controller.estimator", "target velocity source paper|finite_difference|kalman"},
     {"--body-safe", "controller.body_safe", "effective radius R + r in (10) (true|false)"},
     {"--tangential", "controller.tangential_avoidance", "tangential escape (true|false)"},
@@ -105,6 +107,22 @@ int runPlot(const std::string& csv) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+bool namesVariant(const std::vector<std::string>& sets) {
+  for (const std::string& s : sets)
+    if (s.rfind("controller.variant=", 0) == 0) return true;
+  return false;
+}
+
+// The file's controller section has a variant key (an unreadable file is reported by loadScenario).
+bool fileNamesVariant(const std::string& path) {
+  try {
+    const YAML::Node root = YAML::LoadFile(path);
+    return root["controller"] && root["controller"]["variant"];
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -156,6 +174,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> overrides;
   for (const Shorthand& s : kShorthands)
     if (app.count(s.flag)) overrides.push_back(std::string(s.key) + "=" + shorthand_values[s.flag]);
+  // No law named on the command line nor in the file: the recommended law.
+  if (!app.count("--variant") && !namesVariant(sets) && !fileNamesVariant(scenario_path))
+    overrides.insert(overrides.begin(), "controller.variant=recommended");
   overrides.insert(overrides.end(), sets.begin(), sets.end());
   sim::Scenario scenario;
   try {
@@ -188,7 +209,8 @@ int main(int argc, char** argv) {
     sim::writeText(out + "/metrics.json", sim::metricsJson(scenario, result));
     const sim::RunMetrics& m = result.summary.metrics;
     char ratio[32] = "- (no rho)";
-    if (scenario.setup.law == sim::ControlLaw::kPaper || scenario.setup.law == sim::ControlLaw::kFixedRho)
+    if (scenario.setup.law == sim::ControlLaw::kPaper || scenario.setup.law == sim::ControlLaw::kFixedRho ||
+        scenario.setup.law == sim::ControlLaw::kRecommended)
       std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
     const core::ControllerConfig& c = scenario.setup.controller;
     std::string beyond;  // the switches beyond the paper that are on

@@ -1,4 +1,6 @@
-// The paper's controller, eqs. (3)-(13), as one object with a `step` per control period.
+// The paper's controller, eqs. (3)-(13), as one object with a `step` per control period;
+// with config.law == "recommended" the same object runs the recommended law
+// (recommended_law.h) on the same estimator, start rule and envelope guard.
 //
 // Start and envelope rule: T(|e|/rho) is undefined for |e| >= rho. When the target starts
 // farther than max_error_ratio * rho_0, rho(0) is set to |e(0)| / max_error_ratio (the
@@ -127,6 +129,8 @@ class PerformanceController {
   // max_prediction seconds of them): exact for the unicycle, what odometry would give.
   Pose2 compensatedPose(double t, const PoseSample& robot) const;
   void remember(double t, const Twist2& u);
+  // config.law == "recommended": u from recommended_law.h into `out` (p_r, e, v_hat, rho set).
+  bool commandRecommended(const Pose2& pose, const std::vector<Disk>& obstacles, ControllerOutput& out);
 
   ControllerConfig config_;
   DiamondSet diamond_;
@@ -137,6 +141,7 @@ class PerformanceController {
   double rho_ = 0.0;
   double start_ratio_ = 0.0;  // > 0: the next start uses restart()'s rule
   double conflict_ = 0.0;  // second argument of the min in (13), from the last step
+  double shortfall_ = 0.0; // relaxation term of (13') (recommended law), from the last step
   int passing_side_ = 0;   // latched side of the tangential term (0 = released)
   // Applied commands, each held from its time to the next one's (zero before the first),
   // over the last max_prediction seconds: pose-age compensation replays them.

@@ -49,6 +49,15 @@ struct ControllerConfig {
   double max_rho_rate = 0.0;
   EstimatorConfig estimator;
 
+  // Which law: "paper" ((9)-(13) as published, with the switches below) or "recommended"
+  // (recommended_law.h: a navigation field, a safety filter over the diamond and (13'); the
+  // switches tangential_avoidance, k_t, tangential_hysteresis and obstacle_horizon do not apply).
+  std::string law = "paper";
+  double barrier_rate = 2.0;           // [1/s] gamma of the recommended law's barrier rows:
+                                       // clearance' >= -gamma (clearance - min_margin)
+  double field_margin = 0.1;           // [m] the recommended law's field bends around a disk's
+                                       // zone within this, and blends in when the line of sight
+                                       // to the target passes closer than this
   // Beyond the paper: each switch off reproduces the paper exactly.
   bool tangential_avoidance = false;   // escape the saddle behind a disk (avoidance.h)
   double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c;
@@ -63,6 +72,7 @@ struct ControllerConfig {
   bool compensate_pose_age = false;    // move the pose forward along the commands applied over its age
   double max_prediction = 0.5;         // [s] ages beyond this are not extrapolated further
 
+  bool recommended() const { return law == "recommended"; }
   // The radius used in (10): R, or R + r when body_safe.
   double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
   // Empty when valid, otherwise "key: reason" naming the first bad field (the table's

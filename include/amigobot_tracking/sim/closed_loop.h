@@ -22,6 +22,7 @@ namespace sim {
 // Which control law closes the loop.
 enum class ControlLaw {
   kPaper,         // eqs. (9)-(13)
+  kRecommended,   // the recommended law (core/recommended_law.h): field, safety filter, (13')
   kFixedRho,      // (9)-(12) with rho following the prescribed decay only (no adaptation)
   kProportional,  // feedback linearisation + k_p e + the same u_c and saturation (baseline_controller.h)
   kMrptReactive,  // MRPT's CReactiveNavigationSystem re-targeted at the target (sim_mrpt library,

@@ -1,0 +1,55 @@
+// The recommended law's desired direction: a travel-time field to the target around the known
+// disks, so a target behind a pillar or a U-shaped group is approached around it, and an
+// unreachable target (inside a disk's zone) is approached to the best reachable standoff.
+//
+// The field phi solves the eikonal equation |grad phi| = f on a grid aligned to the world
+// (first-order fast marching from the target's cell), with a slowness f that is 1 in free
+// space, rises to 3 over `margin` outside each zone (|p - c_j| - R_eff - r_j) and to 20
+// inside it: a continuous function of the geometry. Paths may cross a zone (at 20 times the
+// cost), so phi is finite everywhere and the field has one minimum, the target: no local
+// minima, hence no traps; a target inside a zone pulls toward the zone's boundary point
+// nearest to it, where the safety filter holds the robot.
+//
+// The direction at p_r is -grad phi / max(1, |grad phi|), grad phi from central differences
+// at the nodes, interpolated bilinearly: continuous in p_r. It is blended with the straight
+// direction e_hat by beta = clamp(1 - q / margin, 0, 1), q the least clearance of the segment
+// p_r -> p_d from the zones: with a clear line of sight (q >= margin) the direction is e_hat
+// exactly and no field is computed.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "amigobot_tracking/core/types.h"
+
+namespace amigobot_tracking {
+namespace core {
+
+struct NavigationFieldConfig {
+  double robot_radius = 0.48;  // R_eff [m]
+  double margin = 0.1;         // [m] width of the slowness ramp and of the line-of-sight blend
+  double cell = 0.05;          // [m] grid spacing
+  double padding = 2.5;        // [m] the grid spans p_r and p_d plus this on every side
+  double max_extent = 24.0;    // [m] at most this wide and tall (centred on p_r)
+};
+
+struct NavigationDirection {
+  Eigen::Vector2d direction = Eigen::Vector2d::Zero();  // |direction| <= 1
+  double blend = 0.0;       // beta: 0 straight at the target, 1 the field's direction
+  bool field_used = false;  // the field was computed (beta > 0)
+  int accepted_nodes = 0;   // fast-marching work (0 without the field)
+};
+
+// Least clearance of the segment [a, b] from the zones (|x - c_j| - R_eff - r_j); +inf without disks.
+double segmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::vector<Disk>& obstacles,
+                        double robot_radius);
+
+// The slowness f(x) of the field (1 in free space).
+double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
+
+NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
+                                        const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
+
+}  // namespace core
+}  // namespace amigobot_tracking

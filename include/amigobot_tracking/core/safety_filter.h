@@ -1,0 +1,67 @@
+// The recommended law's safety filter: the command closest to a nominal one that stays inside
+// the diamond and keeps every disk's control-barrier condition, as a small QP solved exactly.
+//
+// Decision (v, w, s), s >= 0 a slack shared by the barrier rows so the QP is always feasible:
+//   minimise  (v - v_n)^2 + r^2 (w - w_n)^2 + slack_weight s^2
+//             (= |G(th) (u - u_n)|^2: the offset point's velocity error, G of (8))
+//   subject to  |v|/v_bar + |w|/w_bar <= 1                    (the diamond's four edges)
+//               n_j^T (G u - v_j) >= -gamma (h_j - m) - s      (one row per disk j)
+// with h_j = |p_r - c_j| - (R_eff + r_j) the clearance of the offset point's disk, n_j its
+// outward normal, v_j the disk's velocity and m = min_margin. The objective is strictly
+// convex, so the minimiser is unique and continuous in the state and in the geometry; a disk
+// whose row cannot bind inside the diamond (gamma (h_j - m) - n_j^T v_j >= the diamond's
+// largest |G u|) is left out, which changes nothing, so there is no detection threshold.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "amigobot_tracking/core/diamond.h"
+#include "amigobot_tracking/core/types.h"
+
+namespace amigobot_tracking {
+namespace core {
+
+// A convex QP in three variables: minimise sum_i weight_i (x_i - target_i)^2 subject to
+// rows a^T x <= b. Solved by enumerating active sets of at most three rows (the minimiser is
+// the equality-constrained minimiser of some such set): the feasible candidate of least cost.
+struct SmallQp {
+  Eigen::Vector3d weight = Eigen::Vector3d::Ones();  // > 0
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> a;
+  std::vector<double> b;
+};
+struct SmallQpResult {
+  bool solved = false;  // false: no feasible candidate (the rows contradict each other)
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  double cost = 0.0;
+};
+SmallQpResult solveSmallQp(const SmallQp& qp, double tolerance = 1e-9);
+
+struct SafetyFilterInput {
+  Pose2 pose;
+  double offset = 0.3;          // r [m]
+  double robot_radius = 0.48;   // R_eff [m]
+  double gamma = 2.0;           // [1/s] barrier rate
+  double min_margin = 1e-3;     // m [m]: the barrier keeps h_j >= m
+  bool obstacle_velocities = false;  // use Disk::velocity in the rows
+  Twist2 nominal;
+};
+
+struct SafetyFilterResult {
+  bool solved = false;
+  Twist2 u;                // inside the diamond
+  double slack = 0.0;      // > 0 only when the barrier rows could not all hold
+  int rows = 0;            // barrier rows that entered the QP
+  int active = 0;          // barrier rows active at the solution
+};
+
+// The slack's weight: large, so a slack appears only where nothing else is feasible.
+constexpr double kSafetySlackWeight = 1e6;
+
+SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& diamond,
+                                const std::vector<Disk>& obstacles);
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,164 @@
+#include "amigobot_tracking/core/navigation_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+namespace amigobot_tracking {
+namespace core {
+namespace {
+
+constexpr double kBandSlowness = 3.0;  // at a zone's boundary, from outside
+constexpr double kZoneSlowness = 20.0; // deep inside a zone
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The grid: nodes at (i0 + i, j0 + j) * cell, i in [0, nx), j in [0, ny).
+struct Grid {
+  double cell;
+  long i0, j0;
+  int nx, ny;
+  std::vector<double> phi, slowness;
+  std::vector<char> accepted;
+  int index(int i, int j) const { return j * nx + i; }
+  Eigen::Vector2d position(int i, int j) const { return {(i0 + i) * cell, (j0 + j) * cell}; }
+  bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < nx && j < ny; }
+};
+
+// The first-order upwind update of node (i, j) from its accepted neighbours.
+double upwind(const Grid& g, int i, int j) {
+  auto value = [&](int a, int b) {
+    return g.inside(a, b) && g.accepted[g.index(a, b)] ? g.phi[g.index(a, b)] : kInf;
+  };
+  const double a = std::min(value(i - 1, j), value(i + 1, j));
+  const double b = std::min(value(i, j - 1), value(i, j + 1));
+  const double step = g.slowness[g.index(i, j)] * g.cell;
+  const double lo = std::min(a, b);
+  if (!std::isfinite(lo)) return kInf;
+  const double hi = std::max(a, b);
+  if (!std::isfinite(hi) || hi - lo >= step) return lo + step;
+  // (phi - a)^2 + (phi - b)^2 = step^2, the larger root.
+  return 0.5 * (a + b + std::sqrt(2.0 * step * step - (a - b) * (a - b)));
+}
+
+}  // namespace
+
+double segmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::vector<Disk>& obstacles,
+                        double robot_radius) {
+  double least = kInf;
+  const Eigen::Vector2d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  for (const Disk& o : obstacles) {
+    const double s = length2 > 0.0 ? std::clamp((o.center - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    least = std::min(least, (a + s * ab - o.center).norm() - robot_radius - o.radius);
+  }
+  return least;
+}
+
+double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacles, const NavigationFieldConfig& config) {
+  double f = 1.0;
+  for (const Disk& o : obstacles) {
+    const double h = (x - o.center).norm() - config.robot_radius - o.radius;
+    if (h >= config.margin) continue;
+    const double outside = 1.0 - std::max(h, 0.0) / config.margin;  // 0 at the ramp's edge, 1 at the boundary
+    double value = 1.0 + (kBandSlowness - 1.0) * outside * outside;
+    if (h < 0.0) value += (kZoneSlowness - kBandSlowness) * std::min(1.0, -2.0 * h / config.margin);
+    f = std::max(f, value);
+  }
+  return f;
+}
+
+NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
+                                        const std::vector<Disk>& obstacles, const NavigationFieldConfig& config) {
+  NavigationDirection out;
+  const Eigen::Vector2d e = p_d - p_r;
+  const Eigen::Vector2d e_hat = e.norm() > 1e-12 ? Eigen::Vector2d(e / e.norm()) : Eigen::Vector2d::Zero();
+  const double q = segmentClearance(p_r, p_d, obstacles, config.robot_radius);
+  out.blend = std::clamp(1.0 - q / config.margin, 0.0, 1.0);
+  out.direction = e_hat;
+  if (out.blend <= 0.0) return out;
+
+  // The grid, aligned to multiples of the cell so it does not shift with the robot.
+  const double c = config.cell;
+  const double half = 0.5 * config.max_extent;
+  const Eigen::Vector2d pad = Eigen::Vector2d::Constant(config.padding), reach = Eigen::Vector2d::Constant(half);
+  const Eigen::Vector2d lo = (p_r.cwiseMin(p_d) - pad).cwiseMax(p_r - reach);
+  const Eigen::Vector2d hi = (p_r.cwiseMax(p_d) + pad).cwiseMin(p_r + reach);
+  Grid g;
+  g.cell = c;
+  g.i0 = static_cast<long>(std::floor(lo.x() / c));
+  g.j0 = static_cast<long>(std::floor(lo.y() / c));
+  g.nx = static_cast<int>(std::ceil(hi.x() / c) - g.i0) + 1;
+  g.ny = static_cast<int>(std::ceil(hi.y() / c) - g.j0) + 1;
+  const size_t nodes = static_cast<size_t>(g.nx) * g.ny;
+  g.phi.assign(nodes, kInf);
+  g.slowness.resize(nodes);
+  g.accepted.assign(nodes, 0);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) g.slowness[g.index(i, j)] = fieldSlowness(g.position(i, j), obstacles, config);
+
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> trial;
+  // Seeds: the nodes around the target (clamped into the grid) at their exact straight
+  // distance times the target's slowness, so phi moves continuously with the target.
+  const double target_slowness = fieldSlowness(p_d, obstacles, config);
+  const int ti = static_cast<int>(std::floor(p_d.x() / c) - g.i0), tj = static_cast<int>(std::floor(p_d.y() / c) - g.j0);
+  for (int j = tj - 1; j <= tj + 2; ++j)
+    for (int i = ti - 1; i <= ti + 2; ++i) {
+      if (!g.inside(i, j)) continue;
+      const double value = target_slowness * (g.position(i, j) - p_d).norm();
+      g.phi[g.index(i, j)] = value;
+      trial.emplace(value, g.index(i, j));
+    }
+  if (trial.empty()) return out;  // the target beyond max_extent: head straight for it
+  // March until the 6 x 6 nodes around p_r's cell (its corners and their neighbours) are final.
+  const int ri = static_cast<int>(std::floor(p_r.x() / c) - g.i0), rj = static_cast<int>(std::floor(p_r.y() / c) - g.j0);
+  int needed = 0;
+  for (int j = rj - 2; j <= rj + 3; ++j)
+    for (int i = ri - 2; i <= ri + 3; ++i) needed += g.inside(i, j) ? 1 : 0;
+  auto nearRobot = [&](int i, int j) { return i >= ri - 2 && i <= ri + 3 && j >= rj - 2 && j <= rj + 3; };
+  while (!trial.empty() && needed > 0) {
+    const auto [value, k] = trial.top();
+    trial.pop();
+    if (g.accepted[k] || value > g.phi[k]) continue;
+    g.accepted[k] = 1;
+    ++out.accepted_nodes;
+    const int i = k % g.nx, j = k / g.nx;
+    if (nearRobot(i, j)) --needed;
+    const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
+    for (int n = 0; n < 4; ++n) {
+      const int a = i + di[n], b = j + dj[n];
+      if (!g.inside(a, b) || g.accepted[g.index(a, b)]) continue;
+      const double candidate = upwind(g, a, b);
+      if (candidate < g.phi[g.index(a, b)]) {
+        g.phi[g.index(a, b)] = candidate;
+        trial.emplace(candidate, g.index(a, b));
+      }
+    }
+  }
+  auto phiAt = [&](int i, int j) {
+    i = std::clamp(i, 0, g.nx - 1);
+    j = std::clamp(j, 0, g.ny - 1);
+    return g.phi[g.index(i, j)];
+  };
+  // Central differences at a node (one-sided at the grid's edge).
+  auto gradientAt = [&](int i, int j) {
+    const int il = std::max(i - 1, 0), ih = std::min(i + 1, g.nx - 1);
+    const int jl = std::max(j - 1, 0), jh = std::min(j + 1, g.ny - 1);
+    return Eigen::Vector2d((phiAt(ih, j) - phiAt(il, j)) / ((ih - il) * c),
+                           (phiAt(i, jh) - phiAt(i, jl)) / ((jh - jl) * c));
+  };
+  const double fx = p_r.x() / c - (g.i0 + ri), fy = p_r.y() / c - (g.j0 + rj);
+  const Eigen::Vector2d gradient = (1 - fx) * (1 - fy) * gradientAt(ri, rj) + fx * (1 - fy) * gradientAt(ri + 1, rj) +
+                                   (1 - fx) * fy * gradientAt(ri, rj + 1) + fx * fy * gradientAt(ri + 1, rj + 1);
+  out.field_used = true;
+  Eigen::Vector2d field_direction = Eigen::Vector2d::Zero();
+  if (gradient.allFinite()) field_direction = -gradient / std::max(1.0, gradient.norm());
+  out.direction = (1.0 - out.blend) * e_hat + out.blend * field_direction;
+  return out;
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,67 @@
+#include "amigobot_tracking/core/recommended_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "amigobot_tracking/core/navigation_field.h"
+#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/prescribed_performance.h"
+#include "amigobot_tracking/core/safety_filter.h"
+
+namespace amigobot_tracking {
+namespace core {
+
+RecommendedCommand recommendedCommand(const ControllerConfig& config, const DiamondSet& diamond,
+                                      const RecommendedInput& in, const std::vector<Disk>& obstacles) {
+  RecommendedCommand out;
+  const double radius = config.effectiveRadius();
+  const double error_norm = in.e.norm();
+  const double xi = error_norm / in.rho;
+  const Eigen::Vector2d e_hat = error_norm > 1e-12 ? Eigen::Vector2d(in.e / error_norm) : Eigen::Vector2d::Zero();
+  const double pull = config.k_d * transformT(xi) + config.lambda * (in.rho - config.rho_inf) * xi;
+  out.u_track = pull * e_hat + in.v_hat;
+
+  NavigationFieldConfig field;
+  field.robot_radius = radius;
+  field.margin = config.field_margin;
+  const NavigationDirection nav = navigationDirection(in.p_r, in.p_r + in.e, obstacles, field);
+  out.direction = nav.direction;
+  out.blend = nav.blend;
+  const double feed_forward = std::clamp(nav.direction.dot(e_hat), 0.0, 1.0);
+  out.u_nom = pull * nav.direction + (error_norm > 1e-12 ? feed_forward : 1.0) * in.v_hat;
+
+  const Eigen::Vector2d heading(std::cos(in.pose.theta), std::sin(in.pose.theta));
+  out.u_nominal = offsetVelocityToTwist(out.u_nom, heading, config.offset);
+  if (!out.u_nominal.isFinite()) return out;
+  SafetyFilterInput filter;
+  filter.pose = in.pose;
+  filter.offset = config.offset;
+  filter.robot_radius = radius;
+  filter.gamma = config.barrier_rate;
+  filter.min_margin = config.min_margin;
+  filter.obstacle_velocities = config.moving_obstacles;
+  filter.nominal = out.u_nominal;
+  const SafetyFilterResult safe = safetyFilter(filter, diamond, obstacles);
+  if (!safe.solved || !safe.u.isFinite()) return out;
+  out.valid = true;
+  out.u = safe.u;
+  out.slack = safe.slack;
+  out.barrier_rows = safe.rows;
+  out.active_barriers = safe.active;
+  const Eigen::Vector2d applied = safe.u.v * heading + config.offset * safe.u.omega * Eigen::Vector2d(-heading.y(), heading.x());
+  out.shortfall = std::max(0.0, e_hat.dot(out.u_track - applied));
+  out.relaxation = (1.0 + config.k_r) * xi * xi * out.shortfall;
+  out.min_clearance = std::numeric_limits<double>::infinity();
+  for (const Disk& o : obstacles)
+    out.min_clearance = std::min(out.min_clearance, (in.p_r - o.center).norm() - radius - o.radius);
+  return out;
+}
+
+double recommendedRhoStep(const ControllerConfig& config, double rho, double relaxation, double h) {
+  const double decayed = config.rho_inf + (rho - config.rho_inf) * std::exp(-config.lambda * h);
+  return decayed + std::min(h, config.max_relaxation_interval) * relaxation;
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking

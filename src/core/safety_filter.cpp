@@ -1,0 +1,130 @@
+#include "amigobot_tracking/core/safety_filter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+
+namespace amigobot_tracking {
+namespace core {
+namespace {
+
+double costOf(const SmallQp& qp, const Eigen::Vector3d& x) {
+  return qp.weight.dot((x - qp.target).cwiseAbs2());
+}
+
+bool feasible(const SmallQp& qp, const Eigen::Vector3d& x, double tolerance) {
+  for (size_t i = 0; i < qp.a.size(); ++i)
+    if (qp.a[i].dot(x) > qp.b[i] + tolerance * (1.0 + std::abs(qp.b[i]))) return false;
+  return true;
+}
+
+// The minimiser with the rows `rows` held as equalities: x = target - W^-1 A^T mu with
+// (A W^-1 A^T) mu = A target - b. False when the rows are (nearly) dependent.
+bool equalityMinimiser(const SmallQp& qp, const int* rows, int count, Eigen::Vector3d* x) {
+  const Eigen::Vector3d inverse_weight = qp.weight.cwiseInverse();
+  if (count == 0) {
+    *x = qp.target;
+    return true;
+  }
+  Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Vector3d& ai = qp.a[rows[i]];
+    rhs(i) = ai.dot(qp.target) - qp.b[rows[i]];
+    for (int j = 0; j < count; ++j) m(i, j) = ai.cwiseProduct(inverse_weight).dot(qp.a[rows[j]]);
+  }
+  const Eigen::MatrixXd block = m.topLeftCorner(count, count);
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(block);
+  if (lu.rank() < count) return false;
+  const Eigen::VectorXd mu = lu.solve(rhs.head(count));
+  *x = qp.target;
+  for (int i = 0; i < count; ++i) *x -= mu(i) * qp.a[rows[i]].cwiseProduct(inverse_weight);
+  return true;
+}
+
+}  // namespace
+
+SmallQpResult solveSmallQp(const SmallQp& qp, double tolerance) {
+  SmallQpResult best;
+  best.cost = std::numeric_limits<double>::infinity();
+  const int m = static_cast<int>(qp.a.size());
+  auto consider = [&](const int* rows, int count) {
+    Eigen::Vector3d x;
+    if (!equalityMinimiser(qp, rows, count, &x) || !feasible(qp, x, tolerance)) return;
+    const double cost = costOf(qp, x);
+    if (cost < best.cost) {
+      best.solved = true;
+      best.cost = cost;
+      best.x = x;
+    }
+  };
+  consider(nullptr, 0);
+  if (best.solved) return best;  // the unconstrained minimiser is feasible: it is the answer
+  for (int i = 0; i < m; ++i) {
+    int one[1] = {i};
+    consider(one, 1);
+    for (int j = i + 1; j < m; ++j) {
+      int two[2] = {i, j};
+      consider(two, 2);
+      for (int k = j + 1; k < m; ++k) {
+        int three[3] = {i, j, k};
+        consider(three, 3);
+      }
+    }
+  }
+  return best;
+}
+
+SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& diamond,
+                                const std::vector<Disk>& obstacles) {
+  const double r = in.offset;
+  const Eigen::Vector2d heading(std::cos(in.pose.theta), std::sin(in.pose.theta));
+  const Eigen::Vector2d side(-heading.y(), heading.x());
+  const Eigen::Vector2d p_r = in.pose.position() + r * heading;
+  SmallQp qp;
+  qp.weight = Eigen::Vector3d(1.0, r * r, kSafetySlackWeight);
+  qp.target = Eigen::Vector3d(in.nominal.v, in.nominal.omega, 0.0);
+  // The diamond's four edges, and s >= 0.
+  for (double sv : {-1.0, 1.0})
+    for (double sw : {-1.0, 1.0}) {
+      qp.a.emplace_back(sv / diamond.vMax(), sw / diamond.wMax(), 0.0);
+      qp.b.push_back(1.0);
+    }
+  qp.a.emplace_back(0.0, 0.0, -1.0);
+  qp.b.push_back(0.0);
+  // |G u| inside the diamond is at most max(v_bar, r w_bar) (|G u|^2 = v^2 + r^2 w^2, convex,
+  // largest at a vertex).
+  const double reach = std::max(diamond.vMax(), r * diamond.wMax());
+  SafetyFilterResult result;
+  for (const Disk& o : obstacles) {
+    Eigen::Vector2d away = p_r - o.center;
+    double distance = away.norm();
+    if (distance < 1e-9) {  // on the centre: back off along -heading
+      away = -heading;
+      distance = 1.0;
+    }
+    const Eigen::Vector2d n = away / distance;
+    const double h = away.norm() - (in.robot_radius + o.radius);
+    const double bound = in.gamma * (h - in.min_margin) - (in.obstacle_velocities ? n.dot(o.velocity) : 0.0);
+    if (bound >= reach) continue;  // cannot bind inside the diamond
+    // -n^T G u - s <= gamma (h - m) - n^T v_j, with G u = v heading + r w side.
+    qp.a.emplace_back(-n.dot(heading), -r * n.dot(side), -1.0);
+    qp.b.push_back(bound);
+    ++result.rows;
+  }
+  const SmallQpResult solution = solveSmallQp(qp);
+  if (!solution.solved) return result;
+  result.solved = true;
+  result.u = {solution.x(0), solution.x(1)};
+  result.slack = std::max(0.0, solution.x(2));
+  for (size_t i = 5; i < qp.a.size(); ++i)
+    if (qp.a[i].dot(solution.x) > qp.b[i] - 1e-9 * (1.0 + std::abs(qp.b[i]))) ++result.active;
+  // Round-off may leave the vertex a hair outside the diamond: scale it back (sigma of (12)).
+  if (const auto inside = diamond.saturate(result.u)) result.u = *inside;
+  return result;
+}
+
+}  // namespace core
+}  // namespace amigobot_tracking

@@ -1,0 +1,139 @@
+// The recommended law's safety filter (core/safety_filter.h): the exact small QP against a
+// brute-force search, its constraints, and the continuity of its command in the geometry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "amigobot_tracking/core/safety_filter.h"
+
+using namespace amigobot_tracking::core;
+
+namespace {
+
+struct Instance {
+  SafetyFilterInput in;
+  std::vector<Disk> disks;
+};
+
+Instance randomInstance(std::mt19937& rng) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Instance k;
+  k.in.pose = {unit(rng), unit(rng), M_PI * unit(rng)};
+  k.in.offset = 0.3;
+  k.in.robot_radius = 0.48;
+  k.in.gamma = 2.0;
+  k.in.nominal = {0.6 * unit(rng), 1.6 * unit(rng)};
+  const int disks = 1 + static_cast<int>(rng() % 4);
+  const Eigen::Vector2d p_r = k.in.pose.position() + 0.3 * Eigen::Vector2d(std::cos(k.in.pose.theta), std::sin(k.in.pose.theta));
+  for (int j = 0; j < disks; ++j) {
+    Disk d;
+    d.radius = 0.1 + 0.2 * (unit(rng) + 1.0) / 2.0;
+    const double angle = M_PI * unit(rng);
+    const double clearance = 0.15 * (unit(rng) + 1.0);  // 0 .. 0.3 m: rows that bind
+    d.center = p_r + (k.in.robot_radius + d.radius + clearance) * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    k.disks.push_back(d);
+  }
+  return k;
+}
+
+// The cost of (v, w) with the least slack that makes every barrier row hold; +inf outside the diamond.
+double bruteCost(const Instance& k, const DiamondSet& diamond, double v, double w) {
+  if (std::abs(v) / diamond.vMax() + std::abs(w) / diamond.wMax() > 1.0) return INFINITY;
+  const Eigen::Vector2d heading(std::cos(k.in.pose.theta), std::sin(k.in.pose.theta));
+  const Eigen::Vector2d side(-heading.y(), heading.x());
+  const Eigen::Vector2d p_r = k.in.pose.position() + k.in.offset * heading;
+  const Eigen::Vector2d u_r = v * heading + k.in.offset * w * side;
+  double slack = 0.0;
+  for (const Disk& d : k.disks) {
+    const Eigen::Vector2d n = (p_r - d.center).normalized();
+    const double h = (p_r - d.center).norm() - k.in.robot_radius - d.radius;
+    slack = std::max(slack, -k.in.gamma * (h - k.in.min_margin) - n.dot(u_r));
+  }
+  const double dv = v - k.in.nominal.v, dw = w - k.in.nominal.omega;
+  return dv * dv + k.in.offset * k.in.offset * dw * dw + kSafetySlackWeight * slack * slack;
+}
+
+}  // namespace
+
+TEST(SafetyFilter, MatchesABruteForceSearchOnRandomInstances) {
+  std::mt19937 rng(7);
+  const DiamondSet diamond(0.3, 0.8);
+  for (int trial = 0; trial < 60; ++trial) {
+    const Instance k = randomInstance(rng);
+    const SafetyFilterResult r = safetyFilter(k.in, diamond, k.disks);
+    ASSERT_TRUE(r.solved) << trial;
+    ASSERT_TRUE(diamond.contains(r.u, 1e-9)) << trial;
+    const double mine = bruteCost(k, diamond, r.u.v, r.u.omega);
+    double best = INFINITY, best_v = 0.0, best_w = 0.0;
+    const int n = 300;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const double v = diamond.vMax() * (2.0 * i / n - 1.0), w = diamond.wMax() * (2.0 * j / n - 1.0);
+        const double c = bruteCost(k, diamond, v, w);
+        if (c < best) best = c, best_v = v, best_w = w;
+      }
+    // No grid point beats the exact solution, and the grid's best lies next to it.
+    EXPECT_LE(mine, best + 1e-9) << trial;
+    EXPECT_NEAR(r.u.v, best_v, 0.01) << trial;
+    EXPECT_NEAR(r.u.omega, best_w, 0.03) << trial;
+  }
+}
+
+TEST(SafetyFilter, KeepsTheNominalCommandWhenNothingBinds) {
+  SafetyFilterInput in;
+  in.nominal = {0.1, 0.2};
+  const SafetyFilterResult r = safetyFilter(in, DiamondSet(0.3, 0.8), {Disk{Eigen::Vector2d(5.0, 0.0), 0.3, Eigen::Vector2d::Zero()}});
+  ASSERT_TRUE(r.solved);
+  EXPECT_DOUBLE_EQ(r.u.v, 0.1);
+  EXPECT_DOUBLE_EQ(r.u.omega, 0.2);
+  EXPECT_EQ(r.rows, 0);  // the far disk cannot bind inside the diamond
+}
+
+TEST(SafetyFilter, StopsTheApproachAtTheBarrierAndNeedsNoSlackForStaticDisks) {
+  SafetyFilterInput in;  // p_r at (0.3, 0), heading +x, a disk straight ahead 1 cm from contact
+  in.nominal = {0.3, 0.0};
+  const Disk disk{Eigen::Vector2d(0.3 + 0.48 + 0.2 + 0.01, 0.0), 0.2, Eigen::Vector2d::Zero()};
+  const SafetyFilterResult r = safetyFilter(in, DiamondSet(0.3, 0.8), {disk});
+  ASSERT_TRUE(r.solved);
+  // clearance' = -gamma (h - m), up to the penalised slack: about |du| / slack_weight.
+  EXPECT_NEAR(r.u.v, in.gamma * (0.01 - in.min_margin), 1e-6);
+  EXPECT_NEAR(r.u.omega, 0.0, 1e-9);
+  EXPECT_LT(r.slack, 1e-6);
+  EXPECT_EQ(r.active, 1);
+}
+
+// A disk sweeping in from far away, then a second disk joining it: the command never jumps.
+TEST(SafetyFilter, CommandIsContinuousAsADiskAppearsAndJoinsAnother) {
+  SafetyFilterInput in;
+  in.nominal = {0.25, 0.3};
+  const DiamondSet diamond(0.3, 0.8);
+  Twist2 last;
+  bool first = true;
+  double largest_jump = 0.0;
+  for (double x = 2.5; x >= 1.0; x -= 0.0005) {
+    const std::vector<Disk> disks = {Disk{Eigen::Vector2d(x, 0.1), 0.2, Eigen::Vector2d::Zero()},
+                                     Disk{Eigen::Vector2d(x + 0.2, 0.9 * (x - 1.0) - 0.6), 0.2, Eigen::Vector2d::Zero()}};
+    const SafetyFilterResult r = safetyFilter(in, diamond, disks);
+    ASSERT_TRUE(r.solved);
+    if (!first) largest_jump = std::max(largest_jump, std::hypot(r.u.v - last.v, 0.3 * (r.u.omega - last.omega)));
+    last = r.u;
+    first = false;
+  }
+  // Lipschitz in the geometry: a 0.5 mm move changes |G du| by well under 1 cm/s.
+  EXPECT_LT(largest_jump, 0.005);
+}
+
+TEST(SafetyFilter, SlackKeepsItFeasibleWhenAMovingDiskCannotBeOutrun) {
+  SafetyFilterInput in;
+  in.obstacle_velocities = true;
+  in.nominal = {0.0, 0.0};
+  // Two disks closing in from both sides faster than the diamond allows to escape.
+  const std::vector<Disk> disks = {Disk{Eigen::Vector2d(0.3, 0.75), 0.2, Eigen::Vector2d(0.0, -1.0)},
+                                   Disk{Eigen::Vector2d(0.3, -0.75), 0.2, Eigen::Vector2d(0.0, 1.0)}};
+  const SafetyFilterResult r = safetyFilter(in, DiamondSet(0.3, 0.8), disks);
+  ASSERT_TRUE(r.solved);
+  EXPECT_GT(r.slack, 0.0);
+  EXPECT_TRUE(DiamondSet(0.3, 0.8).contains(r.u, 1e-9));
+}
