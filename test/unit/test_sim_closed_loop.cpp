@@ -192,6 +192,39 @@ TEST(MonteCarlo, SummaryCountsEveryRun) {
   EXPECT_NE(json.find("\"worst_min_clearance_body\""), std::string::npos);
 }
 
+// --jobs: the variants run on threads, the summary is the same for any number of them; the
+// noise and the sample rate are drawn per variant when asked, and the failure figures summarised.
+TEST(MonteCarlo, ThreadsChangeNothingAndNoiseAndRateVary) {
+  sim::MonteCarloOptions options;
+  options.runs = 6;
+  options.noise_std_max = 0.03;
+  options.sample_periods = {0.05, 0.1};
+  const sim::Scenario base = shipped("paper_5_2_rose", 0.5);
+  sim::MonteCarloSummary one = sim::summarizeMonteCarlo(base, options);
+  options.jobs = 3;
+  sim::MonteCarloSummary three = sim::summarizeMonteCarlo(base, options);
+  ASSERT_EQ(one.per_run.size(), three.per_run.size());
+  for (size_t i = 0; i < one.per_run.size(); ++i) {
+    EXPECT_EQ(one.per_run[i].metrics.true_ase, three.per_run[i].metrics.true_ase) << i;
+    EXPECT_EQ(one.per_run[i].initial_pose.x, three.per_run[i].initial_pose.x) << i;
+  }
+  EXPECT_EQ(one.mean_true_ase, three.mean_true_ase);
+  EXPECT_GE(one.worst_true_ase, one.mean_true_ase);
+  const nlohmann::json j = nlohmann::json::parse(sim::runMonteCarlo(base, options));
+  for (const char* key : {"worst_orbit_turns", "worst_escape_toggles", "worst_avoidance_toggles", "worst_true_ise",
+                          "worst_max_delta_v", "diamond_violations", "nan_steps"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  bool noise_varies = false, rate_varies = false;
+  for (std::uint64_t i = 1; i < 6; ++i) {
+    const sim::Scenario a = sim::randomVariant(base, options, 0), b = sim::randomVariant(base, options, i);
+    noise_varies = noise_varies || a.setup.sensor.noise_std != b.setup.sensor.noise_std;
+    rate_varies = rate_varies || a.setup.sample_period != b.setup.sample_period;
+    EXPECT_LE(b.setup.sensor.noise_std, 0.03);
+  }
+  EXPECT_TRUE(noise_varies);
+  EXPECT_TRUE(rate_varies);
+}
+
 TEST(SimOutput, MetricsJsonHasEveryKeyTheIssueLists) {
   sim::Scenario s = shipped("paper_5_2_rose", 0.2);
   s.setup.obstacles.clear();  // clearances are then infinite: written as null
