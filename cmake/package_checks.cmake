@@ -16,6 +16,11 @@ if(CATKIN_ENABLE_TESTING)
                      ${PROJECT_SOURCE_DIR}/scripts/test/check_layers.py)
   amigobot_add_check(count_test_results_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_count_test_results.py
                      ${PROJECT_SOURCE_DIR}/scripts/test/count_test_results.py)
+  # No library feature newer than Noetic's toolchain (GCC 9 / libstdc++ 9, Eigen 3.3, Python 3.8):
+  # the list and the reason for each are in the script (--list prints them).
+  amigobot_add_check(cxx_features_noetic ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_cxx_features.py ${PROJECT_SOURCE_DIR})
+  amigobot_add_check(check_cxx_features_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_cxx_features.py
+                     ${PROJECT_SOURCE_DIR}/scripts/test/check_cxx_features.py)
   # Every Makefile target has its one-line `make help` entry (help fails naming one without).
   amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 

@@ -1,8 +1,8 @@
 #include "amigobot_tracking/core/field_table.h"
 
-#include <charconv>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -76,10 +76,15 @@ std::string checkValue(FieldType type, const Bounds& b, const FieldValue& value)
 std::string formatValue(const FieldValue& value) {
   std::ostringstream out;
   if (const double* d = std::get_if<double>(&value)) {
-    // Shortest text that reads back to the same double (0.15, not 0.14999999999999999).
-    char text[64];
-    const std::to_chars_result r = std::to_chars(text, text + sizeof text, *d);
-    out << std::string(text, r.ptr);
+    // The shortest of %.15g, %.16g, %.17g that reads back to the same double (0.15, not
+    // 0.14999999999999999; 17 digits always do). Not std::to_chars: floating-point to_chars
+    // needs libstdc++ 11, Noetic's Ubuntu 20.04 has GCC 9 (scripts/test/check_cxx_features.py).
+    char text[32];
+    for (int digits = 15; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof text, "%.*g", digits, *d);
+      if (std::strtod(text, nullptr) == *d || !std::isfinite(*d)) break;
+    }
+    out << text;
   } else if (const int* i = std::get_if<int>(&value)) {
     out << *i;
   } else if (const bool* b = std::get_if<bool>(&value)) {
