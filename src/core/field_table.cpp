@@ -1,5 +1,7 @@
 #include "amigobot_tracking/core/field_table.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -28,7 +30,43 @@ double asNumber(const FieldValue& v) {
   return 0.0;
 }
 
+// Edits (insert, delete, substitute; case-insensitive) turning a into b.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+bool covers(const std::string& known, const std::string& key) {
+  return key == known || (key.size() > known.size() && key.compare(0, known.size(), known) == 0 && key[known.size()] == '/');
+}
+
 }  // namespace
+
+std::vector<UnknownKey> unknownKeys(const std::vector<std::string>& present, const std::vector<std::string>& known) {
+  std::vector<UnknownKey> out;
+  for (const std::string& key : present) {
+    if (std::any_of(known.begin(), known.end(), [&](const std::string& k) { return covers(k, key); })) continue;
+    UnknownKey u{key, ""};
+    std::size_t best = key.size() / 3 + 1;  // farther than this is no suggestion
+    for (const std::string& k : known) {
+      const std::size_t d = editDistance(key, k);
+      if (d < best) best = d, u.nearest = k;
+    }
+    out.push_back(u);
+  }
+  return out;
+}
 
 std::string typeName(FieldType type) {
   switch (type) {

@@ -120,3 +120,18 @@ TEST(FieldTable, JsonNestsBySlash) {
   const nlohmann::json path = std::string("a \"b\" \\c");
   EXPECT_EQ(nlohmann::json::parse(path.dump()).get<std::string>(), "a \"b\" \\c");
 }
+
+TEST(FieldTable, UnknownKeysNamedWithTheNearestKnownKey) {
+  const std::vector<std::string> known = {"port", "baud", "ticks_mm", "base_frame", "virtual_obstacles"};
+  const std::vector<UnknownKey> u =
+      unknownKeys({"port", "serial_port", "tiks_mm", "virtual_obstacles/0/id", "Baud", "enable_button"}, known);
+  ASSERT_EQ(u.size(), 4u);
+  EXPECT_EQ(u[0].key, "serial_port");
+  EXPECT_EQ(u[0].nearest, "") << "5 edits from port: too far to suggest";
+  EXPECT_EQ(u[1].key, "tiks_mm");
+  EXPECT_EQ(u[1].nearest, "ticks_mm");
+  EXPECT_EQ(u[2].key, "Baud") << "keys are case-sensitive: Baud is not baud";
+  EXPECT_EQ(u[2].nearest, "baud");
+  EXPECT_EQ(u[3].key, "enable_button");
+  EXPECT_TRUE(unknownKeys({"virtual_obstacles_x"}, known).size() == 1u) << "a prefix covers only keys under it";
+}
