@@ -20,12 +20,25 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(clutter_report_quick ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_clutter_report.py
                      ${PROJECT_SOURCE_DIR}/scripts/reports/clutter.py
                      ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/amigobot_sim)
+  # No library feature newer than Noetic's toolchain (GCC 9 / libstdc++ 9, Eigen 3.3, Python 3.8):
+  # the list and the reason for each are in the script (--list prints them).
+  amigobot_add_check(cxx_features_noetic ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_cxx_features.py ${PROJECT_SOURCE_DIR})
+  amigobot_add_check(check_cxx_features_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_cxx_features.py
+                     ${PROJECT_SOURCE_DIR}/scripts/test/check_cxx_features.py)
   # Every Makefile target has its one-line `make help` entry (help fails naming one without).
   amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 
   # Every launch configuration of test/launch_checks.txt, in one process, one test case each.
   catkin_run_tests_target("check" launch_files "check-launch_files.xml"
     COMMAND "${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_launch.py --list ${PROJECT_SOURCE_DIR}/test/launch_checks.txt --root ${PROJECT_SOURCE_DIR} --xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/check-launch_files.xml")
+  # amigobot.launch robot:=NAME: every node, parameter, remapped topic, frame and URDF link of
+  # the robot under NAME (the paper's two robots, each on its own computer; docs/real_robot.md).
+  amigobot_add_check(launch_namespace_tracker ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_launch_namespace.py
+                     ${PROJECT_SOURCE_DIR}/launch/amigobot.launch tracker target_frame:=target/base_footprint laser:=rplidar
+                     laser_port:=/dev/laser localization:=map map_file:=${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
+  amigobot_add_check(launch_namespace_target ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_launch_namespace.py
+                     ${PROJECT_SOURCE_DIR}/launch/amigobot.launch target tracking:=false laser:=sick_tim5xx
+                     laser_port:=192.168.0.2:2112 localization:=map map_file:=${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
   # Maps: the e2e room's map is world_map's drawing of its world (never stale); the shipped
   # lab map, built by SLAM (`make map`), agrees with the lab world (>= 90 % of its occupied
   # cells within 0.1 m of a wall, table or pole).

@@ -39,7 +39,7 @@ if(CATKIN_ENABLE_TESTING)
   add_dependencies(test_tracking_bad_param ${PROJECT_NAME}_generate_messages_cpp)
   # The reader: types checked, ints for reals, errors naming the parameter.
   amigobot_add_rostest_gtest(test_param_reader test/rostest/param_reader.test test/rostest/test_param_reader.cpp)
-  target_link_libraries(test_param_reader amigobot_tracking_ros)
+  target_link_libraries(test_param_reader amigobot_tracking_ros amigobot_tracking_ros_driver)
   # Every table field in config/*.yaml (with its comment), the README's tables and cfg/*.cfg.
   amigobot_add_unit_test(test_param_coverage test/unit/test_param_coverage.cpp)
   target_link_libraries(test_param_coverage amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser amigobot_tracking_localization)

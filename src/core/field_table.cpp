@@ -1,8 +1,10 @@
 #include "amigobot_tracking/core/field_table.h"
 
-#include <charconv>
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -28,7 +30,43 @@ double asNumber(const FieldValue& v) {
   return 0.0;
 }
 
+// Edits (insert, delete, substitute; case-insensitive) turning a into b.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+bool covers(const std::string& known, const std::string& key) {
+  return key == known || (key.size() > known.size() && key.compare(0, known.size(), known) == 0 && key[known.size()] == '/');
+}
+
 }  // namespace
+
+std::vector<UnknownKey> unknownKeys(const std::vector<std::string>& present, const std::vector<std::string>& known) {
+  std::vector<UnknownKey> out;
+  for (const std::string& key : present) {
+    if (std::any_of(known.begin(), known.end(), [&](const std::string& k) { return covers(k, key); })) continue;
+    UnknownKey u{key, ""};
+    std::size_t best = key.size() / 3 + 1;  // farther than this is no suggestion
+    for (const std::string& k : known) {
+      const std::size_t d = editDistance(key, k);
+      if (d < best) best = d, u.nearest = k;
+    }
+    out.push_back(u);
+  }
+  return out;
+}
 
 std::string typeName(FieldType type) {
   switch (type) {
@@ -76,10 +114,15 @@ std::string checkValue(FieldType type, const Bounds& b, const FieldValue& value)
 std::string formatValue(const FieldValue& value) {
   std::ostringstream out;
   if (const double* d = std::get_if<double>(&value)) {
-    // Shortest text that reads back to the same double (0.15, not 0.14999999999999999).
-    char text[64];
-    const std::to_chars_result r = std::to_chars(text, text + sizeof text, *d);
-    out << std::string(text, r.ptr);
+    // The shortest of %.15g, %.16g, %.17g that reads back to the same double (0.15, not
+    // 0.14999999999999999; 17 digits always do). Not std::to_chars: floating-point to_chars
+    // needs libstdc++ 11, Noetic's Ubuntu 20.04 has GCC 9 (scripts/test/check_cxx_features.py).
+    char text[32];
+    for (int digits = 15; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof text, "%.*g", digits, *d);
+      if (std::strtod(text, nullptr) == *d || !std::isfinite(*d)) break;
+    }
+    out << text;
   } else if (const int* i = std::get_if<int>(&value)) {
     out << *i;
   } else if (const bool* b = std::get_if<bool>(&value)) {

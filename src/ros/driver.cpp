@@ -65,10 +65,20 @@ std::string DriverParams::validate() const {
   return client.validate();
 }
 
+const std::vector<ParamAlias>& rosAriaAliases() {
+  // RosAria's private parameter names (odom_frame is the same name): a RosAria config keeps
+  // working, the driver's own names are canonical (docs/ros_api.md).
+  static const std::vector<ParamAlias> aliases = {{"TicksMM", "ticks_mm", "RosAria"},
+                                                  {"DriftFactor", "drift_factor", "RosAria"},
+                                                  {"RevCount", "rev_count", "RosAria"},
+                                                  {"base_link_frame", "base_frame", "RosAria"}};
+  return aliases;
+}
+
 DriverParams loadDriverParams(const ros::NodeHandle& pnh) {
   ROS_INFO_STREAM_NAMED("driver", "driver parameters:");
   DriverParams p;
-  const std::string error = readFields(pnh, driverFields(), &p);
+  const std::string error = readFields(pnh, driverFields(), &p, "", rosAriaAliases());
   if (!error.empty()) throw std::runtime_error(error);
   try {
     p.client.robot = p.robot_params.empty() ? aria::builtinRobotParams(p.robot_model)
@@ -85,7 +95,7 @@ DriverParams loadDriverParams(const ros::NodeHandle& pnh) {
 AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
     : params_(loadDriverParams(pnh)), nh_(nh), pnh_(pnh), updater_(nh, pnh) {
   odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
-  sonar_pub_ = nh_.advertise<sensor_msgs::Range>("sonar", 50);
+  sonar_pub_ = nh_.advertise<sensor_msgs::Range>("sonar_range", 50);
   battery_pub_ = nh_.advertise<std_msgs::Float64>("battery_voltage", 1);
   motors_pub_ = nh_.advertise<std_msgs::Bool>("motors_state", 1, true);
   sonar_cloud_pub_ = nh_.advertise<sensor_msgs::PointCloud2>("sonar_cloud", 1);

@@ -36,7 +36,7 @@ std::vector<bool> bumperBits(std::uint8_t byte, int count) {
 }  // namespace
 
 DriverStateTopics::DriverStateTopics(ros::NodeHandle& nh, std::string base_frame) : base_frame_(std::move(base_frame)) {
-  battery_pub_ = nh.advertise<sensor_msgs::BatteryState>("battery_state", 1);
+  battery_pub_ = nh.advertise<sensor_msgs::BatteryState>("battery", 1);
   stall_pub_ = nh.advertise<amigobot_tracking::WheelStall>("stall", 1, true);
   bumper_pub_ = nh.advertise<amigobot_tracking::Bumpers>("bumper", 1, true);
   estop_pub_ = nh.advertise<std_msgs::Bool>("estop", 1, true);
@@ -57,11 +57,11 @@ void DriverStateTopics::publishBattery(const aria::Sip& sip, double voltage, con
   b.temperature = sip.temperature && *sip.temperature != -127 ? *sip.temperature : nan;  // -127: no sensor
   b.current = b.charge = b.capacity = b.design_capacity = nan;
   b.percentage = sip.state_of_charge ? 0.01f * *sip.state_of_charge : nan;
-  if (!sip.state_of_charge) sayOnce(said_no_soc_, "the firmware reports no state of charge: battery_state.percentage is NaN");
+  if (!sip.state_of_charge) sayOnce(said_no_soc_, "the firmware reports no state of charge: battery.percentage is NaN");
   if (sip.charge_state) {
     b.power_supply_status = supplyStatus(*sip.charge_state);
   } else {
-    sayOnce(said_no_charge_, "the firmware reports no charge state: battery_state.power_supply_status is UNKNOWN");
+    sayOnce(said_no_charge_, "the firmware reports no charge state: battery.power_supply_status is UNKNOWN");
     b.power_supply_status = sensor_msgs::BatteryState::POWER_SUPPLY_STATUS_UNKNOWN;
   }
   b.power_supply_health = sensor_msgs::BatteryState::POWER_SUPPLY_HEALTH_UNKNOWN;

@@ -24,7 +24,12 @@ const core::FieldTable<LaserParams>& laserFields() {
                             core::interval(0.0, true, 60.0, false)),
                       field("stall_timeout", &D::stall_timeout, "s", "no scan for this long: the link is reopened",
                             core::interval(0.0, true, 60.0, false)),
+                      field("baud", &D::baud, "baud", "rplidar: 115200 (A1, A2M8) or 256000 (A2M12, A3); 0: 115200",
+                            core::nonNegative()),
                   });
+    t.push_back(field("angle_convention", &P::angle_convention, "-",
+                      "rplidar: device (0 = the device's 0 deg mark) or rplidar_ros (pi - theta, as rplidar_ros)",
+                      core::oneOf({"device", "rplidar_ros"})));
     t.push_back(field("frame_id", &P::frame_id, "-", "frame of the scans"));
     t.push_back(field("angle_min", &P::angle_min, "rad", "crop: first published beam at or after", core::anyValue()));
     t.push_back(field("angle_max", &P::angle_max, "rad", "crop: last published beam at or before (> angle_min)", core::anyValue()));
@@ -47,6 +52,7 @@ std::string LaserParams::validate() const {
     return e.what();
   }
   if (frame_id.empty()) return "frame_id: empty";
+  if (angle_convention == "rplidar_ros" && driver.model != "rplidar") return "angle_convention: rplidar_ros is for model rplidar";
   if (!(angle_max > angle_min)) return "angle_max: must be > angle_min";
   if (range_max > 0.0 && !(range_max > range_min)) return "range_max: must be > range_min";
   return "";
@@ -59,7 +65,27 @@ LaserParams loadLaserParams(const ros::NodeHandle& pnh) {
   return p;
 }
 
-bool toLaserScan(const sensors::LaserScanData& scan, const LaserParams& params, sensor_msgs::LaserScan* out) {
+namespace {
+
+sensors::LaserScanData halfTurn(const sensors::LaserScanData& scan) {
+  // rplidar_ros's angle pi - theta is the device's -theta turned by pi: on the full-circle grid
+  // [-pi, pi) of an even number of bins, the same grid with its halves swapped.
+  sensors::LaserScanData out = scan;
+  const std::size_t half = scan.ranges.size() / 2;
+  std::rotate(out.ranges.begin(), out.ranges.begin() + static_cast<std::ptrdiff_t>(half), out.ranges.end());
+  if (out.intensities.size() == scan.ranges.size())
+    std::rotate(out.intensities.begin(), out.intensities.begin() + static_cast<std::ptrdiff_t>(half), out.intensities.end());
+  return out;
+}
+
+}  // namespace
+
+bool toLaserScan(const sensors::LaserScanData& device_scan, const LaserParams& params, sensor_msgs::LaserScan* out) {
+  const bool full_circle = std::abs(device_scan.angle_increment * device_scan.ranges.size() - 2.0 * M_PI) < 1e-6;
+  const bool turn = params.angle_convention == "rplidar_ros" && full_circle && device_scan.ranges.size() % 2 == 0;
+  sensors::LaserScanData turned;
+  if (turn) turned = halfTurn(device_scan);
+  const sensors::LaserScanData& scan = turn ? turned : device_scan;
   const int n = static_cast<int>(scan.ranges.size());
   // Beam angles in the published frame: an upside-down mount sees beam i at -angle_i, so the
   // order is reversed to keep the increment positive.

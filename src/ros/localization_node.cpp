@@ -39,12 +39,14 @@ LocalizationNode::LocalizationNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
   pose_pub_ = pnh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 5);
   status_pub_ = nh_.advertise<amigobot_tracking::LocalizationStatus>("localization_status", 5);
+  amcl_pose_pub_ = nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("amcl_pose", 5);
   if (localizer_) publishMap(localizer_->map());
   worker_ = std::thread([this] { workLoop(); });
   tf_thread_ = std::thread([this] { tfLoop(); });
   initial_pose_sub_ = nh_.subscribe("initialpose", 2, &LocalizationNode::onInitialPose, this);
   save_map_srv_ = pnh_.advertiseService("save_map", &LocalizationNode::onSaveMap, this);
   global_srv_ = pnh_.advertiseService("global_localization", &LocalizationNode::onGlobalLocalization, this);
+  amcl_global_srv_ = nh_.advertiseService("global_localization", &LocalizationNode::onAmclGlobalLocalization, this);
   updater_.setHardwareID("none");
   updater_.add("Localization (" + config_.mode + ")", this, &LocalizationNode::diagnose);
   diagnostics_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
@@ -175,6 +177,19 @@ void LocalizationNode::publishPose(const ros::Time& stamp) {
     msg.pose = toPoseWithCovariance(output_.estimate.pose, output_.estimate.covariance);
   }
   pose_pub_.publish(msg);
+  amcl_pose_pub_.publish(msg);
+}
+
+bool LocalizationNode::onAmclGlobalLocalization(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  std_srvs::Trigger::Request request;
+  std_srvs::Trigger::Response response;
+  onGlobalLocalization(request, response);
+  if (response.success) {
+    ROS_INFO_STREAM_NAMED("localization", "global_localization: " << response.message);
+  } else {
+    ROS_WARN_STREAM_NAMED("localization", "global_localization: " << response.message);
+  }
+  return true;
 }
 
 void LocalizationNode::publishStatus(const ros::Time& stamp, const Estimate& estimate) {

@@ -126,6 +126,7 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
   const std::string& description_param = node.robot_description_param;
   const std::string& offset_link = node.urdf_offset_link;
   std::string xml, key;
+  noteParamKey(pnh, description_param);
   // Relative names are searched from ~ upwards (the usual /robot_description, or a namespaced one).
   if (pnh.searchParam(description_param, key) && pnh.getParam(key, xml)) {
     UrdfGeometry urdf;
@@ -168,6 +169,7 @@ std::string loadScanObstacleConfig(const ros::NodeHandle& pnh, core::ScanObstacl
 std::string loadVirtualObstacles(const ros::NodeHandle& pnh, std::vector<core::VirtualObstacle>* list) {
   list->clear();
   XmlRpc::XmlRpcValue value;
+  noteParamKey(pnh, "virtual_obstacles");
   if (!pnh.getParam("virtual_obstacles", value)) {
     ROS_INFO_STREAM_NAMED("tracking", "  " << pnh.resolveName("virtual_obstacles") << " = [] (default)");
     return "";

@@ -38,7 +38,7 @@ class ColaDevice : public LaserDevice {
     std::string host;
     int tcp_port = 0;
     if (!splitTcpAddress(port, &host, &tcp_port)) {
-      throw std::invalid_argument("port: " + model + " needs host:port (CoLa-A over TCP, usually :2111), got '" + port + "'");
+      throw std::invalid_argument("port: " + model + " needs host:port (CoLa-A over TCP: :2111, or :2112 as sick_tim and sick_scan), got '" + port + "'");
     }
     try {
       socket_.connect(host, static_cast<unsigned short>(tcp_port), 2000);

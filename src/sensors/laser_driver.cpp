@@ -29,6 +29,12 @@ void LaserDriverConfig::validate() const {
   if (is_tcp && model == "rplidar") {
     throw std::invalid_argument("port: rplidar (A1/A2) is a serial device: expected e.g. /dev/ttyUSB0, got '" + port + "'");
   }
+  if (baud != 0 && model != "rplidar") {
+    throw std::invalid_argument("baud: only the rplidar's is chosen here (" + model + ": leave it 0), got " + std::to_string(baud));
+  }
+  if (baud != 0 && baud != 115200 && baud != 256000) {
+    throw std::invalid_argument("baud: rplidar runs at 115200 (A1, A2M8) or 256000 (A2M12, A3), got " + std::to_string(baud));
+  }
   if (!(reconnect_period > 0.0 && reconnect_period <= 60.0)) throw std::invalid_argument("reconnect_period: must be within (0, 60] s");
   if (!(stall_timeout > 0.0 && stall_timeout <= 60.0)) throw std::invalid_argument("stall_timeout: must be within (0, 60] s");
 }
@@ -58,7 +64,7 @@ bool LaserDriver::poll(LaserScanData* scan, double timeout) {
       if (config_.model == "hokuyo_urg") {
         device_ = openHokuyo(config_.port);
       } else if (config_.model == "rplidar") {
-        device_ = openRplidar(config_.port);
+        device_ = openRplidar(config_.port, config_.baud == 0 ? 115200 : config_.baud);
       } else {
         device_ = openCola(config_.model, config_.port);
       }

@@ -1,4 +1,4 @@
-// Slamtec RPLIDAR A1/A2 over a serial port (115200 8N1), a client of its own binary protocol
+// Slamtec RPLIDAR A1/A2/A3 over a serial port (115200 8N1; A2M12/A3: 256000), a client of its own binary protocol
 // (rplidar.h). Not MRPT's CRoboPeakLidar: it floors each sample's angle to a whole degree,
 // keeps the last sample of each degree, and hands the 360 bins on as an MRPT scan spread
 // evenly over 2 pi (360 beams, 359 intervals), so the device's angles are lost; its SDK's
@@ -33,9 +33,28 @@ namespace amigobot_tracking {
 namespace sensors {
 namespace {
 
+// 256000 baud has no Bxxx constant: the kernel's termios2 with BOTHER takes any speed
+// (cp210x, the RPLIDAR's adapter, accepts it). <asm/termbits.h> clashes with <termios.h>,
+// hence the kernel's layout restated (asm-generic/termbits.h, NCCS 19).
+struct KernelTermios2 {
+  tcflag_t c_iflag, c_oflag, c_cflag, c_lflag;
+  cc_t c_line;
+  cc_t c_cc[19];
+  speed_t c_ispeed, c_ospeed;
+};
+constexpr tcflag_t kKernelBother = 0010000;  // BOTHER: the speed is c_ispeed/c_ospeed
+
+bool setCustomSpeed(int fd, int baud) {
+  KernelTermios2 t{};
+  if (::ioctl(fd, _IOR('T', 0x2A, KernelTermios2), &t) < 0) return false;  // TCGETS2
+  t.c_cflag = (t.c_cflag & ~static_cast<tcflag_t>(CBAUD)) | kKernelBother;
+  t.c_ispeed = t.c_ospeed = static_cast<speed_t>(baud);
+  return ::ioctl(fd, _IOW('T', 0x2B, KernelTermios2), &t) == 0;  // TCSETS2
+}
+
 class RplidarDevice : public LaserDevice {
  public:
-  explicit RplidarDevice(const std::string& port) : port_(port), model_(laserModel("rplidar")) {
+  RplidarDevice(const std::string& port, int baud) : port_(port), model_(laserModel("rplidar")) {
     fd_ = ::open(port.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
     if (fd_ < 0) throw std::runtime_error("rplidar " + port + ": cannot open: " + std::strerror(errno));
     termios tio{};
@@ -45,6 +64,8 @@ class RplidarDevice : public LaserDevice {
     ::cfsetospeed(&tio, B115200);
     tio.c_cflag |= CLOCAL | CREAD;
     if (::tcsetattr(fd_, TCSANOW, &tio) < 0) throw failure("cannot set 115200 8N1");
+    // LaserDriverConfig::validate allows 115200 and 256000 only.
+    if (baud != 115200 && !setCustomSpeed(fd_, baud)) throw failure("cannot set " + std::to_string(baud) + " baud: " + std::strerror(errno));
     // The A1/A2 USB adapters stop the motor while DTR is set (a pty has no modem lines).
     int dtr = TIOCM_DTR;
     ::ioctl(fd_, TIOCMBIC, &dtr);
@@ -209,7 +230,9 @@ class RplidarDevice : public LaserDevice {
 
 }  // namespace
 
-std::unique_ptr<LaserDevice> openRplidar(const std::string& port) { return std::make_unique<RplidarDevice>(port); }
+std::unique_ptr<LaserDevice> openRplidar(const std::string& port, int baud) {
+  return std::make_unique<RplidarDevice>(port, baud);
+}
 
 }  // namespace sensors
 }  // namespace amigobot_tracking

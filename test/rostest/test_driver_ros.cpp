@@ -102,7 +102,7 @@ TEST(DriverRos, NodeletDrivesTheEmulatorAndReportsEverything) {
     std::lock_guard<std::mutex> l(in.mutex);
     in.battery = m->data;
   });
-  auto sonar_sub = nh.subscribe<sensor_msgs::Range>("sonar", 100, [&](const sensor_msgs::Range::ConstPtr& m) {
+  auto sonar_sub = nh.subscribe<sensor_msgs::Range>("sonar_range", 100, [&](const sensor_msgs::Range::ConstPtr& m) {
     std::lock_guard<std::mutex> l(in.mutex);
     in.sonar_frames.insert(m->header.frame_id);
   });
@@ -119,7 +119,7 @@ TEST(DriverRos, NodeletDrivesTheEmulatorAndReportsEverything) {
         }
       });
   auto battery_state_sub = nh.subscribe<sensor_msgs::BatteryState>(
-      "battery_state", 10, [&](const sensor_msgs::BatteryState::ConstPtr& m) {
+      "battery", 10, [&](const sensor_msgs::BatteryState::ConstPtr& m) {
         std::lock_guard<std::mutex> l(in.mutex);
         in.battery_state = *m;
         ++in.battery_states;

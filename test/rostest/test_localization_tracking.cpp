@@ -12,6 +12,7 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nodelet/loader.h>
+#include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/buffer.h>
@@ -72,6 +73,9 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
   });
   ros::Subscriber pose_sub = nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
       "/localization/pose", 10, [&](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr&) { ++poses; });
+  std::atomic<int> amcl_poses{0};  // amcl's name for the same pose
+  ros::Subscriber amcl_pose_sub = nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+      "/amcl_pose", 10, [&](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) { amcl_poses += m->header.frame_id == "map"; });
   std::mutex diagnostics_mutex;
   std::string diagnostics;
   ros::Subscriber diag_sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
@@ -102,6 +106,7 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
   EXPECT_GE(rate, 20.0);
   EXPECT_GT(future_stamps.load(), map_to_odom.load() / 2);
   EXPECT_GT(poses.load(), 10);
+  EXPECT_GT(amcl_poses.load(), 10) << "amcl_pose";
 
   // /initialpose moves the estimate at once (scans paused so that ICP does not undo it) ...
   robot.scans(false);
@@ -130,6 +135,14 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
   ASSERT_TRUE(ros::service::call("/localization/global_localization", trigger));
   EXPECT_TRUE(trigger.response.success) << trigger.response.message;
   EXPECT_TRUE(f.near(kidnapped, 0.05, 0.03, 5.0)) << "after ~global_localization: " << trigger.response.message;
+  // amcl's global_localization (std_srvs/Empty, in the node's namespace) does the same.
+  const Pose2 kidnapped_again{1.0, 1.2, 1.5};
+  robot.teleport(kidnapped_again);
+  ros::WallDuration(1.0).sleep();
+  std_srvs::Empty empty;
+  ASSERT_TRUE(ros::service::waitForService("/global_localization", ros::Duration(5.0)));
+  ASSERT_TRUE(ros::service::call("/global_localization", empty));
+  EXPECT_TRUE(f.near(kidnapped_again, 0.05, 0.03, 5.0)) << "after amcl's global_localization";
   // Mapping's service is refused in this mode, naming why.
   std_srvs::Trigger save;
   ASSERT_TRUE(ros::service::call("/localization/save_map", save));
@@ -140,7 +153,7 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
   {
     std::lock_guard<std::mutex> lock(diagnostics_mutex);
     EXPECT_NE(diagnostics.find("localized"), std::string::npos) << diagnostics;
-    EXPECT_NE(diagnostics.find("relocalisations=1"), std::string::npos) << diagnostics;
+    EXPECT_NE(diagnostics.find("relocalisations=2"), std::string::npos) << diagnostics;
   }
   EXPECT_TRUE(loader.unload("/localization"));
   std::filesystem::remove(map_file);

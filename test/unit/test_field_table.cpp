@@ -2,6 +2,7 @@
 // visiting, nested tables under a prefix, defaults from a default-constructed struct.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <limits>
 #include <map>
 
@@ -92,6 +93,12 @@ TEST(FieldTable, FormatsRealsShortestExact) {
   EXPECT_EQ(formatValue(0.15), "0.15");
   EXPECT_EQ(formatValue(1e-3), "0.001");
   EXPECT_EQ(formatValue(1.0 / 3.0), "0.3333333333333333");
+  EXPECT_EQ(formatValue(0.1 + 0.2), "0.30000000000000004") << "17 digits where 15 and 16 do not read back";
+  EXPECT_EQ(formatValue(300.0), "300");
+  EXPECT_EQ(formatValue(-2.5e-7), "-2.5e-07");
+  EXPECT_EQ(formatValue(std::numeric_limits<double>::infinity()), "inf");
+  for (const double v : {0.1 + 0.2, 1.0 / 3.0, 2.0 / 3.0, 6.02214076e23, 1e-300, 0.15, 1.0 - 1e-16})
+    EXPECT_EQ(std::strtod(formatValue(v).c_str(), nullptr), v) << formatValue(v);
 }
 
 TEST(FieldTable, ControllerTableHasUniqueKeysAndValidDefaults) {
@@ -112,4 +119,19 @@ TEST(FieldTable, JsonNestsBySlash) {
   // A text with quotes and backslashes stays valid JSON.
   const nlohmann::json path = std::string("a \"b\" \\c");
   EXPECT_EQ(nlohmann::json::parse(path.dump()).get<std::string>(), "a \"b\" \\c");
+}
+
+TEST(FieldTable, UnknownKeysNamedWithTheNearestKnownKey) {
+  const std::vector<std::string> known = {"port", "baud", "ticks_mm", "base_frame", "virtual_obstacles"};
+  const std::vector<UnknownKey> u =
+      unknownKeys({"port", "serial_port", "tiks_mm", "virtual_obstacles/0/id", "Baud", "enable_button"}, known);
+  ASSERT_EQ(u.size(), 4u);
+  EXPECT_EQ(u[0].key, "serial_port");
+  EXPECT_EQ(u[0].nearest, "") << "5 edits from port: too far to suggest";
+  EXPECT_EQ(u[1].key, "tiks_mm");
+  EXPECT_EQ(u[1].nearest, "ticks_mm");
+  EXPECT_EQ(u[2].key, "Baud") << "keys are case-sensitive: Baud is not baud";
+  EXPECT_EQ(u[2].nearest, "baud");
+  EXPECT_EQ(u[3].key, "enable_button");
+  EXPECT_TRUE(unknownKeys({"virtual_obstacles_x"}, known).size() == 1u) << "a prefix covers only keys under it";
 }

@@ -116,3 +116,51 @@ TEST(LaserParams, EachBadValueNamesItself) {
   EXPECT_EQ(error([](LaserParams& p) { p.range_min = 2; p.range_max = 1; }).rfind("range_max:", 0), 0u);
   EXPECT_EQ(error([](LaserParams& p) { p.time_offset = NAN; }).rfind("time_offset:", 0), 0u);
 }
+
+TEST(LaserScanConversion, RplidarRosConventionTurnsTheScanByPi) {
+  // An RPLIDAR revolution on the driver's grid: 360 bins over [-pi, pi); one echo at the
+  // device's 0 deg mark (angle 0, bin 180) and one at +90 deg (bin 270).
+  sensors::LaserScanData s;
+  s.angle_min = -M_PI;
+  s.angle_increment = 2 * M_PI / 360;
+  s.range_min = 0.15;
+  s.range_max = 12.0;
+  s.ranges.assign(360, kInf);
+  s.ranges[180] = 1.0f;
+  s.ranges[270] = 2.0f;
+  LaserParams p;
+  p.driver.model = "rplidar";
+  p.driver.port = "/dev/ttyUSB0";
+  sensor_msgs::LaserScan device, rplidar_ros;
+  ASSERT_TRUE(toLaserScan(s, p, &device));
+  p.angle_convention = "rplidar_ros";
+  EXPECT_EQ(p.validate(), "");
+  ASSERT_TRUE(toLaserScan(s, p, &rplidar_ros));
+  ASSERT_EQ(rplidar_ros.ranges.size(), 360u);
+  EXPECT_FLOAT_EQ(rplidar_ros.angle_min, device.angle_min) << "the same grid";
+  auto rangeAt = [](const sensor_msgs::LaserScan& m, double angle) {
+    const long i = std::lround((angle - m.angle_min) / m.angle_increment);
+    return m.ranges[static_cast<std::size_t>((i + 360) % 360)];
+  };
+  EXPECT_FLOAT_EQ(rangeAt(device, 0.0), 1.0f);
+  EXPECT_FLOAT_EQ(rangeAt(rplidar_ros, M_PI), 1.0f) << "the device's 0 deg is rplidar_ros's pi";
+  EXPECT_FLOAT_EQ(rangeAt(rplidar_ros, -M_PI / 2), 2.0f) << "+90 deg becomes pi - 90 deg - 2 pi";
+  EXPECT_TRUE(std::isinf(rangeAt(rplidar_ros, 0.0)));
+
+  LaserParams urg;
+  urg.angle_convention = "rplidar_ros";
+  EXPECT_EQ(urg.validate(), "angle_convention: rplidar_ros is for model rplidar");
+}
+
+TEST(LaserScanConversion, BaudIsTheRplidarsOnly) {
+  LaserParams p;
+  p.driver.model = "rplidar";
+  p.driver.port = "/dev/ttyUSB0";
+  p.driver.baud = 256000;
+  EXPECT_EQ(p.validate(), "");
+  p.driver.baud = 9600;
+  EXPECT_EQ(p.validate().rfind("baud: rplidar runs at 115200 (A1, A2M8) or 256000", 0), 0u) << p.validate();
+  LaserParams urg;
+  urg.driver.baud = 115200;
+  EXPECT_EQ(urg.validate().rfind("baud: only the rplidar's", 0), 0u) << urg.validate();
+}

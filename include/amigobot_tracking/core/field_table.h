@@ -166,6 +166,16 @@ std::string setField(const FieldTable<C>& table, const std::string& key, const s
   return "";
 }
 
+// A key set that no reader uses (a typo, a parameter of another driver), with the nearest
+// key the node reads ("" when none is within a third of the key's length in edits).
+struct UnknownKey {
+  std::string key;
+  std::string nearest;
+};
+// The keys of `present` that are none of `known`; a known key also covers the keys under it
+// ("virtual_obstacles" covers "virtual_obstacles/0/id"). Sorted as `present`.
+std::vector<UnknownKey> unknownKeys(const std::vector<std::string>& present, const std::vector<std::string>& known);
+
 // Calls visit(field, value) for every row, in table order (loggers, JSON).
 template <class C, class Visit>
 void visitFields(const FieldTable<C>& table, const C& config, Visit&& visit) {

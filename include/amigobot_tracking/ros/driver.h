@@ -22,6 +22,7 @@
 #include "amigobot_tracking/aria/client.h"
 #include "amigobot_tracking/core/command_lock.h"
 #include "amigobot_tracking/ros/driver_state_topics.h"
+#include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 
 namespace amigobot_tracking {
@@ -52,6 +53,9 @@ struct DriverParams {
 
 // The driver's ROS parameters: its own rows and aria::clientFields(), flat.
 const core::FieldTable<DriverParams>& driverFields();
+
+// RosAria's names of some parameters (TicksMM -> ticks_mm, ...), read when the driver's own is unset.
+const std::vector<ParamAlias>& rosAriaAliases();
 
 // Reads the private parameters (docs/ros_api.md); throws std::runtime_error("~key: reason").
 DriverParams loadDriverParams(const ros::NodeHandle& pnh);
@@ -93,7 +97,7 @@ class AmigobotDriver {
   ros::Timer diagnostics_timer_, link_timer_;
   std::mutex publish_mutex_;
   int last_motors_state_ = -1;  // -1: not yet published
-  std::unique_ptr<DriverStateTopics> state_topics_;  // battery_state, stall, bumper, estop
+  std::unique_ptr<DriverStateTopics> state_topics_;  // battery, stall, bumper, estop
   std::unique_ptr<aria::AriaClient> client_;
   std::unique_ptr<core::CommandLock> cmd_vel_lock_;  // one source drives (cmd_vel callback only)
   std::unique_ptr<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>> reconfigure_;

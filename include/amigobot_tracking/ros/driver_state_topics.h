@@ -1,4 +1,4 @@
-// The robot state the driver publishes beside odom: battery_state (sensor_msgs/
+// The robot state the driver publishes beside odom: battery (sensor_msgs/
 // BatteryState, NaN where the firmware reports nothing), stall (per wheel), bumper and
 // estop, the last three latched and published on change. A field this firmware does not
 // report is said once in the log, then published as unknown.

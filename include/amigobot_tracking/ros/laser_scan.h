@@ -24,6 +24,9 @@ struct LaserParams {
   bool upside_down = false;                    // mounted upside down (z down): mirror the scan
   double time_offset = 0.0;                    // [s] added to every stamp
   double expected_rate = 0.0;                  // [Hz] diagnostics; 0: the model's nominal rate
+  // rplidar: "device" (angle 0 = the device's 0 deg mark, counter-clockwise) or "rplidar_ros"
+  // (rplidar_ros's pi - theta: a mount copied from rplidar_ros).
+  std::string angle_convention = "device";
 
   // Empty when valid, else "name: what is wrong".
   std::string validate() const;

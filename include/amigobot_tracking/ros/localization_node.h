@@ -21,6 +21,7 @@
 #include <message_filters/subscriber.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
+#include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
@@ -69,6 +70,8 @@ class LocalizationNode {
   void onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg);
   bool onSaveMap(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   bool onGlobalLocalization(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  // amcl's global_localization (std_srvs/Empty): the same search; the outcome is logged.
+  bool onAmclGlobalLocalization(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
   void workLoop();
   void tfLoop();
   void process(const Work& work);
@@ -90,8 +93,8 @@ class LocalizationNode {
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> filter_;
   ros::Subscriber initial_pose_sub_;
-  ros::Publisher map_pub_, pose_pub_, status_pub_;
-  ros::ServiceServer save_map_srv_, global_srv_;
+  ros::Publisher map_pub_, pose_pub_, status_pub_, amcl_pose_pub_;  // amcl_pose: ~pose under amcl's name
+  ros::ServiceServer save_map_srv_, global_srv_, amcl_global_srv_;
   diagnostic_updater::Updater updater_;
   ros::Timer diagnostics_timer_;
 

@@ -46,7 +46,7 @@ class LaserDevice {
 // or "host:port".
 std::unique_ptr<LaserDevice> openHokuyo(const std::string& port);
 std::unique_ptr<LaserDevice> openCola(const std::string& model, const std::string& port);  // sick_tim5xx | sick_lms1xx
-std::unique_ptr<LaserDevice> openRplidar(const std::string& port);
+std::unique_ptr<LaserDevice> openRplidar(const std::string& port, int baud = 115200);  // 115200 | 256000
 
 double systemSeconds();
 

@@ -17,6 +17,7 @@ struct LaserDriverConfig {
   std::string port = "/dev/ttyACM0";   // serial device or host:port
   double reconnect_period = 1.0;       // [s] first wait before reopening
   double stall_timeout = 1.0;          // [s] no scan for this long: the link is reopened
+  int baud = 0;                        // rplidar: 115200 (A1, A2M8) or 256000 (A2M12, A3); 0: 115200
 
   void validate() const;  // throws std::invalid_argument naming the bad field
 };

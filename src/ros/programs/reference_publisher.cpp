@@ -45,12 +45,14 @@ bool point(const XmlRpc::XmlRpcValue& v, Eigen::Vector2d* out) {
 // Reads ~name as [x, y]; absent keeps *out. Throws naming the parameter on a bad value.
 void readPoint(const ros::NodeHandle& pnh, const std::string& name, Eigen::Vector2d* out) {
   XmlRpc::XmlRpcValue v;
+  amigobot_tracking::ros_layer::noteParamKey(pnh, name);
   if (!pnh.getParam(name, v)) return;
   if (!point(v, out)) throw std::invalid_argument("parameter " + pnh.resolveName(name) + " must be [x, y]");
 }
 
 std::vector<Eigen::Vector2d> readWaypoints(const ros::NodeHandle& pnh, const std::string& name) {
   XmlRpc::XmlRpcValue v;
+  amigobot_tracking::ros_layer::noteParamKey(pnh, name);
   const std::string where = "parameter " + pnh.resolveName(name);
   if (!pnh.getParam(name, v) || v.getType() != XmlRpc::XmlRpcValue::TypeArray) {
     throw std::invalid_argument(where + " must be a list [[x, y], ...]");
