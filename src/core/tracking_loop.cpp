@@ -10,9 +10,9 @@ TrackingLoop::TrackingLoop(const TrackingLoopConfig& config)
       controller_(config.controller),
       target_exclusion_radius_(config.target_exclusion_radius) {}
 
-bool TrackingLoop::enable(bool ramp) {
-  if (!supervisor_.enable(ramp)) return false;
-  controller_.restart(kRestartErrorRatio);
+bool TrackingLoop::enable(bool resume) {
+  if (!supervisor_.enable(resume)) return false;
+  if (resume) controller_.restart(kRestartErrorRatio);
   return true;
 }
 

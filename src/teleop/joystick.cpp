@@ -25,9 +25,9 @@ const core::FieldTable<JoystickConfig>& joystickFields() {
       field("deadzone", &J::deadzone, "-", "|axis| below this reads 0", core::interval(0.0, false, 1.0, true)),
       field("rate", &J::rate, "Hz", "cmd_vel rate while the deadman is held", core::interval(10.0, false, 1000.0, false)),
       field("stale_timeout", &J::stale_timeout, "s", "no event for this long -> zero until the next; 0 = off",
-            core::nonNegative()),
+            core::durationOrZero()),
       field("reconnect_period", &J::reconnect_period, "s", "between attempts to (re)open the device",
-            core::positive()),
+            core::duration()),
       field("enable_motors", &J::enable_motors, "-", "call the driver's enable_motors service at start"),
   };
   return table;

@@ -17,7 +17,7 @@ const core::FieldTable<KeyboardConfig>& keyboardFields() {
       field("turn_max", &K::turn_max, "rad/s", "the angular speed is never raised above this", core::positive()),
       field("rate", &K::rate, "Hz", "cmd_vel publication rate", core::interval(10.0, false, 1000.0, false)),
       field("key_timeout", &K::key_timeout, "s", "no key for this long -> zero command; 0 = never",
-            core::nonNegative()),
+            core::durationOrZero()),
       field("enable_motors", &K::enable_motors, "-", "call the driver's enable_motors service at start"),
   };
   return table;

@@ -116,18 +116,27 @@ TEST(TrackingLoop, LaserDisksOnTheTargetAreDroppedVirtualOnesKept) {
   EXPECT_EQ(loop.obstacles().size(), 1u);
 }
 
-TEST(TrackingLoop, UnrampedStartSendsTheControllersCommand) {
+// enable(false), the simulator's start: the bare controller's command, step by step.
+TEST(TrackingLoop, StartWithoutResumeSendsTheControllersCommand) {
   TrackingLoop ramped(loopConfig()), direct(loopConfig());
   ramped.enable();
   direct.enable(false);
   PerformanceController reference(loopConfig().controller);
-  reference.restart(TrackingLoop::kRestartErrorRatio);
-  const TrackingLoopInputs in = inputsAt(0.0);
+  TrackingLoopInputs in = inputsAt(0.0);
+  in.target.position = {3.0, 1.0};  // far: the start rule, not the restart's, sets rho
   const ControllerOutput expected = reference.stepStamped(in.t, in.pose, in.target, {});
   const TrackingLoopResult a = ramped.step(in), b = direct.step(in);
   EXPECT_EQ(b.u.v, expected.u.v);
   EXPECT_EQ(b.u.omega, expected.u.omega);
+  EXPECT_EQ(direct.controller().rho(), reference.rho());
   EXPECT_LT(std::abs(a.u.v), std::abs(expected.u.v));
+  for (int i = 1; i < 50; ++i) {
+    in.t = in.pose.stamp = in.target.stamp = i * kPeriod;
+    const ControllerOutput e = reference.stepStamped(in.t, in.pose, in.target, {});
+    const TrackingLoopResult r = direct.step(in);
+    ASSERT_EQ(r.u.v, e.u.v) << "step " << i;
+    ASSERT_EQ(r.u.omega, e.u.omega) << "step " << i;
+  }
 }
 
 TEST(TrackingLoop, DisabledSendsNothingAndDisableOneZero) {

@@ -40,6 +40,11 @@ inline Bounds interval(double min, bool min_open, double max, bool max_open) {
 }
 inline Bounds positive() { return interval(0.0, true, std::numeric_limits<double>::infinity(), false); }
 inline Bounds nonNegative() { return interval(0.0, false, std::numeric_limits<double>::infinity(), false); }
+// A period, timeout or delay [s]: at most a day, so ros::Duration (32-bit seconds), timers
+// and sleeps hold it and its inverse rate; > 0 (or >= 0 where 0 means "off").
+constexpr double kMaxDuration = 86400.0;
+inline Bounds duration() { return interval(0.0, true, kMaxDuration, false); }
+inline Bounds durationOrZero() { return interval(0.0, false, kMaxDuration, false); }
 inline Bounds atLeast(double min) { return interval(min, false, std::numeric_limits<double>::infinity(), false); }
 inline Bounds oneOf(std::vector<std::string> choices) {
   Bounds b;

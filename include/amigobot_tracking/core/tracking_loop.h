@@ -59,9 +59,11 @@ class TrackingLoop {
 
   TrackingLoopResult step(const TrackingLoopInputs& in);
 
-  // True when this enabled tracking (the controller restarts). ramp = false: the first
-  // command is sent unramped (the offline simulator's start; the robot always ramps).
-  bool enable(bool ramp = true);
+  // True when this enabled tracking. resume (the robot, always): the controller restarts
+  // (kRestartErrorRatio) and the command leaves zero on the ramp. resume = false: the
+  // controller's own start (the paper's start rule) and its first command unramped: the
+  // offline simulator's t = 0.
+  bool enable(bool resume = true);
   Twist2 disable(double t);  // the one zero to send
 
   // Applied at the start of the next step (the controller keeps its state). Must be valid.
