@@ -84,8 +84,6 @@ bench: build ## benchmarks: core, simulator speed, scan obstacles, world ray cas
 	$(WS)/devel/lib/amigobot_tracking/bench_world --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(CATKIN) bench_laser
 	$(SETUP) && $(WS)/devel/lib/amigobot_tracking/bench_laser
-	$(CATKIN) bench_tracking_cycle
-	$(SETUP) && $(ROOT)/scripts/test/with_private_roscore.sh $(WS)/devel/lib/amigobot_tracking/bench_tracking_cycle --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	$(CATKIN) bench_aria
 	$(WS)/devel/lib/amigobot_tracking/bench_aria
 	$(CATKIN) bench_localization

@@ -47,5 +47,10 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(test_param_coverage PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
-# Whole control cycles with a filled tf buffer (`make bench`).
-amigobot_add_benchmark(bench_tracking_cycle test/bench/bench_tracking_cycle.cpp amigobot_tracking_ros)
+if(CATKIN_ENABLE_TESTING)
+  # Every nodelet with extreme in-bounds parameters in one manager that must survive (issue 25).
+  amigobot_add_rostest_gtest(test_nodelets_extreme_params test/rostest/nodelets_extreme_params.test
+                             test/rostest/test_nodelets_extreme_params.cpp)
+  add_dependencies(test_nodelets_extreme_params amigobot_tracking_ros amigobot_tracking_ros_driver
+                   amigobot_tracking_ros_laser amigobot_tracking_ros_localization)
+endif()

@@ -30,7 +30,7 @@ FieldTable<ControllerConfig> makeTable() {
             "|e|/rho is kept at or below this by widening rho; > xi* with xi* atanh xi* = k_o/k_r",
             interval(0.0, true, 1.0, true)),
       field("max_relaxation_interval", &C::max_relaxation_interval, "s",
-            "longest gap between steps the relaxation term of (13) spans (stalls)", positive()),
+            "longest gap between steps the relaxation term of (13) spans (stalls)", duration()),
       field("max_rho_rate", &C::max_rho_rate, "m/s",
             "cap of the relaxation term's rate in (13) (band chattering); 0 = none, the paper", nonNegative()),
       field("law", &C::law, "-", "control law: paper (eqs. 9-13) or recommended (field, safety filter, 13')",
@@ -46,12 +46,12 @@ FieldTable<ControllerConfig> makeTable() {
             "sine margin before the passing side may switch", interval(0.0, false, 1.0, true)),
       field("moving_obstacles", &C::moving_obstacles, "-", "obstacle velocities in (10): feed-forward, wider band"),
       field("obstacle_horizon", &C::obstacle_horizon, "s", "detection band grows by approach speed times this",
-            nonNegative()),
+            durationOrZero()),
       field("predict_target", &C::predict_target, "-", "p_d = latest sample + v_hat x sample age"),
       field("compensate_pose_age", &C::compensate_pose_age, "-",
             "move the pose forward along the commands applied over its age"),
       field("max_prediction", &C::max_prediction, "s", "ages beyond this are not extrapolated further",
-            nonNegative()),
+            durationOrZero()),
   };
   include(&t, "estimator/", &C::estimator, estimatorFields());
   return t;

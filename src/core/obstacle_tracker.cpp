@@ -15,7 +15,7 @@ const FieldTable<ObstacleTrackerConfig>& obstacleTrackerFields() {
       field("velocity_gain", &T::velocity_gain, "-", "beta of the alpha-beta filter", interval(0, true, 2, true)),
       field("max_speed", &T::max_speed, "m/s", "velocities are clamped to this", positive()),
       field("still_speed", &T::still_speed, "m/s", "slower tracks count as static", nonNegative()),
-      field("forget_after", &T::forget_after, "s", "a track unseen this long is dropped", positive()),
+      field("forget_after", &T::forget_after, "s", "a track unseen this long is dropped", duration()),
       field("min_hits", &T::min_hits, "-", "matches before a track's velocity is used", atLeast(1)),
   };
   return table;

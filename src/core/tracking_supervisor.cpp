@@ -14,11 +14,11 @@ bool fresh(double age, double timeout) { return age <= timeout; }
 
 }  // namespace
 
-bool TrackingSupervisor::enable() {
+bool TrackingSupervisor::enable(bool ramp) {
   if (enabled_) return false;
   enabled_ = true;
   lost_ = false;
-  ramping_ = true;
+  ramping_ = ramp;
   last_command_ = {};
   return true;
 }

@@ -1,26 +1,14 @@
-// Nodelet amigobot_tracking/Driver: the AmigoBot driver in a nodelet manager.
-#include <memory>
-
-#include <nodelet/nodelet.h>
+// Nodelet amigobot_tracking/Driver: AmigobotDriver in a nodelet manager (nodelet_host.h).
 #include <pluginlib/class_list_macros.hpp>
 
 #include "amigobot_tracking/ros/driver.h"
+#include "amigobot_tracking/ros/nodelet_host.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
-class DriverNodelet : public nodelet::Nodelet {
- private:
-  void onInit() override {
-    try {
-      driver_ = std::make_unique<AmigobotDriver>(getNodeHandle(), getPrivateNodeHandle());
-    } catch (const std::exception& e) {
-      // Bad parameters: say which and stay idle rather than take the manager down.
-      NODELET_FATAL_STREAM("AmigoBot driver not started: " << e.what());
-    }
-  }
-  std::unique_ptr<AmigobotDriver> driver_;  // destroyed on unload: stops the robot cleanly
-};
+constexpr char kDriverNodeletName[] = "AmigoBot driver";
+using DriverNodelet = NodeletHost<AmigobotDriver, kDriverNodeletName>;
 
 }  // namespace ros_layer
 }  // namespace amigobot_tracking

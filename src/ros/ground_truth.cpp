@@ -28,10 +28,10 @@ const core::FieldTable<GroundTruthConfig>& groundTruthFields() {
       field("base_frame", &G::base_frame, "-", "robot frame"),
       field("rate", &G::rate, "Hz", "map -> odom updates", core::positive()),
       field("transform_tolerance", &G::transform_tolerance, "s", "map -> odom is stamped this far ahead",
-            core::nonNegative()),
+            core::durationOrZero()),
       field("socket_timeout", &G::socket_timeout, "s", "a slower status reply counts as a lost link",
             core::boundedTimeout()),
-      field("reconnect_period", &G::reconnect_period, "s", "between reconnection attempts", core::positive()),
+      field("reconnect_period", &G::reconnect_period, "s", "between reconnection attempts", core::duration()),
       field("publish_tf", &G::publish_tf, "-", "broadcast map -> odom (false: only the ground_truth topic)"),
   };
   return table;

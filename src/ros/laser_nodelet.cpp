@@ -1,26 +1,14 @@
-// Nodelet amigobot_tracking/Laser: the laser driver in a nodelet manager.
-#include <memory>
-
-#include <nodelet/nodelet.h>
+// Nodelet amigobot_tracking/Laser: LaserNode in a nodelet manager (nodelet_host.h).
 #include <pluginlib/class_list_macros.hpp>
 
 #include "amigobot_tracking/ros/laser_node.h"
+#include "amigobot_tracking/ros/nodelet_host.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
-class LaserNodelet : public nodelet::Nodelet {
- private:
-  void onInit() override {
-    try {
-      laser_ = std::make_unique<LaserNode>(getNodeHandle(), getPrivateNodeHandle());
-    } catch (const std::exception& e) {
-      // Bad parameters: say which and stay idle rather than take the manager down.
-      NODELET_FATAL_STREAM("Laser not started: " << e.what());
-    }
-  }
-  std::unique_ptr<LaserNode> laser_;  // destroyed on unload: stops the I/O thread, closes the device
-};
+constexpr char kLaserNodeletName[] = "Laser";
+using LaserNodelet = NodeletHost<LaserNode, kLaserNodeletName>;
 
 }  // namespace ros_layer
 }  // namespace amigobot_tracking

@@ -1,26 +1,14 @@
-// Nodelet amigobot_tracking/Localization: mapping or localisation in a nodelet manager.
-#include <memory>
-
-#include <nodelet/nodelet.h>
+// Nodelet amigobot_tracking/Localization: LocalizationNode in a nodelet manager (nodelet_host.h).
 #include <pluginlib/class_list_macros.hpp>
 
 #include "amigobot_tracking/ros/localization_node.h"
+#include "amigobot_tracking/ros/nodelet_host.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
-class LocalizationNodelet : public nodelet::Nodelet {
- private:
-  void onInit() override {
-    try {
-      node_ = std::make_unique<LocalizationNode>(getNodeHandle(), getPrivateNodeHandle());
-    } catch (const std::exception& e) {
-      // Bad parameters or map: say which and stay idle rather than take the manager down.
-      NODELET_FATAL_STREAM("Localization not started: " << e.what());
-    }
-  }
-  std::unique_ptr<LocalizationNode> node_;  // destroyed on unload: stops its threads
-};
+constexpr char kLocalizationNodeletName[] = "Localization";
+using LocalizationNodelet = NodeletHost<LocalizationNode, kLocalizationNodeletName>;
 
 }  // namespace ros_layer
 }  // namespace amigobot_tracking

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/body_intrusion.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/markers.h"
@@ -45,7 +45,7 @@ TrackingNode::~TrackingNode() {
   {
     std::lock_guard<std::mutex> lock(state_mutex_);
     // Leave the robot standing.
-    if (supervisor_.enabled()) publishLocked(supervisor_.disable(sinceEpoch(ros::Time::now())));
+    if (started_ && loop_.supervisor().enabled()) publishLocked(loop_.disable(sinceEpoch(ros::Time::now())));
   }
   diagnostics_.reset();
   reconfigure_.reset();
@@ -54,21 +54,18 @@ TrackingNode::~TrackingNode() {
   tf_listener_.reset();
 }
 
-bool TrackingNode::start() {
+void TrackingNode::start() {
   std::vector<core::VirtualObstacle> initial;
+  core::TrackingLoopConfig loop_config;
   std::string error = loadNodeConfig(pnh_, &node_config_);
-  if (error.empty()) error = loadControllerConfig(pnh_, node_config_, &controller_config_);
+  if (error.empty()) error = loadControllerConfig(pnh_, node_config_, &loop_config.controller);
   if (error.empty()) error = loadScanObstacleConfig(pnh_, &scan_config_);
   if (error.empty()) error = loadObstacleTrackerConfig(pnh_, &tracker_config_);
   if (error.empty()) error = loadVirtualObstacles(pnh_, &initial);
-  if (!error.empty()) {
-    ROS_FATAL_STREAM_NAMED("tracking", "tracking refuses to start: " << error
-                                                                     << ". Nothing is enabled; fix it and restart.");
-    return false;
-  }
-  controller_ = core::PerformanceController(controller_config_);
-  supervisor_ = core::TrackingSupervisor(supervisorConfigOf(node_config_, controller_config_));
-  pending_config_ = controller_config_;
+  if (!error.empty()) throw std::runtime_error(error);
+  loop_config.supervisor = supervisorConfigOf(node_config_, loop_config.controller);
+  loop_config.target_exclusion_radius = node_config_.target_exclusion_radius;
+  loop_ = core::TrackingLoop(loop_config);
   epoch_ = ros::Time::now();
   pose_age_ = core::InputAgeTracker(node_config_.future_stamp_tolerance);
   target_age_ = core::InputAgeTracker(node_config_.future_stamp_tolerance);
@@ -91,7 +88,7 @@ bool TrackingNode::start() {
 
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TrackingConfig>>(reconfigure_mutex_, pnh_);
   TrackingConfig initial_gains;
-  const std::string unmapped = fillReconfigure(controller_config_, &initial_gains);
+  const std::string unmapped = fillReconfigure(loop_.controller().config(), &initial_gains);
   if (!unmapped.empty()) ROS_ERROR_STREAM_NAMED("tracking", unmapped);
   reconfigure_->updateConfig(initial_gains);
   reconfigure_->setCallback([this](TrackingConfig& config, uint32_t level) { onReconfigure(config, level); });
@@ -114,17 +111,16 @@ bool TrackingNode::start() {
                                                 << " in " << node_config_.global_frame << " at "
                                                 << node_config_.control_rate << " Hz, "
                                                 << (node_config_.autostart ? "enabled" : "disabled until ~enable"));
-  return true;
 }
 
 bool TrackingNode::enabled() const {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  return supervisor_.enabled();
+  return loop_.supervisor().enabled();
 }
 
 std::string TrackingNode::status() const {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  return supervisor_.status();
+  return loop_.supervisor().status();
 }
 
 CycleStats TrackingNode::cycleStats() const {
@@ -148,10 +144,6 @@ TrackingNode::Lookup TrackingNode::lookup(const std::string& frame, const ros::T
   return result;
 }
 
-void TrackingNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-  if (laser_) laser_->onScan(scan);
-}
-
 void TrackingNode::onLocalizationStatus(const amigobot_tracking::LocalizationStatus::ConstPtr& msg) {
   std::lock_guard<std::mutex> lock(localization_mutex_);
   localization_problem_ = msg->ok ? "" : (msg->reason.empty() ? "not ok" : msg->reason);
@@ -159,59 +151,29 @@ void TrackingNode::onLocalizationStatus(const amigobot_tracking::LocalizationSta
 
 void TrackingNode::onTimer(const ros::TimerEvent&) { controlCycle(ros::Time::now()); }
 
-void TrackingNode::controlCycle(const ros::Time& now) {
-  const auto wall_start = TrackingStatistics::Clock::now();
-  const bool markers_wanted = markers_pub_.getNumSubscribers() > 0;
-  {
-    std::lock_guard<std::mutex> lock(state_mutex_);
-    if (config_pending_) {  // dynamic_reconfigure: swapped between two steps only
-      controller_.setConfig(pending_config_);
-      controller_config_ = pending_config_;
-      config_pending_ = false;
-    }
-    const Lookup pose = lookup(node_config_.base_frame, now, &pose_age_);
-    const Lookup target = lookup(node_config_.target_frame, now, &target_age_);
-    scan_age_ = laser_->update(now);
-    obstacles_.clear();
-    if (supervisor_.scanFresh(scan_age_)) {
-      // With moving_obstacles the laser disks carry velocities from the tracker.
-      laser_->obstacles(controller_config_.moving_obstacles, now, &obstacles_);
-      if (target.ok) {  // laser disks on the followed robot are the target, not obstacles
-        const auto& p = target.transform.transform.translation;
-        core::dropDisksNear({p.x, p.y}, node_config_.target_exclusion_radius, &obstacles_);
-      }
-    }
-    const std::size_t laser_count = obstacles_.size();
-    virtual_obstacles_->appendDisks(&obstacles_);
-    virtual_count_ = obstacles_.size() - laser_count;
-    last_pose_age_ = pose.ok ? pose.age : -1.0;
-    last_target_age_ = target.ok ? target.age : -1.0;
-
-    core::ControllerOutput out;
-    bool have_output = false;
-    const core::TrackingSupervisor::Decision decision =
-        supervisor_.begin(sinceEpoch(now), supervisorInputsLocked(pose, target));
-    if (decision.publish) {
-      publishLocked(decision.u);
-      logStopLocked();
-    }
-    if (decision.step) have_output = stepLocked(now, pose, target, decision.restart, &out);
-    last_output_ = out;
-    control_rate_->tick();
-    publishStateLocked(now, pose, have_output, out);
-    if (markers_wanted) publishMarkersLocked(now, pose, have_output, out, virtual_obstacles_->snapshot());
-    stats_.endCycle(sinceEpoch(now), wall_start);
-  }
-  if (diagnostics_) diagnostics_->update();  // rate-limited by the updater; takes the lock itself
-}
-
-core::SupervisorInputs TrackingNode::supervisorInputsLocked(const Lookup& pose, const Lookup& target) const {
-  core::SupervisorInputs in;
+core::TrackingLoopInputs TrackingNode::loopInputsLocked(const ros::Time& now, const Lookup& pose,
+                                                       const Lookup& target) {
+  core::TrackingLoopInputs in;
+  in.t = sinceEpoch(now);
   in.have_pose = pose.ok;
   in.pose_age = pose.age;
+  // A static transform has no stamp: use now.
+  const ros::Time pose_stamp = pose.transform.header.stamp.isZero() ? now : pose.transform.header.stamp;
+  in.pose = {sinceEpoch(pose_stamp), toPose2(pose.transform.transform)};
   in.have_target = target.ok;
   in.target_age = target.age;
+  const ros::Time stamp = target.transform.header.stamp.isZero() ? now : target.transform.header.stamp;
+  in.target.stamp = sinceEpoch(stamp);
+  in.target.position = {target.transform.transform.translation.x, target.transform.transform.translation.y};
   in.scan_age = scan_age_;
+  laser_disks_.clear();
+  // With moving_obstacles the laser disks carry velocities from the tracker.
+  if (loop_.scanFresh(scan_age_)) laser_->obstacles(loop_.nextConfig().moving_obstacles, now, &laser_disks_);
+  virtual_disks_.clear();
+  virtual_obstacles_->appendDisks(&virtual_disks_);
+  in.scan_disks = &laser_disks_;
+  in.virtual_disks = &virtual_disks_;
+  // Issue 25's checks: untrusted stamps, bad localisation, something inside the body.
   in.pose_problem = pose.problem;
   in.target_problem = target.problem;
   in.scan_problem = laser_->scanProblem();
@@ -219,38 +181,36 @@ core::SupervisorInputs TrackingNode::supervisorInputsLocked(const Lookup& pose, 
     std::lock_guard<std::mutex> lock(localization_mutex_);
     in.localization_problem = localization_problem_;
   }
-  if (pose.ok) {
-    const auto& p = pose.transform.transform.translation;
-    in.pose_position = {p.x, p.y};
-    const std::size_t laser_count = obstacles_.size() - virtual_count_;  // laser disks come first
-    const std::vector<core::Disk> laser(obstacles_.begin(), obstacles_.begin() + laser_count);
-    in.body_intrusion = core::bodyIntrusion({p.x, p.y}, controller_config_.robot_radius, laser,
+  if (pose.ok)
+    in.body_intrusion = core::bodyIntrusion(in.pose.pose.position(), loop_.nextConfig().robot_radius, laser_disks_,
                                             virtual_obstacles_->snapshot().all());
-  }
   return in;
 }
 
-bool TrackingNode::stepLocked(const ros::Time& now, const Lookup& pose, const Lookup& target, bool restart,
-                              core::ControllerOutput* out) {
-  if (restart) controller_.restart(core::TrackingSupervisor::kRestartErrorRatio);  // resume: start afresh
-  const ros::Time pose_stamp = pose.transform.header.stamp.isZero() ? now : pose.transform.header.stamp;
-  const core::PoseSample robot_sample{sinceEpoch(pose_stamp), toPose2(pose.transform.transform)};
-  // The target sample keeps its own stamp (a static transform has none: use now).
-  const ros::Time stamp = target.transform.header.stamp.isZero() ? now : target.transform.header.stamp;
-  const core::TargetSample sample{sinceEpoch(stamp),
-                                  {target.transform.transform.translation.x, target.transform.transform.translation.y}};
-  const double t = sinceEpoch(now);
-  *out = controller_.stepStamped(t, robot_sample, sample, obstacles_);
-  // The state and markers show what was sent: u is the ramped command while ramping.
-  const core::Twist2 sent = supervisor_.finish(t, *out, controller_.diamond());
-  publishLocked(sent);
-  if (supervisor_.state() != core::TrackingSupervisor::State::kTracking) {
-    logStopLocked();
-    return false;
+void TrackingNode::controlCycle(const ros::Time& now) {
+  const auto wall_start = TrackingStatistics::Clock::now();
+  const bool markers_wanted = markers_pub_.getNumSubscribers() > 0;
+  {
+    std::lock_guard<std::mutex> lock(state_mutex_);
+    const Lookup pose = lookup(node_config_.base_frame, now, &pose_age_);
+    const Lookup target = lookup(node_config_.target_frame, now, &target_age_);
+    scan_age_ = laser_->update(now);
+    last_pose_age_ = pose.ok ? pose.age : -1.0;
+    last_target_age_ = target.ok ? target.age : -1.0;
+    const core::TrackingLoopResult r = loop_.step(loopInputsLocked(now, pose, target));
+    virtual_count_ = r.virtual_disks;
+    if (r.publish) {
+      publishLocked(r.u);
+      if (!r.tracking) logStopLocked();
+    }
+    if (r.tracking) stats_.addStep(r.output.active.saturated);
+    last_output_ = r.output;
+    control_rate_->tick();
+    publishStateLocked(now, pose, r.tracking, r.output);
+    if (markers_wanted) publishMarkersLocked(now, pose, r.tracking, r.output, virtual_obstacles_->snapshot());
+    stats_.endCycle(sinceEpoch(now), wall_start);
   }
-  out->u = sent;
-  stats_.addStep(out->active.saturated);
-  return true;
+  if (diagnostics_) diagnostics_->update();  // rate-limited by the updater; takes the lock itself
 }
 
 void TrackingNode::publishLocked(const core::Twist2& u) {
@@ -259,10 +219,10 @@ void TrackingNode::publishLocked(const core::Twist2& u) {
 }
 
 void TrackingNode::logStopLocked() const {
-  if (supervisor_.state() == core::TrackingSupervisor::State::kCommandRefused) {
+  if (loop_.supervisor().state() == core::TrackingSupervisor::State::kCommandRefused) {
     ROS_ERROR_THROTTLE(2.0, "tracking: controller command outside the diamond; sent zero");
   } else {
-    ROS_WARN_STREAM_THROTTLE(2.0, "tracking: zero command: " << supervisor_.status());
+    ROS_WARN_STREAM_THROTTLE(2.0, "tracking: zero command: " << loop_.supervisor().status());
   }
 }
 
@@ -273,10 +233,7 @@ bool TrackingNode::onEnable(std_srvs::Trigger::Request&, std_srvs::Trigger::Resp
     res.message = "not started (configuration error)";
     return true;
   }
-  if (supervisor_.enable()) {
-    controller_.restart(core::TrackingSupervisor::kRestartErrorRatio);
-    cmd_vel_rate_->clear();  // cmd_vel starts again now
-  }
+  if (loop_.enable()) cmd_vel_rate_->clear();  // cmd_vel starts again now
   res.success = true;
   res.message = "tracking enabled";
   ROS_INFO_NAMED("tracking", "tracking enabled");
@@ -285,7 +242,7 @@ bool TrackingNode::onEnable(std_srvs::Trigger::Request&, std_srvs::Trigger::Resp
 
 bool TrackingNode::onDisable(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  publishLocked(supervisor_.disable(sinceEpoch(ros::Time::now())));  // one zero command, then cmd_vel is left to others
+  publishLocked(loop_.disable(sinceEpoch(ros::Time::now())));  // one zero command, then cmd_vel is left to others
   res.success = true;
   res.message = "tracking disabled";
   ROS_INFO_NAMED("tracking", "tracking disabled");
@@ -294,7 +251,7 @@ bool TrackingNode::onDisable(std_srvs::Trigger::Request&, std_srvs::Trigger::Res
 
 void TrackingNode::onReconfigure(TrackingConfig& config, uint32_t) {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  core::ControllerConfig candidate = config_pending_ ? pending_config_ : controller_config_;
+  core::ControllerConfig candidate = loop_.nextConfig();
   // The robot's limits cap the diamond; the capped value is shown back in the GUI.
   config.v_max = std::min(config.v_max, node_config_.robot_v_max);
   config.w_max = std::min(config.w_max, node_config_.robot_w_max);
@@ -302,13 +259,11 @@ void TrackingNode::onReconfigure(TrackingConfig& config, uint32_t) {
   if (invalid.empty()) invalid = candidate.validate();
   if (invalid.empty()) invalid = core::bandReachError(candidate, 1.0 / node_config_.control_rate);
   if (!invalid.empty()) {
-    const core::ControllerConfig& kept = config_pending_ ? pending_config_ : controller_config_;
     ROS_ERROR_STREAM_NAMED("tracking", "reconfigure rejected, gains unchanged: " << invalid);
-    fillReconfigure(kept, &config);
+    fillReconfigure(loop_.nextConfig(), &config);
     return;
   }
-  pending_config_ = candidate;
-  config_pending_ = true;
+  loop_.setPendingConfig(candidate);
   ROS_INFO_STREAM_NAMED("tracking", "reconfigure: " << describeLiveFields(candidate));
 }
 

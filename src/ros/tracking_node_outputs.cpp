@@ -17,14 +17,14 @@ void TrackingNode::publishStateLocked(const ros::Time& now, const Lookup& pose, 
   state.header.stamp = now;
   state.header.frame_id = node_config_.global_frame;
   if (have_output) fillState(out, &state);
-  state.enabled = supervisor_.enabled();
-  state.status = supervisor_.status();
+  state.enabled = loop_.supervisor().enabled();
+  state.status = loop_.supervisor().status();
   state.t = sinceEpoch(now);
-  state.rho = have_output ? out.rho : controller_.rho();
-  state.obstacles = static_cast<int>(obstacles_.size());
+  state.rho = have_output ? out.rho : loop_.controller().rho();
+  state.obstacles = static_cast<int>(loop_.obstacles().size());
   if (!have_output) state.min_clearance = inf;
   state.min_clearance_body =
-      pose.ok ? core::clearance(toPose2(pose.transform.transform).position(), controller_config_.robot_radius, obstacles_)
+      pose.ok ? core::clearance(toPose2(pose.transform.transform).position(), loop_.controller().config().robot_radius, loop_.obstacles())
               : inf;
   state.pose_age = last_pose_age_;
   state.target_age = last_target_age_;
@@ -40,26 +40,26 @@ void TrackingNode::publishMarkersLocked(const ros::Time& now, const Lookup& pose
   if (pose.ok) scene.pose = toPose2(pose.transform.transform);
   scene.have_output = have_output;
   scene.output = out;
-  scene.config = &controller_config_;
+  scene.config = &loop_.controller().config();
   scene.detected = &laser_->disks();
   scene.virtual_obstacles = &virtuals;
-  scene.status = supervisor_.status();
+  scene.status = loop_.supervisor().status();
   markers_pub_.publish(buildMarkers(scene));
 }
 
 void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   std::lock_guard<std::mutex> lock(state_mutex_);
   using diagnostic_msgs::DiagnosticStatus;
-  const bool enabled = supervisor_.enabled();
+  const bool enabled = loop_.supervisor().enabled();
   if (!enabled) {
     status.summary(DiagnosticStatus::OK, "disabled");
-  } else if (supervisor_.state() == core::TrackingSupervisor::State::kTracking) {
+  } else if (loop_.supervisor().state() == core::TrackingSupervisor::State::kTracking) {
     status.summary(DiagnosticStatus::OK, "tracking");
   } else {
-    status.summary(DiagnosticStatus::WARN, "zero command: " + supervisor_.status());
+    status.summary(DiagnosticStatus::WARN, "zero command: " + loop_.supervisor().status());
   }
   status.add("enabled", enabled);
-  status.add("status", supervisor_.status());
+  status.add("status", loop_.supervisor().status());
   status.add("control rate set [Hz]", node_config_.control_rate);
   control_rate_->report(status, true);
   cmd_vel_rate_->report(status, enabled);  // silent while disabled, by design
@@ -67,11 +67,11 @@ void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status)
   status.add("target age [s]", last_target_age_);
   status.add("scan age [s]", scan_age_);
   status.add("saturation ratio", stats_.saturationRatio());
-  status.add("resume ramp on", enabled && supervisor_.ramping());
-  status.add("rho [m]", controller_.rho());
+  status.add("resume ramp on", enabled && loop_.supervisor().ramping());
+  status.add("rho [m]", loop_.controller().rho());
   status.add("|e| [m]", last_output_.valid ? last_output_.e.norm() : 0.0);
   status.add("min clearance [m]", last_output_.valid ? last_output_.min_clearance : -1.0);
-  status.add("obstacles (laser + virtual)", obstacles_.size());
+  status.add("obstacles (laser + virtual)", loop_.obstacles().size());
   status.add("virtual obstacles", virtual_count_);
   status.add("cycle time last [us]", stats_.cycles().last_us);
   status.add("cycle time max [us]", stats_.cycles().max_us);

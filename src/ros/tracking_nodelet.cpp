@@ -1,21 +1,15 @@
-#include "amigobot_tracking/ros/tracking_nodelet.h"
-
+// Nodelet amigobot_tracking/Tracking: a TrackingNode in a nodelet manager (the driver's, on
+// the robot), on the multi-threaded callback queue (nodelet_host.h).
 #include <pluginlib/class_list_macros.hpp>
+
+#include "amigobot_tracking/ros/nodelet_host.h"
+#include "amigobot_tracking/ros/tracking_node.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
-TrackingNodelet::~TrackingNodelet() { node_.reset(); }
-
-void TrackingNodelet::onInit() {
-  node_ = std::make_unique<TrackingNode>(getMTNodeHandle(), getMTPrivateNodeHandle());
-  if (!node_->start()) {
-    // The error naming the parameter is already logged. Stay loaded but inert: no
-    // subscriptions, no timer, no services, so nothing can ever enable tracking.
-    NODELET_FATAL("%s: not started because of a configuration error", getName().c_str());
-    node_.reset();
-  }
-}
+constexpr char kTrackingNodeletName[] = "Tracking";
+using TrackingNodelet = NodeletHost<TrackingNode, kTrackingNodeletName, true>;
 
 }  // namespace ros_layer
 }  // namespace amigobot_tracking

@@ -53,7 +53,7 @@ const core::FieldTable<TrackingNodeConfig>& trackingNodeFields() {
       field("base_frame", &N::base_frame, "-", "the robot being controlled (REP 105)"),
       field("target_frame", &N::target_frame, "-", "the tracked target (reference publisher or another robot)"),
       field("control_rate", &N::control_rate, "Hz", "control timer rate, one step per tick",
-            core::interval(0.0, true, 1000.0, false)),
+            core::interval(1.0, false, 1000.0, false)),
       field("pose_timeout", &N::pose_timeout, "s", "older robot pose or target -> zero command",
             core::boundedTimeout()),
       field("scan_timeout", &N::scan_timeout, "s", "older scan -> zero command (when require_scan)",

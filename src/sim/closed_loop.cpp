@@ -12,6 +12,7 @@
 #include "amigobot_tracking/sim/baseline_estimators.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/core/small_angle.h"
+#include "amigobot_tracking/core/tracking_loop.h"
 #include "amigobot_tracking/core/unicycle.h"
 
 namespace amigobot_tracking {
@@ -37,30 +38,51 @@ class Law {
       // The band-implicit step treats (10), which the recommended law does not use.
       implicit_band_ = !recommended && setup.integrator != Integrator::kExplicit && !config.moving_obstacles;
       config.estimator.bdf2 = implicit_band_ && setup.integrator == Integrator::kSecondOrder;
-      paper_ = std::make_unique<core::PerformanceController>(config);
+      // The tracking nodelet's own loop, with inputs that never go stale: the scene's
+      // disks are the operator's (never dropped), the start is the paper's (no restart, no
+      // ramp) unless the setup asks for the robot's resume.
+      core::TrackingLoopConfig loop;
+      loop.controller = config;
+      loop.supervisor.pose_timeout = loop.supervisor.scan_timeout = std::numeric_limits<double>::infinity();
+      loop.supervisor.require_scan = false;
+      loop.supervisor.control_period = setup.control_period;
+      loop.supervisor.ramp = setup.resume_ramp;
+      paper_ = std::make_unique<core::TrackingLoop>(loop);
+      paper_->enable(setup.resume_at_start);
     }
   }
   core::ControllerOutput step(double t, const core::PoseSample& robot, const core::TargetSample& sample,
                         const std::vector<core::Disk>& obstacles) {
     if (external_) return external_->step(t, robot, sample, obstacles);
-    return paper_ ? paper_->stepStamped(t, robot, sample, obstacles)
-                  : proportional_->step(t, robot.pose, sample, obstacles);
+    if (!paper_) return proportional_->step(t, robot.pose, sample, obstacles);
+    core::TrackingLoopInputs in;
+    in.t = t;
+    in.have_pose = in.have_target = true;
+    in.pose_age = t - robot.stamp;
+    in.pose = robot;
+    in.target_age = t - sample.stamp;
+    in.target = sample;
+    in.virtual_disks = &obstacles;
+    const core::TrackingLoopResult r = paper_->step(in);
+    core::ControllerOutput out = r.output;
+    out.u = r.u;  // what was sent (a zero when the supervisor refused the step)
+    return out;
   }
   const core::DiamondSet& diamond() const {
     if (external_) return external_->diamond();
-    return paper_ ? paper_->diamond() : proportional_->diamond();
+    return paper_ ? paper_->controller().diamond() : proportional_->diamond();
   }
   // The setup's integrator applies (otherwise the loop runs kExplicit).
   bool implicitBand() const { return implicit_band_; }
   void setImplicitHorizon(double h) {
-    if (paper_) paper_->setImplicitHorizon(h);
+    if (paper_) paper_->controller().setImplicitHorizon(h);
   }
   void setImplicitHorizon(double h, const core::Pose2& start, const Eigen::Vector2d& start_heading) {
-    if (paper_) paper_->setImplicitHorizon(h, start, start_heading);
+    if (paper_) paper_->controller().setImplicitHorizon(h, start, start_heading);
   }
 
  private:
-  std::unique_ptr<core::PerformanceController> paper_;
+  std::unique_ptr<core::TrackingLoop> paper_;  // the paper and fixed-rho laws
   std::unique_ptr<ProportionalController> proportional_;
   std::unique_ptr<StepLaw> external_;
   bool implicit_band_ = false;
@@ -113,6 +135,8 @@ std::string validateSetup(const ClosedLoopSetup& setup) {
   if (!sensor.empty()) return sensor;
   const std::string pose_sensor = setup.pose_sensor.validate();
   if (!pose_sensor.empty()) return pose_sensor;
+  const std::string ramp = setup.resume_ramp.validate();
+  if (!ramp.empty()) return "resume_ramp: " + ramp;
   if (!setup.initial_pose.isFinite()) err << "initial_pose must be finite";
   else if (!(std::isfinite(setup.duration) && setup.duration > 0.0)) err << "duration must be > 0, got " << setup.duration;
   else if (!(std::isfinite(setup.control_period) && setup.control_period > 0.0))

@@ -27,7 +27,7 @@ const core::FieldTable<JoystickConfig>& joystickFields() {
       field("stale_timeout", &J::stale_timeout, "s", "no event for this long -> zero until the next; 0 = off",
             core::boundedTimeoutOrOff()),
       field("reconnect_period", &J::reconnect_period, "s", "between attempts to (re)open the device",
-            core::positive()),
+            core::duration()),
       field("enable_motors", &J::enable_motors, "-", "call the driver's enable_motors service at start"),
   };
   return table;

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "amigobot_tracking/core/controller.h"
+#include "amigobot_tracking/core/tracking_loop.h"
 #include "amigobot_tracking/core/tracking_supervisor.h"
 
 using namespace amigobot_tracking::core;
@@ -144,16 +145,16 @@ TEST(TrackingSupervisor, FreshAgainRestartsOnceThenSteps) {
 TEST(TrackingSupervisor, RestartRhoRule) {
   ControllerConfig config;  // rho_0 = 1, offset 0.3
   PerformanceController far(config), near(config);
-  far.restart(TrackingSupervisor::kRestartErrorRatio);
+  far.restart(TrackingLoop::kRestartErrorRatio);
   const ControllerOutput a = far.step(0.0, Pose2{0.0, 0.0, 0.0}, TargetSample{0.0, {3.3, 0.0}}, {});
   ASSERT_TRUE(a.valid);
   EXPECT_NEAR(a.rho, 6.0, 1e-12);  // |e| = 3
   EXPECT_FALSE(a.active.envelope_widened);
-  near.restart(TrackingSupervisor::kRestartErrorRatio);
+  near.restart(TrackingLoop::kRestartErrorRatio);
   const ControllerOutput b = near.step(0.0, Pose2{0.0, 0.0, 0.0}, TargetSample{0.0, {0.5, 0.0}}, {});
   EXPECT_NEAR(b.rho, config.rho_0, 1e-12);  // |e| = 0.2: rho_0 is wider
   // reset() drops the rule: the plain start rule widens rho to |e| / max_error_ratio.
-  far.restart(TrackingSupervisor::kRestartErrorRatio);
+  far.restart(TrackingLoop::kRestartErrorRatio);
   far.reset();
   EXPECT_NEAR(far.step(0.0, Pose2{0.0, 0.0, 0.0}, TargetSample{0.0, {3.3, 0.0}}, {}).rho,
               3.0 / config.max_error_ratio, 1e-12);

@@ -48,6 +48,11 @@ inline Bounds boundedTimeout() { return interval(0.0, true, kMaxTimeout, false);
 inline Bounds boundedTimeoutOrOff() { return interval(0.0, false, kMaxTimeout, false); }  // 0 = off
 inline Bounds boundedRadius() { return interval(0.0, true, kMaxRadius, false); }
 inline Bounds boundedRadiusOrOff() { return interval(0.0, false, kMaxRadius, false); }  // 0 = off
+// A period, timeout or delay [s]: at most a day, so ros::Duration (32-bit seconds), timers
+// and sleeps hold it and its inverse rate; > 0 (or >= 0 where 0 means "off").
+constexpr double kMaxDuration = 86400.0;
+inline Bounds duration() { return interval(0.0, true, kMaxDuration, false); }
+inline Bounds durationOrZero() { return interval(0.0, false, kMaxDuration, false); }
 inline Bounds atLeast(double min) { return interval(min, false, std::numeric_limits<double>::infinity(), false); }
 inline Bounds oneOf(std::vector<std::string> choices) {
   Bounds b;

@@ -6,7 +6,8 @@
 //   require_scan) no scan within scan_timeout, gives an immediate zero and a reason.
 // - Resume: when the inputs are fresh again (and on enable) the controller is restarted:
 //   the estimator starts at the first fresh target sample with zero velocity (no spike from
-//   differentiating across the gap), and rho restarts at max(rho_0, |e| / kRestartErrorRatio),
+//   differentiating across the gap), and rho restarts at max(rho_0, |e| / 0.5)
+//   (TrackingLoop::kRestartErrorRatio),
 //   so |e|/rho <= 1/2 and T(|e|/rho) <= 0.55 (no saturating burst from an envelope pressed
 //   against |e|); rho then decays at lambda.
 // - A refused step (controller output invalid, or a command outside the diamond) gives zero.
@@ -69,9 +70,6 @@ struct SupervisorInputs {
 
 class TrackingSupervisor {
  public:
-  // |e|/rho at a restart (see above); PerformanceController::restart takes it.
-  static constexpr double kRestartErrorRatio = 0.5;
-
   enum class State {
     kDisabled,
     kTracking,       // the controller's command (ramped) was sent
@@ -82,7 +80,7 @@ class TrackingSupervisor {
 
   struct Decision {
     bool step = false;     // run the controller this cycle, then call finish()
-    bool restart = false;  // first restart it with kRestartErrorRatio
+    bool restart = false;  // first restart it (TrackingLoop::kRestartErrorRatio)
     bool publish = false;  // send `u` now (a zero, when !step)
     Twist2 u;
   };
@@ -90,8 +88,9 @@ class TrackingSupervisor {
   explicit TrackingSupervisor(const SupervisorConfig& config = SupervisorConfig()) : config_(config) {}
 
   // True when this enabled tracking (it was off): the caller restarts the controller now.
-  // The robot is taken as standing: the command leaves zero on the ramp.
-  bool enable();
+  // The robot is taken as standing: the command leaves zero on the ramp (ramp = false: the
+  // first command passes unchanged; the offline simulator's start).
+  bool enable(bool ramp = true);
   // Disables at t [s]; returns the one zero to send.
   Twist2 disable(double t);
 

@@ -1,7 +1,7 @@
-// The tracking node: runs core::PerformanceController on tf2 poses, laser and virtual
-// obstacles and publishes cmd_vel. Hosted by the nodelet `amigobot_tracking/Tracking` and
-// by the standalone `tracking_node`. Wiring only: what may be sent (enable, stale inputs,
-// resume, ramp) is core::TrackingSupervisor's; laser disks are LaserObstacles'; the
+// The tracking node: feeds core::TrackingLoop with tf2 poses, laser and virtual obstacles
+// and publishes its cmd_vel. Hosted by the nodelet `amigobot_tracking/Tracking` and by the
+// standalone `tracking_node`. Wiring only: the cycle (supervisor, controller, obstacle set,
+// reconfigure swap) is core::TrackingLoop's; laser disks are LaserObstacles'; the
 // operator's disks are VirtualObstacleInterface's; markers are buildMarkers'.
 //
 // Threads: callbacks only store their input (scan, virtual obstacle edits, reconfigure)
@@ -24,9 +24,8 @@
 
 #include "amigobot_tracking/LocalizationStatus.h"
 #include "amigobot_tracking/TrackingConfig.h"
-#include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/core/input_age.h"
-#include "amigobot_tracking/core/tracking_supervisor.h"
+#include "amigobot_tracking/core/tracking_loop.h"
 #include "amigobot_tracking/ros/laser_obstacles.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 #include "amigobot_tracking/ros/tracking_params.h"
@@ -38,27 +37,19 @@ namespace ros_layer {
 
 class TrackingNode {
  public:
-  // `tf` may be shared with the host (e.g. a benchmark filling it directly); null creates a
-  // buffer and a listener.
+  // `tf` may be shared with the host; null creates a buffer and a listener.
   TrackingNode(ros::NodeHandle nh, ros::NodeHandle pnh, std::shared_ptr<tf2_ros::Buffer> tf = nullptr);
   ~TrackingNode();
   TrackingNode(const TrackingNode&) = delete;
   TrackingNode& operator=(const TrackingNode&) = delete;
 
   // Loads and validates every parameter, then wires topics, services and the timer.
-  // Returns false (after ROS_FATAL naming the parameter) and wires nothing on error.
-  bool start();
-
-  // One whole control cycle at `now`: tf lookups, obstacle set, controller step, publish.
-  // Called by the timer; public for the benchmark.
-  void controlCycle(const ros::Time& now);
+  // Throws std::runtime_error naming the parameter, and wires nothing, on error.
+  void start();
 
   bool enabled() const;
   std::string status() const;  // "disabled", "tracking", or why the command is zero
   CycleStats cycleStats() const;
-  tf2_ros::Buffer& tfBuffer() { return *tf_; }
-  // The laser input after the tf2 MessageFilter (public for the benchmark).
-  void onScan(const sensor_msgs::LaserScan::ConstPtr& scan);
 
  private:
   struct Lookup {
@@ -70,9 +61,9 @@ class TrackingNode {
   };
   // `age` tracks the stream's arrivals (a frozen transform ages even when stamped ahead).
   Lookup lookup(const std::string& frame, const ros::Time& now, core::InputAgeTracker* age) const;
-  // The supervisor's inputs of this cycle (issue 25's checks: stamps, body intrusion).
-  core::SupervisorInputs supervisorInputsLocked(const Lookup& pose, const Lookup& target) const;
 
+  // One whole control cycle at `now`: tf lookups, the loop's step, publish.
+  void controlCycle(const ros::Time& now);
   void onTimer(const ros::TimerEvent& event);
   void onLocalizationStatus(const amigobot_tracking::LocalizationStatus::ConstPtr& msg);
   bool onEnable(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
@@ -81,9 +72,7 @@ class TrackingNode {
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   // With state_mutex_ held:
-  // The controller's step on fresh inputs; false (and a zero sent) when it was refused.
-  bool stepLocked(const ros::Time& now, const Lookup& pose, const Lookup& target, bool restart,
-                  core::ControllerOutput* out);
+  core::TrackingLoopInputs loopInputsLocked(const ros::Time& now, const Lookup& pose, const Lookup& target);
   void publishLocked(const core::Twist2& u);  // cmd_vel
   void logStopLocked() const;                 // why the supervisor sent zero (throttled)
   void publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output,
@@ -99,18 +88,14 @@ class TrackingNode {
   TrackingNodeConfig node_config_;
   core::ScanObstacleConfig scan_config_;
   core::ObstacleTrackerConfig tracker_config_;
-  core::ControllerConfig controller_config_;  // in use
-  core::ControllerConfig pending_config_;     // from dynamic_reconfigure, applied between steps
-  bool config_pending_ = false;
   bool started_ = false;
 
   // Everything the control cycle uses.
   mutable std::mutex state_mutex_;
-  core::PerformanceController controller_;
-  core::TrackingSupervisor supervisor_;
+  core::TrackingLoop loop_;  // holds the one ControllerConfig in use (and a pending one)
   std::unique_ptr<LaserObstacles> laser_;
   std::unique_ptr<VirtualObstacleInterface> virtual_obstacles_;
-  std::vector<core::Disk> obstacles_;  // laser + virtual, rebuilt every cycle
+  std::vector<core::Disk> laser_disks_, virtual_disks_;  // this cycle's inputs of the loop
   std::size_t virtual_count_ = 0;      // of the last cycle's snapshot
   ros::Time epoch_;
   core::ControllerOutput last_output_;

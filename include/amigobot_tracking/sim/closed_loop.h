@@ -11,6 +11,7 @@
 #include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/resume_ramp.h"
 #include "amigobot_tracking/sim/step_law.h"
 #include "amigobot_tracking/sim/step_size.h"
 #include "amigobot_tracking/sim/target_sensor.h"
@@ -75,6 +76,11 @@ struct ClosedLoopSetup {
   TargetSensorConfig sensor;     // noise, delay, jumps (its sample_period is replaced by the one above)
   PoseSensorConfig pose_sensor;  // how late and how often the robot's own pose arrives
   ControlLaw law = ControlLaw::kPaper;
+  // The paper and fixed-rho laws run core::TrackingLoop (the nodelet's cycle) with inputs
+  // that never go stale. resume_at_start: start as the robot resumes (controller restart,
+  // the command leaving zero on resume_ramp) instead of the paper's start.
+  bool resume_at_start = false;
+  core::RampLimits resume_ramp;
   VelocitySource velocity_source = VelocitySource::kPaperEstimator;
   BaselineParams baseline;
   double estimator_settle_time = 0.5;  // [s] estimator errors after this count as "settled"

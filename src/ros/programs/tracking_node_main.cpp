@@ -1,4 +1,6 @@
 // Standalone `tracking_node`: the tracking nodelet's logic in its own process.
+#include <exception>
+
 #include <ros/ros.h>
 
 #include "amigobot_tracking/ros/tracking_node.h"
@@ -12,7 +14,12 @@ int main(int argc, char** argv) {
   amigobot_tracking::ros_layer::initNode(argc, argv, "tracking", kHelp);
   ros::NodeHandle nh, pnh("~");
   amigobot_tracking::ros_layer::TrackingNode node(nh, pnh);
-  if (!node.start()) return 1;  // configuration error: logged, nothing enabled
+  try {
+    node.start();
+  } catch (const std::exception& e) {
+    ROS_FATAL_STREAM("tracking not started: " << e.what() << ". Nothing is enabled; fix it and restart.");
+    return 1;
+  }
   ros::AsyncSpinner spinner(2);  // timer and services/feedback may run side by side
   spinner.start();
   ros::waitForShutdown();

@@ -1,0 +1,150 @@
+// The tracking loop (core/tracking_loop.h): one call per cycle from plain inputs to the
+// command. A stale pose stops at once, a pending config is used from the next step on, laser
+// disks on the target are dropped (virtual ones never), the resume ramps up from zero, and
+// the simulator's unramped start sends the controller's own command.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "amigobot_tracking/core/tracking_loop.h"
+
+using namespace amigobot_tracking::core;
+
+namespace {
+
+const double kPeriod = 0.05;  // [s]
+
+TrackingLoopConfig loopConfig() {
+  TrackingLoopConfig c;
+  c.supervisor.control_period = kPeriod;
+  c.supervisor.require_scan = false;
+  c.target_exclusion_radius = 0.3;
+  return c;
+}
+
+// Robot at the origin facing +x, target 1 m ahead and to the left, both fresh at t.
+TrackingLoopInputs inputsAt(double t) {
+  TrackingLoopInputs in;
+  in.t = t;
+  in.have_pose = in.have_target = true;
+  in.pose_age = in.target_age = 0.01;
+  in.pose = {t, Pose2{0.0, 0.0, 0.0}};
+  in.target.stamp = t;
+  in.target.position = {1.0, 0.5};
+  return in;
+}
+
+}  // namespace
+
+TEST(TrackingLoop, StalePoseStopsAtOnceAndResumesOnTheRamp) {
+  TrackingLoop loop(loopConfig());
+  ASSERT_TRUE(loop.enable());
+  double t = 0.0;
+  TrackingLoopResult r;
+  for (int i = 0; i < 100; ++i, t += kPeriod) r = loop.step(inputsAt(t));
+  ASSERT_TRUE(r.tracking);
+  ASSERT_GT(std::abs(r.u.v) + std::abs(r.u.omega), 0.05);
+  const Twist2 cruising = r.u;
+
+  TrackingLoopInputs stale = inputsAt(t);
+  stale.pose_age = 0.6;  // > pose_timeout 0.5
+  r = loop.step(stale);
+  EXPECT_TRUE(r.publish);
+  EXPECT_FALSE(r.stepped);
+  EXPECT_EQ(r.u.v, 0.0);
+  EXPECT_EQ(r.u.omega, 0.0);
+  EXPECT_EQ(loop.supervisor().state(), TrackingSupervisor::State::kInputsStale);
+  EXPECT_NE(loop.supervisor().status().find("robot pose is stale"), std::string::npos);
+
+  // Fresh again: the controller restarts and the command leaves zero by at most one
+  // period of the ramp's acceleration.
+  t += kPeriod;
+  r = loop.step(inputsAt(t));
+  ASSERT_TRUE(r.tracking);
+  const RampLimits ramp = loopConfig().supervisor.ramp;
+  EXPECT_LE(std::abs(r.u.v), ramp.v_accel * kPeriod + 1e-12);
+  EXPECT_LE(std::abs(r.u.omega), ramp.w_accel * kPeriod + 1e-12);
+  EXPECT_TRUE(loop.supervisor().ramping());
+  EXPECT_LT(std::abs(r.u.v) + std::abs(r.u.omega), std::abs(cruising.v) + std::abs(cruising.omega));
+}
+
+TEST(TrackingLoop, PendingConfigIsUsedFromTheNextStep) {
+  TrackingLoop loop(loopConfig());
+  loop.enable();
+  loop.step(inputsAt(0.0));
+  ControllerConfig slower = loop.controller().config();
+  slower.v_max = 0.1;
+  slower.w_max = 0.3;
+  ASSERT_EQ(slower.validate(), "");
+  loop.setPendingConfig(slower);
+  EXPECT_TRUE(loop.configPending());
+  EXPECT_EQ(loop.nextConfig().v_max, 0.1);
+  EXPECT_EQ(loop.controller().config().v_max, 0.3);  // not before the step
+  double t = kPeriod;
+  TrackingLoopResult r;
+  for (int i = 0; i < 60; ++i, t += kPeriod) {
+    r = loop.step(inputsAt(t));
+    ASSERT_TRUE(r.tracking);
+    EXPECT_TRUE(DiamondSet(0.1, 0.3).contains(r.u, 1e-9)) << "step " << i;
+  }
+  EXPECT_FALSE(loop.configPending());
+  EXPECT_EQ(loop.controller().config().v_max, 0.1);
+}
+
+TEST(TrackingLoop, LaserDisksOnTheTargetAreDroppedVirtualOnesKept) {
+  TrackingLoop loop(loopConfig());
+  loop.enable();
+  const std::vector<Disk> laser = {Disk{{1.1, 0.5}, 0.1}, Disk{{-1.0, 0.0}, 0.1}};
+  const std::vector<Disk> virtuals = {Disk{{1.0, 0.6}, 0.1}};
+  TrackingLoopInputs in = inputsAt(0.0);
+  in.scan_age = 0.05;
+  in.scan_disks = &laser;
+  in.virtual_disks = &virtuals;
+  TrackingLoopResult r = loop.step(in);
+  ASSERT_EQ(r.laser_disks, 1u);  // the disk 0.1 m from the target is the target
+  ASSERT_EQ(r.virtual_disks, 1u);
+  ASSERT_EQ(loop.obstacles().size(), 2u);
+  EXPECT_EQ(loop.obstacles()[0].center.x(), -1.0);
+  EXPECT_EQ(loop.obstacles()[1].center.y(), 0.6);
+
+  in.t = in.pose.stamp = in.target.stamp = kPeriod;
+  in.scan_age = 0.6;  // stale scan: no laser disks (require_scan off: still tracking)
+  r = loop.step(in);
+  EXPECT_TRUE(r.tracking);
+  EXPECT_EQ(r.laser_disks, 0u);
+  EXPECT_EQ(loop.obstacles().size(), 1u);
+}
+
+// enable(false), the simulator's start: the bare controller's command, step by step.
+TEST(TrackingLoop, StartWithoutResumeSendsTheControllersCommand) {
+  TrackingLoop ramped(loopConfig()), direct(loopConfig());
+  ramped.enable();
+  direct.enable(false);
+  PerformanceController reference(loopConfig().controller);
+  TrackingLoopInputs in = inputsAt(0.0);
+  in.target.position = {3.0, 1.0};  // far: the start rule, not the restart's, sets rho
+  const ControllerOutput expected = reference.stepStamped(in.t, in.pose, in.target, {});
+  const TrackingLoopResult a = ramped.step(in), b = direct.step(in);
+  EXPECT_EQ(b.u.v, expected.u.v);
+  EXPECT_EQ(b.u.omega, expected.u.omega);
+  EXPECT_EQ(direct.controller().rho(), reference.rho());
+  EXPECT_LT(std::abs(a.u.v), std::abs(expected.u.v));
+  for (int i = 1; i < 50; ++i) {
+    in.t = in.pose.stamp = in.target.stamp = i * kPeriod;
+    const ControllerOutput e = reference.stepStamped(in.t, in.pose, in.target, {});
+    const TrackingLoopResult r = direct.step(in);
+    ASSERT_EQ(r.u.v, e.u.v) << "step " << i;
+    ASSERT_EQ(r.u.omega, e.u.omega) << "step " << i;
+  }
+}
+
+TEST(TrackingLoop, DisabledSendsNothingAndDisableOneZero) {
+  TrackingLoop loop(loopConfig());
+  EXPECT_FALSE(loop.step(inputsAt(0.0)).publish);
+  loop.enable();
+  EXPECT_TRUE(loop.step(inputsAt(kPeriod)).publish);
+  const Twist2 zero = loop.disable(2 * kPeriod);
+  EXPECT_EQ(zero.v, 0.0);
+  EXPECT_FALSE(loop.step(inputsAt(3 * kPeriod)).publish);
+}
