@@ -91,7 +91,7 @@ struct PublisherConfig {
         field("reference/amplitude", &P::amplitude, "m", "rose: amplitude", positive()),
         field("reference/k", &P::k, "-", "rose: petal factor", positive()),
         field("reference/period_scale", &P::period_scale, "s/rad", "rose: its own time scale", positive()),
-        field("reference/radius", &P::radius, "m", "circle: radius", core::boundedRadius()),
+        field("reference/radius", &P::radius, "m", "circle: radius", boundedRadius()),
         field("reference/period", &P::period, "s", "circle: period", positive()),
         field("reference/duration", &P::duration, "s", "spline: duration", positive()),
         field("reference/speed", &P::speed, "m/s", "waypoints: speed", positive()),
