@@ -11,6 +11,7 @@ ROOT := $(abspath $(dir $(lastword $(MAKEFILE_LIST))))
 WS := $(shell $(ROOT)/scripts/setup/workspace_dir.sh)
 export AMIGOBOT_WS := $(WS)
 JOBS ?= 2
+FUZZ_IN_TEST := packet_parser scip cola_a rplidar status_line param_value world map
 # ccache (when installed; `deps` installs it, hence `=`: looked up when a rule runs) makes
 # rebuilds cheap. The compiler sees the sources through WS/src/amigobot_tracking, so with the
 # workspace as CCACHE_BASEDIR every checkout (worktree, clean clone) shares one cache.
@@ -51,7 +52,9 @@ test: build ## build and run every test, ending with `N passed, N failed` (~15 m
 	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.
 	$(call timed,run_tests,$(CATKIN) run_tests -k; echo $$? > $(WS)/build/run_tests.rc)
 	@# A short pass of each parser's fuzzer (9 x 5 s, ASan + UBSan), each its own JUnit case.
-	-$(call timed,fuzz,$(ROOT)/scripts/test/run_fuzz.sh --seconds 5 $(RESULTS))
+	@# 5 s of each parser's fuzzer; the scenario loader's (it compiles all of core and sim under
+	@# ASan: minutes on a fresh clone) runs in `make fuzz` only.
+	-$(call timed,fuzz,$(ROOT)/scripts/test/run_fuzz.sh --seconds 5 $(RESULTS) $(FUZZ_IN_TEST))
 	@$(ROOT)/scripts/test/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
 
 # The whole stack on the emulated robot, headless (scripts/reports/run_demo.py): private master,
