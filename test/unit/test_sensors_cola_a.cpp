@@ -171,6 +171,8 @@ TEST(ColaA, EncodesRssiWhereTheConfigurationAskedForIt) {
     EXPECT_EQ(out.ranges, in.ranges);
     EXPECT_EQ(out.rssi, in.rssi);
   }
+}
+
 // Issue 25: these gave a "fresh" scan with every range dropped (blind but driving).
 TEST(ColaA, AnInvalidGeometryIsAnErrorNamingTheField) {
   const std::string good =
