@@ -8,6 +8,7 @@ amigobot_add_library(amigobot_tracking_sim
   src/sim/baseline_controller.cpp
   src/sim/baseline_estimators.cpp
   src/sim/scenario.cpp
+  src/sim/scenario_check.cpp
   src/sim/scenario_fields.cpp
   src/sim/scenario_names.cpp
   src/sim/simulator.cpp

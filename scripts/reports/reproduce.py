@@ -387,19 +387,13 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
     w("")
     w("Real-time factors are wall-clock figures of this machine (2 shared cores), the closed loop alone (CSV")
     w("written afterwards); `make bench` prints them again. See the report text above the tables for what they mean.")
-    w("")
-    w("## Beyond the paper")
-    w("")
-    w("The switches beyond the paper (all off above): tangential escape from the saddle, moving obstacles, delayed measurements.")
-    w("Definitions, every table and the plots: [beyond_paper.md](beyond_paper.md) (scripts/reports/beyond_paper.py). In short:")
-    w("")
-    for line in beyond:
+    for line in ["", "## Beyond the paper", "",
+                 "The switches beyond the paper (all off above): tangential escape from the saddle, moving obstacles, "
+                 "delayed measurements.", "Definitions, every table and the plots: [beyond_paper.md](beyond_paper.md) "
+                 "(scripts/reports/beyond_paper.py). In short:", ""] + beyond + ["", "## Clutter", "",
+                 "Twelve scene classes (pillar, U groups, gap, group threshold, corner, fast target, saddle, ring, doorway,",
+                 "moving obstacle), 50 Monte Carlo variants per class and law: [clutter.md](clutter.md) (`make clutter`)."]:
         w(line)
-    w("")
-    w("## Clutter")
-    w("")
-    w("Twelve scene classes (pillar, U groups, gap, group threshold, corner, fast target, saddle, ring, doorway,")
-    w("moving obstacle), 50 Monte Carlo variants per class and law: [clutter.md](clutter.md) (`make clutter`).")
     w.save(path)
 
 

@@ -68,7 +68,7 @@ TEST(ParamReader, BoundsAndCrossFieldRulesNameTheParameter) {
   ros::NodeHandle node = freshNamespace("node");
   node.setParam("control_rate", 0.0);
   ros_layer::TrackingNodeConfig n;
-  EXPECT_EQ(ros_layer::loadNodeConfig(node, &n), "~control_rate: must be a finite number in (0, 1000], got 0");
+  EXPECT_EQ(ros_layer::loadNodeConfig(node, &n), "~control_rate: must be a finite number in [1, 1000], got 0");
 }
 
 TEST(ParamReader, RosAriaNamesAreAliasesOfTheDriversOwn) {
