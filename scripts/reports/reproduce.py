@@ -8,7 +8,6 @@ measurements beyond the paper (scripts/reports/beyond_paper.py -> docs/beyond_pa
 import argparse
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
