@@ -24,5 +24,8 @@ fi
 echo "deps: installing ${#missing[@]} missing packages: ${missing[*]}"
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-$SUDO apt-get update -q
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+# Two `make` runs at once (a build and a test, two checkouts) wait for each other's apt lock
+# instead of failing: 10 minutes is longer than any install of these lists has taken.
+lock=(-o DPkg::Lock::Timeout=600)
+$SUDO apt-get "${lock[@]}" update -q
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get "${lock[@]}" install -y -q --no-install-recommends "${missing[@]}"
