@@ -25,13 +25,16 @@ RESULTS := $(WS)/build/test_results
 # $(call timed,PHASE,COMMAND): runs COMMAND and prints how long PHASE took (its exit code kept).
 timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
 
-PHONY := deps deps-robot build test demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
+PHONY := deps deps-workstation deps-robot build test demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
 
-deps: ## install the missing Debian packages of the robot and the workstation (tests, rviz, plots)
+deps: ## install the missing Debian packages of the robot, the workstation and the tests (all three lists)
 	$(call timed,deps,$(ROOT)/scripts/setup/install_deps.sh)
+
+deps-workstation: ## install what building, `make demo` and rviz need (no fuzzer / check-gcc11 compilers)
+	$(call timed,deps,$(ROOT)/scripts/setup/install_deps.sh --workstation)
 
 deps-robot: ## install only what the robot's computer needs (no rviz, Xvfb, clang, matplotlib)
 	@$(ROOT)/scripts/setup/install_deps.sh --robot
@@ -43,10 +46,10 @@ $(WS)/src/amigobot_tracking:
 	ln -sfn $(ROOT) $(WS)/src/amigobot_tracking
 
 # TARGETS="test_core amigobot_sim" builds only those targets (and what they need).
-build: deps $(WS)/src/amigobot_tracking ## build the package in the workspace `make where` prints (catkin_make, Release; TARGETS=...)
+build: deps-workstation $(WS)/src/amigobot_tracking ## build the package in the workspace `make where` prints (catkin_make, Release; TARGETS=...)
 	$(call timed,build,$(CATKIN) $(TARGETS))
 
-test: build ## build and run every test, ending with `N passed, N failed` (~15 min on 2 cores)
+test: deps build ## build and run every test, ending with `N passed, N failed` (~15 min on 2 cores)
 	rm -rf $(RESULTS)
 	$(call timed,build of the tests,$(CATKIN) tests)
 	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian packages of the given lists that are not yet installed.
-#   install_deps.sh            both lists: debian_packages_robot.txt + debian_packages.txt (make deps)
-#   install_deps.sh --robot    only what the robot's computer needs (make deps-robot)
+#   install_deps.sh               all three lists: robot + workstation + test (make deps, make test)
+#   install_deps.sh --workstation robot + workstation: build, demo, rviz (make build, make demo)
+#   install_deps.sh --robot       only what the robot's computer needs (make deps-robot)
 # Idempotent: does nothing (and needs no network) when every package is present.
 set -euo pipefail
 dir="$(dirname "$0")"
 case "${1:-}" in
-  "") lists=("$dir/debian_packages_robot.txt" "$dir/debian_packages.txt") ;;
+  "") lists=("$dir/debian_packages_robot.txt" "$dir/debian_packages.txt" "$dir/debian_packages_test.txt") ;;
+  --workstation) lists=("$dir/debian_packages_robot.txt" "$dir/debian_packages.txt") ;;
   --robot) lists=("$dir/debian_packages_robot.txt") ;;
-  *) echo "install_deps.sh: unknown argument '$1' (expected nothing or --robot)" >&2; exit 2 ;;
+  *) echo "install_deps.sh: unknown argument '$1' (expected nothing, --workstation or --robot)" >&2; exit 2 ;;
 esac
 mapfile -t wanted < <(sed -e 's/#.*//' -e 's/[[:space:]]//g' "${lists[@]}" | grep . | sort -u)
 missing=()
