@@ -143,6 +143,6 @@ where: ## print the catkin workspace folder (source WS/devel/setup.bash for the 
 # The `## ` text of each rule line; fails naming a target of PHONY that has none.
 HELP_LINES = sed -n 's/^\([a-z0-9-]*\):.*\#\# \(.*\)/\1\t\2/p' $(ROOT)/Makefile
 help: ## this list
-	@$(HELP_LINES) | awk -F'\t' '{printf "  make %-11s %s\n", $$1, $$2}'
+	@$(HELP_LINES) | awk -F'\t' '{printf "  make %-16s %s\n", $$1, $$2}'
 	@undocumented=$$(comm -23 <(printf '%s\n' $(PHONY) | sort) <($(HELP_LINES) | cut -f1 | sort)); \
 	  [ -z "$$undocumented" ] || { echo "make help: no '## ' line for target(s): $$undocumented" >&2; exit 1; }
