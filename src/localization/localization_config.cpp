@@ -35,6 +35,12 @@ const core::FieldTable<LocalizationConfig>& localizationFields() {
     t.push_back(field("match_distance", &C::match_distance, "m", "a beam this close to an occupied cell matches the map",
                       core::interval(0.0, true, 1.0, false)));
     t.push_back(field("min_match", &C::min_match, "-", "matching fraction below which the pose is lost", core::interval(0.0, false, 1.0, false)));
+    t.push_back(field("localized_match", &C::localized_match, "-", "matching fraction a window of scans needs to be localized",
+                      core::interval(0.0, false, 1.0, false)));
+    t.push_back(field("localized_window", &C::localized_window, "-", "scans in a row agreeing with the pose to be localized",
+                      core::interval(1, false, 1000, false)));
+    t.push_back(field("max_correction", &C::max_correction, "m", "a larger scan-matched correction is a jump (not localized)",
+                      core::positive()));
     t.push_back(field("range_max", &C::range_max, "m", "farther echoes are ignored", core::positive()));
     core::include(&t, "icp/", &C::icp,
                   core::FieldTable<IcpConfig>{
@@ -85,6 +91,7 @@ std::string LocalizationConfig::validate() const {
   if (odom_frame == base_frame) return "base_frame: must differ from odom_frame '" + odom_frame + "'";
   if (icp.min_correspondence > icp.max_correspondence)
     return "icp/min_correspondence: must be <= icp/max_correspondence (" + std::to_string(icp.max_correspondence) + ")";
+  if (localized_match < min_match) return "localized_match: must be >= min_match (" + std::to_string(min_match) + ")";
   if (1.0 / tf_rate > map_publish_period) return "map_publish_period: must be at least one tf period";
   return "";
 }

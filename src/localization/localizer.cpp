@@ -72,6 +72,7 @@ const LocalizationEstimate& Localizer::update(const RangeScan& scan, const core:
   const bool due = !settled_ || moved >= config_.min_travel || turn(odom_base, last_match_odom_) >= config_.min_rotation;
   estimate_.pose = predicted;
   estimate_.matched = false;
+  estimate_.correction = estimate_.correction_angle = 0.0;
   // Odometry alone since the last match: its uncertainty grows with the travel (10 %).
   estimate_.covariance = match_covariance_;
   estimate_.covariance(0, 0) += 0.01 * moved * moved;
@@ -95,6 +96,8 @@ const LocalizationEstimate& Localizer::update(const RangeScan& scan, const core:
   estimate_.match = after;
   estimate_.lost = after < config_.min_match;
   estimate_.matched = true;
+  estimate_.correction = travel(corrected, predicted);
+  estimate_.correction_angle = turn(corrected, predicted);
   estimate_.covariance = match_covariance_ = covariance;
   last_match_odom_ = odom_base;
   return estimate_;

@@ -24,7 +24,9 @@ LocalizationConfig loadLocalizationConfig(const ros::NodeHandle& pnh) {
 }
 
 LocalizationNode::LocalizationNode(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : config_(loadLocalizationConfig(pnh)), nh_(nh), pnh_(pnh), listener_(buffer_), updater_(nh, pnh) {
+    : config_(loadLocalizationConfig(pnh)), nh_(nh), pnh_(pnh), listener_(buffer_), updater_(nh, pnh),
+      verdict_(localization::VerdictConfig{config_.min_match, config_.localized_match, config_.max_correction,
+                                           config_.max_correction, config_.localized_window}) {
   if (config_.mode == "localization") {
     try {
       localizer_ = std::make_unique<localization::Localizer>(config_, localization::loadMap(config_.map_file));
@@ -116,13 +118,16 @@ void LocalizationNode::process(const Work& work) {
       if (!initial_pose_applied_) {  // initial_pose is where the robot is at the first scan
         localizer_->setPose(config_.initial_pose, work.odom_base);
         initial_pose_applied_ = true;
+        verdict_.poseSet();
       }
       const localization::LocalizationEstimate& e = localizer_->update(work.scan, work.odom_base);
-      update = Estimate{e.map_to_odom, e.pose, e.covariance, e.match, e.icp_goodness, e.lost};
+      update = Estimate{e.map_to_odom, e.pose, e.covariance, e.match, e.icp_goodness, e.lost, true, ""};
+      update.localized = verdict_.update({e.match, e.correction, e.correction_angle}) == localization::LocalizationVerdict::State::kLocalized;
+      update.not_localized = verdict_.reason();
       matched = e.matched;
     } else {
       const localization::MappingEstimate& e = mapper_->update(work.scan, work.odom_base);
-      update = Estimate{e.map_to_odom, e.pose, e.covariance, 0.0, 0.0, false};
+      update = Estimate{e.map_to_odom, e.pose, e.covariance, 0.0, 0.0, false, true, ""};
       const double now = ros::WallTime::now().toSec();
       if (last_map_publish_ < 0.0 || now - last_map_publish_ >= config_.map_publish_period) {
         last_map_publish_ = now;
@@ -198,11 +203,7 @@ void LocalizationNode::publishStatus(const ros::Time& stamp, const Estimate& est
   msg.header.frame_id = config_.global_frame;
   msg.match = estimate.match;
   msg.min_match = config_.min_match;
-  if (localizer_ && estimate.lost) {
-    char why[96];
-    std::snprintf(why, sizeof(why), "match %.2f < min_match %.2f", estimate.match, config_.min_match);
-    msg.reason = why;
-  }
+  if (!estimate.localized) msg.reason = estimate.not_localized;
   msg.ok = msg.reason.empty();
   status_pub_.publish(msg);
 }
@@ -235,6 +236,7 @@ void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStam
     std::lock_guard<std::mutex> engine(engine_mutex_);
     localizer_->setPose(pose, odom_base);
     initial_pose_applied_ = true;
+    verdict_.poseSet();
     map_to_odom = localizer_->estimate().map_to_odom;
   }
   ROS_INFO_STREAM_NAMED("localization", "initial pose (" << pose.x << ", " << pose.y << ", " << pose.theta << ")");
@@ -243,6 +245,8 @@ void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStam
     output_.ready = true;
     output_.estimate.map_to_odom = map_to_odom;
     output_.estimate.pose = pose;
+    output_.estimate.localized = false;
+    output_.estimate.not_localized = "initial pose set, no scan agreed with it yet";
   }
   publishTransform(map_to_odom);
   // Until the next scan is measured there, the pose is the operator's word only: tracking waits.
@@ -296,7 +300,10 @@ bool LocalizationNode::onGlobalLocalization(std_srvs::Trigger::Request&, std_srv
     }
     result = localizer_->relocalize(last_work_->scan, last_work_->odom_base);
     map_to_odom = localizer_->estimate().map_to_odom;
-    if (result.found) initial_pose_applied_ = true;
+    if (result.found) {
+      initial_pose_applied_ = true;
+      verdict_.poseSet();
+    }
   }
   char text[200];
   std::snprintf(text, sizeof text, "%s (%.3f, %.3f, %.3f) matching %.0f %% of the beams, %d candidates",
@@ -311,6 +318,8 @@ bool LocalizationNode::onGlobalLocalization(std_srvs::Trigger::Request&, std_srv
       output_.ready = true;
       output_.estimate.map_to_odom = map_to_odom;
       output_.estimate.pose = result.pose;
+      output_.estimate.localized = false;
+      output_.estimate.not_localized = "relocalised, no scan agreed with the pose yet";
       ++output_.relocalisations;
     }
     publishTransform(map_to_odom);  // the jump, in one step
@@ -324,6 +333,8 @@ void LocalizationNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& sta
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for scans (and tf " + config_.odom_frame + " -> laser)");
   } else if (output_.estimate.lost) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "lost: the scans do not fit the map");
+  } else if (!output_.estimate.localized) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "not localized: " + output_.estimate.not_localized);
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, config_.mode == "mapping" ? "mapping" : "localized");
   }

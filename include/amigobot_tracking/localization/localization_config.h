@@ -48,6 +48,9 @@ struct LocalizationConfig {
   double min_rotation = 0.05;        // [rad] rotation between scan matches
   double match_distance = 0.1;       // [m] a beam within this of an occupied cell matches the map
   double min_match = 0.4;            // [-] fraction of matching beams below which the pose is "lost"
+  double localized_match = 0.8;      // [-] "localized" needs localized_window scans in a row matching this much
+  int localized_window = 5;          // scans in a row that must agree with the pose to say "localized"
+  double max_correction = 0.1;       // [m] a larger scan-matched correction is a jump (the tracking bound rho_inf)
   double range_max = 10.0;           // [m] farther echoes are ignored
   IcpConfig icp;
   GlobalConfig global;

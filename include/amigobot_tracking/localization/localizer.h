@@ -30,6 +30,7 @@ struct LocalizationEstimate {
   double match = 0.0;        // fraction of the scan's beams on the map, [0, 1]
   double icp_goodness = 0.0;  // MRPT's fraction of paired points in the last ICP, [0, 1]
   bool matched = false;      // this scan was aligned (else: odometry only)
+  double correction = 0.0, correction_angle = 0.0;  // [m], [rad] how far this scan's match moved the pose
   bool lost = false;         // match < min_match
 };
 

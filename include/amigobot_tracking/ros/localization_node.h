@@ -28,6 +28,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "amigobot_tracking/localization/localization_verdict.h"
 #include "amigobot_tracking/localization/localizer.h"
 #include "amigobot_tracking/localization/mapper.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
@@ -58,6 +59,8 @@ class LocalizationNode {
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
     double match = 0.0, icp_goodness = 0.0;
     bool lost = false;
+    bool localized = true;  // the verdict: the match and the pose agree (mapping: always)
+    std::string not_localized;  // why not
   };
   struct Output {  // what the publishers and diagnostics read
     bool ready = false;  // a map -> odom exists (after the first scan)
@@ -102,6 +105,7 @@ class LocalizationNode {
   std::unique_ptr<localization::Localizer> localizer_;  // mode localization
   std::unique_ptr<localization::Mapper> mapper_;        // mode mapping
   bool initial_pose_applied_ = false;
+  localization::LocalizationVerdict verdict_;  // mode localization: "localized" only when match and pose agree
   std::optional<Work> last_work_;  // the last scan processed, for ~global_localization
   double last_map_publish_ = -1.0;
 
