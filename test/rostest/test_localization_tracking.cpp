@@ -152,7 +152,7 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
   ros::WallDuration(2.5).sleep();
   {
     std::lock_guard<std::mutex> lock(diagnostics_mutex);
-    EXPECT_NE(diagnostics.find("localized"), std::string::npos) << diagnostics;
+    EXPECT_EQ(diagnostics.rfind("localized|", 0), 0u) << diagnostics;  // not "not localized: ..."
     EXPECT_NE(diagnostics.find("relocalisations=2"), std::string::npos) << diagnostics;
   }
   EXPECT_TRUE(loader.unload("/localization"));
