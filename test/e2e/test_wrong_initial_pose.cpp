@@ -33,8 +33,9 @@ constexpr double kScanPeriod = 1.0 / 15.0, kControlPeriod = 0.05, kDriverSlot = 
 constexpr double kStopLimit = kScanPeriod + kControlPeriod + kDriverSlot + 0.1;
 // [m] a believed pose this far from the truth is "lost": the robot must not drive on it.
 constexpr double kLostError = 0.2;
-// Offset of the wrong pose from the truth: well outside ICP's pull-in, inside the room.
-constexpr double kWrongDx = 0.8, kWrongDy = 0.6, kWrongYaw = 0.7;
+// Offset of the wrong pose from the truth: a quarter turn and 1.2 m, far outside ICP's pull-in
+// (it settles in a wrong local minimum: the fault persists), inside the room.
+constexpr double kWrongDx = 1.0, kWrongDy = 0.7, kWrongYaw = 1.6;
 
 struct Sample {
   EmulatorStatus truth;
