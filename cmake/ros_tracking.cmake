@@ -1,7 +1,7 @@
 # Layer 3, ros: the one ROS parameter reader (every ROS library and node reads its field
-# tables through it), the tracking nodelet amigobot_tracking/Tracking and tracking_node over
+# tables through it) and the one dynamic_reconfigure mapping over any field table, the tracking nodelet amigobot_tracking/Tracking and tracking_node over
 # the core, and the reference publisher (a target for simulation and the demo).
-amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp)
+amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp src/ros/reconfigure_mapping.cpp)
 target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core ${catkin_LIBRARIES})
 
 amigobot_add_library(amigobot_tracking_ros
@@ -13,7 +13,6 @@ amigobot_add_library(amigobot_tracking_ros
   src/ros/virtual_obstacle_interface.cpp
   src/ros/laser_obstacles.cpp
   src/ros/tracking_statistics.cpp
-  src/ros/reconfigure_mapping.cpp
   src/ros/tracking_nodelet.cpp
 )
 target_include_directories(amigobot_tracking_ros SYSTEM PRIVATE ${urdfdom_INCLUDE_DIRS})

@@ -9,15 +9,16 @@ namespace aria {
 const core::FieldTable<ClientConfig>& clientFields() {
   using C = ClientConfig;
   using core::field;
+  using core::live;
   using core::nonNegative;
   using core::positive;
   static const core::FieldTable<C> table = {
       field("port", &C::port, "-", "serial device, or host:port for TCP"),
       field("baud", &C::baud, "baud", "serial only", core::atLeast(1)),
-      field("v_max", &C::v_max, "m/s", "diamond half-width in v every command is checked against", positive()),
-      field("w_max", &C::w_max, "rad/s", "diamond half-width in omega", positive()),
-      field("cmd_vel_timeout", &C::command_timeout, "s", "a request older than this becomes a stop; 0 = never",
-            core::boundedTimeoutOrOff()),
+      live(field("v_max", &C::v_max, "m/s", "diamond half-width in v every command is checked against", positive())),
+      live(field("w_max", &C::w_max, "rad/s", "diamond half-width in omega", positive())),
+      live(field("cmd_vel_timeout", &C::command_timeout, "s", "a request older than this becomes a stop; 0 = never",
+                 core::boundedTimeoutOrOff())),
       field("command_refresh", &C::command_refresh, "s", "motion command re-sent at least this often", core::duration()),
       field("min_command_interval", &C::min_command_interval, "s", "at most one motion command per this",
             nonNegative()),
@@ -34,10 +35,10 @@ const core::FieldTable<ClientConfig>& clientFields() {
       field("open_with_argument", &C::open_with_argument, "-", "OPEN int 1 as ARIA; false: a bare OPEN (p2os)"),
       field("max_packet_count", &C::max_packet_count, "-", "parser limit on the count byte",
             core::interval(3, false, 255, false)),
-      field("trans_accel", &C::trans_accel, "m/s^2", "SETA when > 0; 0 = the firmware's", nonNegative()),
-      field("trans_decel", &C::trans_decel, "m/s^2", "SETA (decel) when > 0; 0 = the firmware's", nonNegative()),
-      field("rot_accel", &C::rot_accel, "rad/s^2", "SETRA when > 0; 0 = the firmware's", nonNegative()),
-      field("rot_decel", &C::rot_decel, "rad/s^2", "SETRA (decel) when > 0; 0 = the firmware's", nonNegative()),
+      live(field("trans_accel", &C::trans_accel, "m/s^2", "SETA when > 0; 0 = the firmware's", nonNegative())),
+      live(field("trans_decel", &C::trans_decel, "m/s^2", "SETA (decel) when > 0; 0 = the firmware's", nonNegative())),
+      live(field("rot_accel", &C::rot_accel, "rad/s^2", "SETRA when > 0; 0 = the firmware's", nonNegative())),
+      live(field("rot_decel", &C::rot_decel, "rad/s^2", "SETRA (decel) when > 0; 0 = the firmware's", nonNegative())),
       field("ticks_mm", &C::ticks_mm, "ticks/mm", "TICKSMM after CONFIG, read back; 0 = not sent (FLASH)",
             core::interval(0, false, 65535, false)),
       field("drift_factor", &C::drift_factor, "1/8192", "DRIFTFACTOR after CONFIG, read back; 0 = not sent",

@@ -5,10 +5,21 @@
 namespace amigobot_tracking {
 namespace core {
 
+namespace {
+
+SupervisorConfig supervisorConfigOf(const TrackingLoopConfig& config) {
+  SupervisorConfig s = config.supervisor;
+  if (config.pose_jump_limit_is_rho_inf) s.pose_jump_limit = config.controller.rho_inf;
+  return s;
+}
+
+}  // namespace
+
 TrackingLoop::TrackingLoop(const TrackingLoopConfig& config)
-    : supervisor_(config.supervisor),
+    : supervisor_(supervisorConfigOf(config)),
       controller_(config.controller),
-      target_exclusion_radius_(config.target_exclusion_radius) {}
+      target_exclusion_radius_(config.target_exclusion_radius),
+      pose_jump_limit_is_rho_inf_(config.pose_jump_limit_is_rho_inf) {}
 
 bool TrackingLoop::enable(bool resume) {
   if (!supervisor_.enable(resume)) return false;
@@ -20,10 +31,10 @@ Twist2 TrackingLoop::disable(double t) { return supervisor_.disable(t); }
 
 void TrackingLoop::assembleObstacles(const TrackingLoopInputs& in, TrackingLoopResult* result) {
   obstacles_.clear();
-  if (in.scan_disks && supervisor_.scanFresh(in.scan_age)) {
+  if (in.scan_disks && supervisor_.scanFresh(in.supervisor.scan_age)) {
     obstacles_ = *in.scan_disks;
     // Laser disks on the followed robot are the target, not obstacles.
-    if (in.have_target) dropDisksNear(in.target.position, target_exclusion_radius_, &obstacles_);
+    if (in.supervisor.have_target) dropDisksNear(in.target.position, target_exclusion_radius_, &obstacles_);
   }
   result->laser_disks = obstacles_.size();
   if (in.virtual_disks) obstacles_.insert(obstacles_.end(), in.virtual_disks->begin(), in.virtual_disks->end());
@@ -34,20 +45,11 @@ TrackingLoopResult TrackingLoop::step(const TrackingLoopInputs& in) {
   TrackingLoopResult r;
   if (pending_) {  // reconfigure: swapped between two steps only
     controller_.setConfig(*pending_);
+    if (pose_jump_limit_is_rho_inf_) supervisor_.setPoseJumpLimit(pending_->rho_inf);
     pending_.reset();
   }
   assembleObstacles(in, &r);
-  SupervisorInputs s;
-  s.have_pose = in.have_pose;
-  s.pose_age = in.pose_age;
-  s.have_target = in.have_target;
-  s.target_age = in.target_age;
-  s.scan_age = in.scan_age;
-  s.pose_problem = in.pose_problem;
-  s.target_problem = in.target_problem;
-  s.scan_problem = in.scan_problem;
-  s.localization_problem = in.localization_problem;
-  s.body_intrusion = in.body_intrusion;
+  SupervisorInputs s = in.supervisor;
   s.pose_position = in.pose.pose.position();
   const TrackingSupervisor::Decision decision = supervisor_.begin(in.t, s);
   r.publish = decision.publish;

@@ -10,11 +10,11 @@
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Range.h>
 #include <std_msgs/Bool.h>
-#include <std_msgs/Float64.h>
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 #include "amigobot_tracking/ros/param_reader.h"
+#include "amigobot_tracking/ros/reconfigure_mapping.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -96,7 +96,6 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
     : params_(loadDriverParams(pnh)), nh_(nh), pnh_(pnh), updater_(nh, pnh) {
   odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 10);
   sonar_pub_ = nh_.advertise<sensor_msgs::Range>("sonar_range", 50);
-  battery_pub_ = nh_.advertise<std_msgs::Float64>("battery_voltage", 1);
   motors_pub_ = nh_.advertise<std_msgs::Bool>("motors_state", 1, true);
   sonar_cloud_pub_ = nh_.advertise<sensor_msgs::PointCloud2>("sonar_cloud", 1);
   state_topics_ = std::make_unique<DriverStateTopics>(nh_, params_.base_frame);
@@ -130,19 +129,12 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
 }
 
 void AmigobotDriver::onReconfigure(amigobot_tracking::DriverConfig& config, std::uint32_t /*level*/) {
-  const std::string error = client_->setMotionLimits({config.v_max, config.w_max, config.cmd_vel_timeout,
-                                                      config.trans_accel, config.trans_decel, config.rot_accel,
-                                                      config.rot_decel});
+  aria::ClientConfig limits = client_->motionLimits();
+  std::string error = applyReconfigure(config, aria::clientFields(), &limits);
+  if (error.empty()) error = client_->setMotionLimits(limits);
   if (error.empty()) return;
   ROS_WARN_STREAM("dynamic_reconfigure: " << error << "; keeping the limits in force");
-  const aria::MotionLimits now = client_->motionLimits();
-  config.v_max = now.v_max;
-  config.w_max = now.w_max;
-  config.cmd_vel_timeout = now.command_timeout;
-  config.trans_accel = now.trans_accel;
-  config.trans_decel = now.trans_decel;
-  config.rot_accel = now.rot_accel;
-  config.rot_decel = now.rot_decel;
+  fillReconfigure(aria::clientFields(), client_->motionLimits(), &config);
 }
 
 AmigobotDriver::~AmigobotDriver() {
@@ -202,9 +194,6 @@ void AmigobotDriver::onSip(const aria::RobotState& state) {
     t.transform.rotation = odom.pose.pose.orientation;
     tf_.sendTransform(t);
   }
-  std_msgs::Float64 battery;
-  battery.data = state.battery_voltage;
-  battery_pub_.publish(battery);
   publishMotorsStateLocked(state.motors_enabled);
   // One sensor_msgs/Range per transducer reading in this SIP, in the transducer's frame.
   // REP 117: no echo within the maximum range is +inf.

@@ -7,6 +7,7 @@
 #include <amigobot_tracking/WheelStall.h>
 #include <sensor_msgs/BatteryState.h>
 #include <std_msgs/Bool.h>
+#include <std_msgs/Float64.h>
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -36,6 +37,7 @@ std::vector<bool> bumperBits(std::uint8_t byte, int count) {
 }  // namespace
 
 DriverStateTopics::DriverStateTopics(ros::NodeHandle& nh, std::string base_frame) : base_frame_(std::move(base_frame)) {
+  battery_voltage_pub_ = nh.advertise<std_msgs::Float64>("battery_voltage", 1);
   battery_pub_ = nh.advertise<sensor_msgs::BatteryState>("battery", 1);
   stall_pub_ = nh.advertise<amigobot_tracking::WheelStall>("stall", 1, true);
   bumper_pub_ = nh.advertise<amigobot_tracking::Bumpers>("bumper", 1, true);
@@ -49,6 +51,9 @@ void DriverStateTopics::sayOnce(bool& said, const std::string& text) {
 }
 
 void DriverStateTopics::publishBattery(const aria::Sip& sip, double voltage, const ros::Time& stamp) {
+  std_msgs::Float64 volts;
+  volts.data = voltage;
+  battery_voltage_pub_.publish(volts);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   sensor_msgs::BatteryState b;
   b.header.stamp = stamp;

@@ -16,9 +16,8 @@ namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
 
-core::SupervisorConfig supervisorConfigOf(const TrackingNodeConfig& node, const core::ControllerConfig& controller) {
+core::SupervisorConfig supervisorConfigOf(const TrackingNodeConfig& node) {
   core::SupervisorConfig c;
-  c.pose_jump_limit = controller.rho_inf;  // a localisation jump larger than the tracking bound stops
   c.max_speed = node.robot_v_max;
   c.pose_timeout = node.pose_timeout;
   c.scan_timeout = node.scan_timeout;
@@ -63,7 +62,8 @@ void TrackingNode::start() {
   if (error.empty()) error = loadObstacleTrackerConfig(pnh_, &tracker_config_);
   if (error.empty()) error = loadVirtualObstacles(pnh_, &initial);
   if (!error.empty()) throw std::runtime_error(error);
-  loop_config.supervisor = supervisorConfigOf(node_config_, loop_config.controller);
+  loop_config.supervisor = supervisorConfigOf(node_config_);
+  loop_config.pose_jump_limit_is_rho_inf = true;  // a localisation jump larger than the tracking bound stops
   loop_config.target_exclusion_radius = node_config_.target_exclusion_radius;
   loop_ = core::TrackingLoop(loop_config);
   epoch_ = ros::Time::now();
@@ -88,7 +88,7 @@ void TrackingNode::start() {
 
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TrackingConfig>>(reconfigure_mutex_, pnh_);
   TrackingConfig initial_gains;
-  const std::string unmapped = fillReconfigure(loop_.controller().config(), &initial_gains);
+  const std::string unmapped = fillReconfigure(core::controllerFields(), loop_.controller().config(), &initial_gains);
   if (!unmapped.empty()) ROS_ERROR_STREAM_NAMED("tracking", unmapped);
   reconfigure_->updateConfig(initial_gains);
   reconfigure_->setCallback([this](TrackingConfig& config, uint32_t level) { onReconfigure(config, level); });
@@ -155,17 +155,17 @@ core::TrackingLoopInputs TrackingNode::loopInputsLocked(const ros::Time& now, co
                                                        const Lookup& target) {
   core::TrackingLoopInputs in;
   in.t = sinceEpoch(now);
-  in.have_pose = pose.ok;
-  in.pose_age = pose.age;
+  in.supervisor.have_pose = pose.ok;
+  in.supervisor.pose_age = pose.age;
   // A static transform has no stamp: use now.
   const ros::Time pose_stamp = pose.transform.header.stamp.isZero() ? now : pose.transform.header.stamp;
   in.pose = {sinceEpoch(pose_stamp), toPose2(pose.transform.transform)};
-  in.have_target = target.ok;
-  in.target_age = target.age;
+  in.supervisor.have_target = target.ok;
+  in.supervisor.target_age = target.age;
   const ros::Time stamp = target.transform.header.stamp.isZero() ? now : target.transform.header.stamp;
   in.target.stamp = sinceEpoch(stamp);
   in.target.position = {target.transform.transform.translation.x, target.transform.transform.translation.y};
-  in.scan_age = scan_age_;
+  in.supervisor.scan_age = scan_age_;
   laser_disks_.clear();
   // With moving_obstacles the laser disks carry velocities from the tracker.
   if (loop_.scanFresh(scan_age_)) laser_->obstacles(loop_.nextConfig().moving_obstacles, now, &laser_disks_);
@@ -174,15 +174,15 @@ core::TrackingLoopInputs TrackingNode::loopInputsLocked(const ros::Time& now, co
   in.scan_disks = &laser_disks_;
   in.virtual_disks = &virtual_disks_;
   // Issue 25's checks: untrusted stamps, bad localisation, something inside the body.
-  in.pose_problem = pose.problem;
-  in.target_problem = target.problem;
-  in.scan_problem = laser_->scanProblem();
+  in.supervisor.pose_problem = pose.problem;
+  in.supervisor.target_problem = target.problem;
+  in.supervisor.scan_problem = laser_->scanProblem();
   {
     std::lock_guard<std::mutex> lock(localization_mutex_);
-    in.localization_problem = localization_problem_;
+    in.supervisor.localization_problem = localization_problem_;
   }
   if (pose.ok)
-    in.body_intrusion = core::bodyIntrusion(in.pose.pose.position(), loop_.nextConfig().robot_radius, laser_disks_,
+    in.supervisor.body_intrusion = core::bodyIntrusion(in.pose.pose.position(), loop_.nextConfig().robot_radius, laser_disks_,
                                             virtual_obstacles_->snapshot().all());
   return in;
 }
@@ -255,16 +255,16 @@ void TrackingNode::onReconfigure(TrackingConfig& config, uint32_t) {
   // The robot's limits cap the diamond; the capped value is shown back in the GUI.
   config.v_max = std::min(config.v_max, node_config_.robot_v_max);
   config.w_max = std::min(config.w_max, node_config_.robot_w_max);
-  std::string invalid = applyReconfigure(config, &candidate);
+  std::string invalid = applyReconfigure(config, core::controllerFields(), &candidate);
   if (invalid.empty()) invalid = candidate.validate();
   if (invalid.empty()) invalid = core::bandReachError(candidate, 1.0 / node_config_.control_rate);
   if (!invalid.empty()) {
     ROS_ERROR_STREAM_NAMED("tracking", "reconfigure rejected, gains unchanged: " << invalid);
-    fillReconfigure(loop_.nextConfig(), &config);
+    fillReconfigure(core::controllerFields(), loop_.nextConfig(), &config);
     return;
   }
   loop_.setPendingConfig(candidate);
-  ROS_INFO_STREAM_NAMED("tracking", "reconfigure: " << describeLiveFields(candidate));
+  ROS_INFO_STREAM_NAMED("tracking", "reconfigure: " << core::describeLiveFields(core::controllerFields(), candidate));
 }
 
 }  // namespace ros_layer

@@ -57,10 +57,10 @@ class Law {
     if (!paper_) return proportional_->step(t, robot.pose, sample, obstacles);
     core::TrackingLoopInputs in;
     in.t = t;
-    in.have_pose = in.have_target = true;
-    in.pose_age = t - robot.stamp;
+    in.supervisor.have_pose = in.supervisor.have_target = true;
+    in.supervisor.pose_age = t - robot.stamp;
     in.pose = robot;
-    in.target_age = t - sample.stamp;
+    in.supervisor.target_age = t - sample.stamp;
     in.target = sample;
     in.virtual_disks = &obstacles;
     const core::TrackingLoopResult r = paper_->step(in);

@@ -80,10 +80,10 @@ void BM_LoopStep(benchmark::State& state) {
     scanToObstacles(geometry, ranges, sensor_to_global, scan_config, &laser);
     TrackingLoopInputs in;
     in.t = t;
-    in.have_pose = in.have_target = true;
+    in.supervisor.have_pose = in.supervisor.have_target = true;
     in.pose = {t, robot};
     in.target = {t, Eigen::Vector2d(std::cos(0.1 * t + 0.5), std::sin(0.1 * t + 0.5))};
-    in.scan_age = 0.01;
+    in.supervisor.scan_age = 0.01;
     in.scan_disks = &laser;
     in.virtual_disks = &virtuals;
     const TrackingLoopResult r = loop.step(in);

@@ -59,7 +59,7 @@ TEST(AriaClientConfig, BadFieldsAreNamed) {
 
 TEST(AriaClientConfig, RunTimeLimitsAreCheckedLikeTheConfigAndNameTheField) {
   AriaClient client(ClientConfig{}, [](LogLevel, const std::string&) {});
-  MotionLimits limits = client.motionLimits();
+  ClientConfig limits = client.motionLimits();
   EXPECT_DOUBLE_EQ(limits.v_max, 0.3);
   limits.v_max = 1.5;  // amigo max_velocity 1.0
   EXPECT_NE(client.setMotionLimits(limits).find("v_max: exceeds"), std::string::npos);
@@ -67,9 +67,13 @@ TEST(AriaClientConfig, RunTimeLimitsAreCheckedLikeTheConfigAndNameTheField) {
   limits.rot_accel = -1.0;
   EXPECT_NE(client.setMotionLimits(limits).find("rot_accel"), std::string::npos);
   limits.rot_accel = 2.0;
+  limits.port = "elsewhere:1";  // not live: ignored
+  limits.command_refresh = 0.1;
   EXPECT_EQ(client.setMotionLimits(limits), "");
   EXPECT_DOUBLE_EQ(client.motionLimits().v_max, 0.2);
   EXPECT_DOUBLE_EQ(client.motionLimits().rot_accel, 2.0);
+  EXPECT_EQ(client.motionLimits().port, ClientConfig().port);
+  EXPECT_DOUBLE_EQ(client.motionLimits().command_refresh, ClientConfig().command_refresh);
 }
 
 TEST(AriaClientConfig, CalibrationOutsideTheFirmwareRangeIsRefused) {

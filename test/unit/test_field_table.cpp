@@ -89,6 +89,20 @@ TEST(FieldTable, VisitsEveryRowInOrderWithDefaults) {
   EXPECT_FALSE(t[1].live);
 }
 
+// What reconfigure changes: the live rows only (here "rate"), compared and logged the same way.
+TEST(FieldTable, CopiesComparesAndDescribesTheLiveRowsOnly) {
+  const FieldTable<Demo> t = demoTable();
+  Demo from, to;
+  from.rate = 42.0;
+  from.count = 9;
+  EXPECT_FALSE(sameLiveFields(t, from, to));
+  copyLiveFields(t, from, &to);
+  EXPECT_EQ(to.rate, 42.0);
+  EXPECT_EQ(to.count, 3) << "a row that is not live is never copied";
+  EXPECT_TRUE(sameLiveFields(t, from, to)) << "count differs, but it is not live";
+  EXPECT_EQ(describeLiveFields(t, to), "rate 42");
+}
+
 TEST(FieldTable, FormatsRealsShortestExact) {
   EXPECT_EQ(formatValue(0.15), "0.15");
   EXPECT_EQ(formatValue(1e-3), "0.001");

@@ -18,24 +18,14 @@
 #include "amigobot_tracking/localization/occupancy_map.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/world/world.h"
+#include "temp_dir.h"
 
 using namespace amigobot_tracking;
 
 namespace {
 
-class InputFiles : public ::testing::Test {
+class InputFiles : public TempDirTest {
  protected:
-  void SetUp() override {
-    char pattern[] = "/tmp/amigobot_input_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(pattern), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = dir_ + "/" + name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
   // The error of loadMap for a map YAML whose image is `image` (a path or a file written here).
   std::string mapError(const std::string& image) {
     const std::string yaml = write("map.yaml", "image: " + image +
@@ -52,7 +42,6 @@ class InputFiles : public ::testing::Test {
     }
     return "no error";
   }
-  std::string dir_;
 };
 
 // A document whose aliases expand to 10^levels entries: a few hundred bytes.

@@ -3,31 +3,19 @@
 // refused naming the file and the key.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "amigobot_tracking/localization/occupancy_map.h"
+#include "temp_dir.h"
 
 using namespace amigobot_tracking::localization;
 
 namespace {
 
-class MapFiles : public ::testing::Test {
+class MapFiles : public TempDirTest {
  protected:
-  void SetUp() override {
-    char pattern[] = "/tmp/amigobot_map_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(pattern), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = dir_ + "/" + name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
   // The error loadMap throws for the YAML text (with a valid 2x2 image beside it).
   std::string errorOf(const std::string& yaml) {
     write("ok.pgm", std::string("P5\n2 2\n255\n") + char(0) + char(254) + char(205) + char(0));
@@ -39,7 +27,6 @@ class MapFiles : public ::testing::Test {
     }
     return "no error";
   }
-  std::string dir_;
 };
 
 const char kGoodYaml[] = "image: ok.pgm\nresolution: 0.1\norigin: [-1.0, 2.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";

@@ -2,7 +2,8 @@
 // when the files that document them drift: every tracking field in config/tracking.yaml or
 // config/controller_experiment.yaml (with a comment on its line; "(reconfigurable)" exactly
 // for the live ones), every driver field in config/driver.yaml, each in the docs'
-// parameter tables (the laser's in config/laser.yaml too), and in cfg/Tracking.cfg exactly when live -- and the other way, no cfg
+// parameter tables (the laser's in config/laser.yaml too), and in cfg/Tracking.cfg (cfg/Driver.cfg: with
+// the same default) exactly when live -- and the other way, no cfg
 // entry or docs row of the two nodelets' tables naming no field.
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "amigobot_tracking/aria/client.h"
 #include "amigobot_tracking/core/controller_config.h"
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
@@ -218,15 +220,50 @@ TEST(ParamCoverage, EveryFieldIsInTheReadmeAndEveryRowNamesOne) {
     EXPECT_TRUE(driver.count(name)) << "docs driver row `" << name << "` names no field";
 }
 
-TEST(ParamCoverage, TheCfgHasExactlyTheLiveFields) {
-  static const std::regex add(R"re(gen\.add\(\s*"([A-Za-z0-9_]+)")re");
-  std::set<std::string> cfg;
-  for (const std::string& line : lines("cfg/Tracking.cfg")) {
+// gen.add("name", type, level, "description", default, ...) of a .cfg: name -> default text.
+std::map<std::string, std::string> cfgEntries(const std::string& path) {
+  static const std::regex add(R"re(gen\.add\(\s*"([A-Za-z0-9_]+)"\s*,\s*\w+\s*,\s*[^,]+,\s*"[^"]*"\s*,\s*([^,\)]+))re");
+  std::map<std::string, std::string> entries;
+  for (const std::string& line : lines(path)) {
     std::smatch m;
-    if (std::regex_search(line, m, add)) cfg.insert(m[1].str());
+    if (std::regex_search(line, m, add)) entries[m[1].str()] = m[2].str();
   }
+  return entries;
+}
+
+// Every live row of `table` is an entry of the .cfg with the row's default, and no other row is.
+template <class C>
+void expectCfgIsTheLiveRows(const std::string& path, const core::FieldTable<C>& table) {
+  const std::map<std::string, std::string> cfg = cfgEntries(path);
+  EXPECT_FALSE(cfg.empty()) << path;
+  for (const core::Field<C>& f : table) {
+    const auto it = cfg.find(f.key);
+    EXPECT_EQ(it != cfg.end(), f.live) << f.key << ": in " << path << " exactly when live";
+    if (it == cfg.end() || !f.live) continue;
+    const core::FieldValue def = core::defaultValue(f);
+    if (const double* d = std::get_if<double>(&def)) {
+      EXPECT_DOUBLE_EQ(std::stod(it->second), *d) << path << ": " << f.key << " default";
+    } else if (const int* i = std::get_if<int>(&def)) {
+      EXPECT_EQ(std::stoi(it->second), *i) << path << ": " << f.key << " default";
+    } else if (const bool* b = std::get_if<bool>(&def)) {
+      EXPECT_EQ(it->second == "True", *b) << path << ": " << f.key << " default";
+    }
+  }
+}
+
+TEST(ParamCoverage, TheCfgHasExactlyTheLiveFields) {
+  const std::map<std::string, std::string> cfg = cfgEntries("cfg/Tracking.cfg");
   EXPECT_FALSE(cfg.empty());
   for (const auto& [key, row] : nodeletFields())
     EXPECT_EQ(cfg.count(key) > 0, row.live) << key << ": in cfg/Tracking.cfg exactly when live";
-  for (const std::string& name : cfg) EXPECT_TRUE(nodeletFields().count(name)) << "cfg entry " << name << " names no field";
+  for (const auto& [name, def] : cfg) EXPECT_TRUE(nodeletFields().count(name)) << "cfg entry " << name << " names no field";
+  expectCfgIsTheLiveRows("cfg/Tracking.cfg", core::controllerFields());
+}
+
+// The driver's dynamic_reconfigure is the live rows of the client's table (ros/reconfigure_mapping.h):
+// Driver.cfg lists exactly those, with their defaults, and no entry names anything else.
+TEST(ParamCoverage, DriverCfgIsTheClientsLiveRowsWithTheirDefaults) {
+  expectCfgIsTheLiveRows("cfg/Driver.cfg", aria::clientFields());
+  for (const auto& [name, def] : cfgEntries("cfg/Driver.cfg"))
+    EXPECT_TRUE(driverRows().count(name)) << "cfg/Driver.cfg entry " << name << " names no driver field";
 }

@@ -27,8 +27,8 @@ TrackingLoopConfig loopConfig() {
 TrackingLoopInputs inputsAt(double t) {
   TrackingLoopInputs in;
   in.t = t;
-  in.have_pose = in.have_target = true;
-  in.pose_age = in.target_age = 0.01;
+  in.supervisor.have_pose = in.supervisor.have_target = true;
+  in.supervisor.pose_age = in.supervisor.target_age = 0.01;
   in.pose = {t, Pose2{0.0, 0.0, 0.0}};
   in.target.stamp = t;
   in.target.position = {1.0, 0.5};
@@ -48,7 +48,7 @@ TEST(TrackingLoop, StalePoseStopsAtOnceAndResumesOnTheRamp) {
   const Twist2 cruising = r.u;
 
   TrackingLoopInputs stale = inputsAt(t);
-  stale.pose_age = 0.6;  // > pose_timeout 0.5
+  stale.supervisor.pose_age = 0.6;  // > pose_timeout 0.5
   r = loop.step(stale);
   EXPECT_TRUE(r.publish);
   EXPECT_FALSE(r.stepped);
@@ -98,7 +98,7 @@ TEST(TrackingLoop, LaserDisksOnTheTargetAreDroppedVirtualOnesKept) {
   const std::vector<Disk> laser = {Disk{{1.1, 0.5}, 0.1}, Disk{{-1.0, 0.0}, 0.1}};
   const std::vector<Disk> virtuals = {Disk{{1.0, 0.6}, 0.1}};
   TrackingLoopInputs in = inputsAt(0.0);
-  in.scan_age = 0.05;
+  in.supervisor.scan_age = 0.05;
   in.scan_disks = &laser;
   in.virtual_disks = &virtuals;
   TrackingLoopResult r = loop.step(in);
@@ -109,7 +109,7 @@ TEST(TrackingLoop, LaserDisksOnTheTargetAreDroppedVirtualOnesKept) {
   EXPECT_EQ(loop.obstacles()[1].center.y(), 0.6);
 
   in.t = in.pose.stamp = in.target.stamp = kPeriod;
-  in.scan_age = 0.6;  // stale scan: no laser disks (require_scan off: still tracking)
+  in.supervisor.scan_age = 0.6;  // stale scan: no laser disks (require_scan off: still tracking)
   r = loop.step(in);
   EXPECT_TRUE(r.tracking);
   EXPECT_EQ(r.laser_disks, 0u);
@@ -137,6 +137,44 @@ TEST(TrackingLoop, StartWithoutResumeSendsTheControllersCommand) {
     ASSERT_EQ(r.u.v, e.u.v) << "step " << i;
     ASSERT_EQ(r.u.omega, e.u.omega) << "step " << i;
   }
+}
+
+// The robot's rule: a localisation jump beyond the tracking bound stops, and the bound is the
+// rho_inf in use, so a reconfigured rho_inf moves it (a jump of 0.3 m beyond what max_speed
+// explains stops at rho_inf 0.1 m, not at 0.5 m).
+TEST(TrackingLoop, PoseJumpLimitFollowsTheReconfiguredRhoInf) {
+  TrackingLoopConfig config = loopConfig();
+  config.pose_jump_limit_is_rho_inf = true;
+  config.supervisor.max_speed = 1.0;  // explains 0.05 m per period
+  const double jump = 0.35;
+  auto jumpAfter = [&](TrackingLoop& loop, const ControllerConfig* pending) {
+    loop.enable();
+    double t = 0.0;
+    for (int i = 0; i < 5; ++i, t += kPeriod) EXPECT_TRUE(loop.step(inputsAt(t)).tracking) << loop.supervisor().status();
+    if (pending) loop.setPendingConfig(*pending);
+    EXPECT_TRUE(loop.step(inputsAt(t)).tracking);
+    TrackingLoopInputs jumped = inputsAt(t + kPeriod);
+    jumped.pose.pose.x += jump;
+    return loop.step(jumped);
+  };
+  TrackingLoop fixed(config);
+  EXPECT_EQ(fixed.supervisor().config().pose_jump_limit, config.controller.rho_inf);
+  TrackingLoopResult r = jumpAfter(fixed, nullptr);
+  EXPECT_FALSE(r.tracking);
+  EXPECT_EQ(fixed.supervisor().status().rfind("localisation: pose jumped", 0), 0u) << fixed.supervisor().status();
+
+  ControllerConfig wider = config.controller;
+  wider.rho_inf = 0.5;
+  ASSERT_EQ(wider.validate(), "");
+  TrackingLoop reconfigured(config);
+  r = jumpAfter(reconfigured, &wider);
+  EXPECT_EQ(reconfigured.supervisor().config().pose_jump_limit, 0.5);
+  EXPECT_TRUE(r.tracking) << reconfigured.supervisor().status();
+
+  config.pose_jump_limit_is_rho_inf = false;  // the simulator: no jump rule
+  TrackingLoop off(config);
+  EXPECT_EQ(off.supervisor().config().pose_jump_limit, 0.0);
+  EXPECT_TRUE(jumpAfter(off, nullptr).tracking);
 }
 
 TEST(TrackingLoop, DisabledSendsNothingAndDisableOneZero) {

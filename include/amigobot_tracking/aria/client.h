@@ -63,15 +63,10 @@ struct ClientConfig {
 };
 
 // The plain fields (robot and command_mode are chosen by name: see ros/driver.h). Keys are the
-// driver's ROS parameters (cmd_vel_timeout: the command_timeout member).
+// driver's ROS parameters (cmd_vel_timeout: the command_timeout member). The live rows are
+// the motion limits, which may change while the client runs (the driver's
+// dynamic_reconfigure, cfg/Driver.cfg names them).
 const core::FieldTable<ClientConfig>& clientFields();
-
-// What may change while the client runs (the driver's dynamic_reconfigure).
-struct MotionLimits {
-  double v_max = 0.3, w_max = 0.8;  // [m/s], [rad/s] the diamond
-  double command_timeout = 0.6;     // [s]
-  double trans_accel = 0.0, trans_decel = 0.0, rot_accel = 0.0, rot_decel = 0.0;  // 0 = firmware's
-};
 
 enum class LinkState { kStopped, kConnecting, kConnected, kWaitingToReconnect };
 std::string linkStateName(LinkState state);
@@ -130,10 +125,12 @@ class AriaClient {
   void setVelocity(const core::Twist2& twist);
   void requestMotors(bool enabled);
   void resetOdometry(const core::Pose2& pose = {});
-  // Checks `limits` as ClientConfig::validate does; valid ones take effect before the next
-  // command (SETA/SETRA for the positive accelerations). Returns "" or "field: reason".
-  std::string setMotionLimits(const MotionLimits& limits);
-  MotionLimits motionLimits() const;
+  // The live rows of clientFields() in `limits` (the rest is ignored), checked as
+  // ClientConfig::validate does; valid ones take effect before the next command (SETA/SETRA
+  // for the positive accelerations). Returns "" or "field: reason".
+  std::string setMotionLimits(const ClientConfig& limits);
+  // The config with the limits in force, or about to be (set but not yet applied).
+  ClientConfig motionLimits() const;
   ClientStatus status() const;
   const ClientConfig& config() const { return config_; }
 
@@ -194,7 +191,7 @@ class AriaClient {
   bool have_request_ = false;
   bool motors_request_pending_ = false;
   std::optional<core::Pose2> odometry_reset_;
-  std::optional<MotionLimits> pending_limits_;
+  std::optional<ClientConfig> pending_limits_;  // the config with the new limits
 
   // I/O thread only.
   Clock::time_point last_rx_{}, last_sip_{}, last_motion_sent_{}, last_enable_sent_{};

@@ -187,6 +187,30 @@ void visitFields(const FieldTable<C>& table, const C& config, Visit&& visit) {
   for (const Field<C>& f : table) visit(f, f.get(config));
 }
 
+// Copies the live rows (what reconfigure may change) of `from` into *to.
+template <class C>
+void copyLiveFields(const FieldTable<C>& table, const C& from, C* to) {
+  for (const Field<C>& f : table)
+    if (f.live) f.set(*to, f.get(from));
+}
+
+// True when every live row has the same value in a and b.
+template <class C>
+bool sameLiveFields(const FieldTable<C>& table, const C& a, const C& b) {
+  for (const Field<C>& f : table)
+    if (f.live && !(f.get(a) == f.get(b))) return false;
+  return true;
+}
+
+// "k_d 0.15, k_o 1, ..." over the live rows, for the log.
+template <class C>
+std::string describeLiveFields(const FieldTable<C>& table, const C& config) {
+  std::string out;
+  for (const Field<C>& f : table)
+    if (f.live) out += (out.empty() ? "" : ", ") + f.key + " " + formatValue(f.get(config));
+  return out;
+}
+
 // The value of the row in a default-constructed C.
 template <class C>
 FieldValue defaultValue(const Field<C>& f) {

@@ -25,23 +25,22 @@ struct TrackingLoopConfig {
   SupervisorConfig supervisor;
   ControllerConfig controller;        // must be valid (validate() empty)
   double target_exclusion_radius = 0.0;  // [m] laser disks this near the target are the target; 0: none dropped
+  // A localisation jump larger than the tracking bound stops (the robot): the supervisor's
+  // pose_jump_limit is the controller's rho_inf, at start and after every config swap.
+  bool pose_jump_limit_is_rho_inf = false;
 };
 
 // What one cycle sees. The disk vectors are read during step() only.
 struct TrackingLoopInputs {
-  double t = 0.0;                    // [s] now
-  bool have_pose = false;            // the robot pose exists
-  double pose_age = 0.0;             // [s] at t
-  PoseSample pose;                   // its stamp in the same clock as t
-  bool have_target = false;
-  double target_age = 0.0;           // [s] at t
+  double t = 0.0;  // [s] now
+  // Presence, ages and why an input is not trusted (stamps, localisation, something inside
+  // the body); each non-empty problem stops the robot, named in the status. Its
+  // pose_position is taken from `pose` by step().
+  SupervisorInputs supervisor;
+  PoseSample pose;  // its stamp in the same clock as t
   TargetSample target;
-  double scan_age = -1.0;            // [s] of the scan the laser disks come from; < 0: none yet
-  const std::vector<Disk>* scan_disks = nullptr;     // laser; used only while the scan is fresh
+  const std::vector<Disk>* scan_disks = nullptr;     // laser; used only while supervisor.scan_age is fresh
   const std::vector<Disk>* virtual_disks = nullptr;  // always used
-  // Why an input is not trusted, "" when it is (SupervisorInputs: stamps, localisation,
-  // something inside the body); each non-empty one stops the robot, named in the status.
-  std::string pose_problem, target_problem, scan_problem, localization_problem, body_intrusion;
 };
 
 struct TrackingLoopResult {
@@ -90,6 +89,7 @@ class TrackingLoop {
   PerformanceController controller_;
   std::optional<ControllerConfig> pending_;
   double target_exclusion_radius_;
+  bool pose_jump_limit_is_rho_inf_;
   std::vector<Disk> obstacles_;
 };
 

@@ -108,6 +108,8 @@ class TrackingSupervisor {
   // "disabled", "tracking", or why the command is zero.
   const std::string& status() const { return status_; }
   const SupervisorConfig& config() const { return config_; }
+  // Between two cycles (the tracking bound changed by reconfigure); 0 = off.
+  void setPoseJumpLimit(double limit) { config_.pose_jump_limit = limit; }
 
  private:
   std::string staleReason(double t, const SupervisorInputs& in) const;  // "" when fresh

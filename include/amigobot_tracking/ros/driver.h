@@ -87,7 +87,7 @@ class AmigobotDriver {
   DriverParams params_;
   ros::NodeHandle nh_, pnh_;
   ros::Subscriber cmd_vel_sub_;
-  ros::Publisher odom_pub_, sonar_pub_, battery_pub_, motors_pub_;
+  ros::Publisher odom_pub_, sonar_pub_, motors_pub_;
   ros::Publisher sonar_cloud_pub_;  // built only while someone subscribes
   ros::ServiceServer enable_srv_, disable_srv_, reset_srv_;
   tf2_ros::TransformBroadcaster tf_;
@@ -97,7 +97,7 @@ class AmigobotDriver {
   ros::Timer diagnostics_timer_, link_timer_;
   std::mutex publish_mutex_;
   int last_motors_state_ = -1;  // -1: not yet published
-  std::unique_ptr<DriverStateTopics> state_topics_;  // battery, stall, bumper, estop
+  std::unique_ptr<DriverStateTopics> state_topics_;  // battery_voltage, battery, stall, bumper, estop
   std::unique_ptr<aria::AriaClient> client_;
   std::unique_ptr<core::CommandLock> cmd_vel_lock_;  // one source drives (cmd_vel callback only)
   std::unique_ptr<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>> reconfigure_;
