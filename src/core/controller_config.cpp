@@ -34,7 +34,7 @@ FieldTable<ControllerConfig> makeTable() {
       field("max_rho_rate", &C::max_rho_rate, "m/s",
             "cap of the relaxation term's rate in (13) (band chattering); 0 = none, the paper", nonNegative()),
       field("law", &C::law, "-", "control law: paper (eqs. 9-13) or recommended (field, safety filter, 13')",
-            oneOf({"paper", "recommended"})),
+            oneOf(controlLawNames())),
       field("barrier_rate", &C::barrier_rate, "1/s",
             "recommended law: barrier rate gamma, clearance' >= -gamma (clearance - min_margin)", positive()),
       field("field_margin", &C::field_margin, "m", "recommended law: width of the field's bend around a disk's zone",
@@ -58,6 +58,11 @@ FieldTable<ControllerConfig> makeTable() {
 }
 
 }  // namespace
+
+const std::vector<std::string>& controlLawNames() {
+  static const std::vector<std::string> names = {"paper", "recommended"};
+  return names;
+}
 
 const FieldTable<ControllerConfig>& controllerFields() {
   static const FieldTable<ControllerConfig> table = makeTable();

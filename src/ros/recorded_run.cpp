@@ -4,12 +4,37 @@
 #include <cstdio>
 
 #include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/controller_config.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/world/geometry.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
+
+namespace {
+
+// The laws a run is recorded with: the controller's `law` values and "escape" (the paper's
+// law with tangential_avoidance), which is no value of `law` but a switch of the paper's.
+std::vector<std::string> recordedLaws() {
+  std::vector<std::string> laws = core::controlLawNames();
+  laws.push_back("escape");
+  return laws;
+}
+
+bool isRecordedLaw(const std::string& law) {
+  for (const std::string& name : recordedLaws())
+    if (law == name) return true;
+  return false;
+}
+
+std::string recordedLawList() {
+  std::string list;
+  for (const std::string& name : recordedLaws()) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
+}  // namespace
 
 std::string RecordedRunConfig::validate() const {
   if (!(std::isfinite(robot_radius) && robot_radius > 0.0)) return "robot_radius must be > 0";
@@ -18,7 +43,7 @@ std::string RecordedRunConfig::validate() const {
   if (!(std::isfinite(w_max) && w_max > 0.0)) return "w_max must be > 0";
   const std::string bad_world = world::validateWorld(world);
   if (!bad_world.empty()) return "world: " + bad_world;
-  if (law != "paper" && law != "escape") return "law must be paper or escape, got '" + law + "'";
+  if (!isRecordedLaw(law)) return "law must be one of " + recordedLawList() + ", got '" + law + "'";
   if (!(std::isfinite(velocity_window) && velocity_window > 0.0)) return "velocity_window must be > 0";
   const std::string verdict_error = verdict.validate();
   if (!verdict_error.empty()) return verdict_error;
@@ -196,7 +221,7 @@ std::string recordedRunJson(const RecordedRunSummary& summary, const RecordedRun
   using sim::jsonNumber;
   sim::Json j = summary;
   j["law"] = config.law;
-  j["variant"] = config.law == "escape" ? "tangential_avoidance" : "paper";
+  j["variant"] = config.law == "escape" ? "tangential_avoidance" : config.law;
   sim::Json& tracking = j["tracking"];
   tracking["rho_inf"] = jsonNumber(config.verdict.rho_inf);
   tracking["tolerance"] = jsonNumber(config.verdict.tolerance);
@@ -204,7 +229,7 @@ std::string recordedRunJson(const RecordedRunSummary& summary, const RecordedRun
   tracking["band"] = jsonNumber(config.verdict.band);
   sim::Json& s = j["scenario"];
   s["name"] = name;
-  s["variant"] = config.law;  // plot titles: [paper] or [escape]
+  s["variant"] = config.law;  // plot titles: [paper], [recommended] or [escape]
   s["law"] = config.law;
   s["estimator"] = "paper";
   char truth[96];

@@ -4,6 +4,8 @@
 
 #include "amigobot_tracking/ros/recorded_run.h"
 
+#include "amigobot_tracking/core/controller_config.h"
+
 using namespace amigobot_tracking;
 
 namespace {
@@ -227,6 +229,21 @@ TEST(RecordedRun, ValidateNamesTheBadField) {
   c = ros_layer::RecordedRunConfig{};
   c.world.walls = {{{1.0, 1.0}, {1.0, 1.0}}};
   EXPECT_NE(c.validate().find("world: walls[0]: degenerate"), std::string::npos) << c.validate();
+}
+
+// make demo scores the law the node ran with: every value of the controller's `law` (the
+// shipped default is "recommended") and "escape" must be accepted, anything else named.
+TEST(RecordedRun, AcceptsEveryLawTheControllerRuns) {
+  ros_layer::RecordedRunConfig c;
+  for (const std::string& law : core::controlLawNames()) {
+    c.law = law;
+    EXPECT_EQ(c.validate(), "") << law;
+  }
+  c.law = "escape";
+  EXPECT_EQ(c.validate(), "");
+  c.law = "recommend";
+  const std::string error = c.validate();
+  EXPECT_NE(error.find("law must be one of paper, recommended, escape, got 'recommend'"), std::string::npos) << error;
 }
 
 TEST(RecordedRun, JsonEscapesTheRunNameAndKeepsTheSharedKeys) {

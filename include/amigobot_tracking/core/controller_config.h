@@ -80,6 +80,9 @@ struct ControllerConfig {
   std::string validate() const;
 };
 
+// The values of `law` (the field table's oneOf and every tool that names a law read this).
+const std::vector<std::string>& controlLawNames();
+
 // Every field read from parameters and scenarios, the estimator's under "estimator/"
 // (adaptive_rho follows the scenario's controller variant). Live rows: dynamic_reconfigure.
 const FieldTable<ControllerConfig>& controllerFields();

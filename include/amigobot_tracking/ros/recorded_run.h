@@ -30,7 +30,7 @@ struct RecordedRunConfig {
   double settle_time = 0.5;       // [s] estimator transient left out of its "settled" figure
   bool body_safe = true;          // the run's body_safe: effective radius R + r around p_r
   double velocity_window = 1.0;   // [s] the target's true velocity: central difference over this span
-  std::string law = "paper";      // paper | escape (tangential_avoidance): recorded in metrics.json
+  std::string law = "paper";      // core::controlLawNames() or escape (paper + tangential_avoidance)
   sim::TrackingVerdictConfig verdict;  // rho_inf, tolerance, recovery time, band (delta)
 
   std::string validate() const;   // empty when valid, else names the bad field
