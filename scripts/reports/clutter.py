@@ -22,18 +22,29 @@ CLUTTER = os.path.join(ROOT, "config", "scenarios", "clutter")
 # The laws compared, by amigobot_sim's --variant name: adding a law is one word here.
 LAWS = ["paper", "proportional", "fixed_rho", "mrpt_reactive", "recommended"]
 
-# Monte Carlo spread of every class: obstacle centres and start shifted within these disks [m],
-# heading within +-rad, target noise std drawn in [0, 3 cm], one of two sample rates.
-DEFAULT_SPREAD = {"obstacle_shift": 0.1, "pose_shift": 0.2, "heading_shift": 0.3, "noise": 0.03,
-                  "sample_periods": [0.05, 0.1]}
-# Classes whose point is a precise geometry keep it (a 1 cm threshold, an 8 cm gap, a door).
-SPREAD = {
-    "threshold_in": {"obstacle_shift": 0.004},
-    "threshold_out": {"obstacle_shift": 0.004},
-    "gap_pair": {"obstacle_shift": 0.03},
-    "doorway": {"obstacle_shift": 0.03},
-    "moving_obstacle": {"obstacle_speed": 0.3},
-}
+# Monte Carlo spread of every class (shifts, noise, sample periods, obstacle speed): the tuning
+# suite's lines, so the benchmark and `amigobot_sim --tune` draw the same variants.
+SUITE = os.path.join(ROOT, "config", "scenarios", "clutter_suite.txt")
+
+
+def read_suite(path=SUITE):
+    """{class: {option: value}} from the suite file (PATH key=value ...), as sim/gain_tuner.h reads it."""
+    spread = {}
+    with open(path) as f:
+        for number, line in enumerate(f, 1):
+            words = line.split("#", 1)[0].split()
+            if not words:
+                continue
+            options = {}
+            for word in words[1:]:
+                key, eq, value = word.partition("=")
+                if not eq:
+                    sys.exit(f"{path}:{number}: expected key=value, got '{word}'")
+                options[key] = [float(v) for v in value.split(",")] if key == "sample_periods" else float(value)
+            spread[os.path.splitext(os.path.basename(words[0]))[0]] = options
+    return spread
+
+
 CLASSES = {
     "pillar_park": "target parks just behind one pillar (unreachable)",
     "u_behind": "U-shaped group, target passes behind it",
@@ -72,13 +83,15 @@ HEADINGS = ["class", "law"] + [c[0] for c in COLUMNS]
 def batch(sim, name, law, runs, jobs, out_root, seed=1):
     """One Monte Carlo batch: its summary dict, or {"missing": reason} when the simulator
     does not know the law, or {"failed": reason} when the run failed otherwise."""
-    spread = dict(DEFAULT_SPREAD, **SPREAD.get(name, {}))
+    spread = read_suite()[name]
     out = os.path.join(out_root, name, law)
     cmd = [sim, "--scenario", os.path.join(CLUTTER, name + ".yaml"), "--out", out, "--variant", law,
            "--monte-carlo", str(runs), "--seed", str(seed), "--jobs", str(jobs), "--no-plot",
-           "--mc-obstacle-shift", str(spread["obstacle_shift"]), "--mc-pose-shift", str(spread["pose_shift"]),
-           "--mc-heading-shift", str(spread["heading_shift"]), "--mc-noise", str(spread["noise"]),
-           "--mc-sample-periods"] + [str(p) for p in spread["sample_periods"]]
+           "--mc-obstacle-shift", str(spread.get("obstacle_shift", 0.0)), "--mc-pose-shift",
+           str(spread.get("pose_shift", 0.0)), "--mc-heading-shift", str(spread.get("heading_shift", 0.0)),
+           "--mc-noise", str(spread.get("noise", 0.0))]
+    if spread.get("sample_periods"):
+        cmd += ["--mc-sample-periods"] + [str(p) for p in spread["sample_periods"]]
     if spread.get("obstacle_speed"):
         cmd += ["--obstacle-speed", str(spread["obstacle_speed"])]
     done = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
@@ -114,7 +127,7 @@ def write_page(path, results, runs, seconds, quick):
          "Scenes: config/scenarios/clutter/ (body-safe, Section 5.3's gains and limits, 20 Hz). "
          "Each variant shifts the obstacles and the start, draws the target noise in [0, 3 cm] and a "
          "sample period of 50 or 100 ms (classes with a precise geometry shift their disks less: "
-         "`SPREAD` in the script).")
+         "config/scenarios/clutter_suite.txt).")
     page("")
     page("True ASE/ISE use the true target and robot. Stall: target reachable (beyond its best standoff) "
          "but not approached (docs/simulation.md). Orbit turns: the largest |angle| / 2π of the offset "
@@ -157,9 +170,11 @@ if __name__ == "__main__":
     parser.add_argument("--jobs", type=int, default=None, help="threads per batch (default: every core)")
     parser.add_argument("--classes", default="", help="comma-separated subset of the classes")
     parser.add_argument("--quick", action="store_true", help=f"{QUICK_RUNS} variants per batch")
+    parser.add_argument("--laws", default="", help="comma-separated subset of the laws")
     args = parser.parse_args()
     unknown = [c for c in args.classes.split(",") if c and c not in CLASSES]
     if unknown:
         sys.exit(f"clutter.py: unknown class {', '.join(unknown)}; known: {', '.join(CLASSES)}")
     main(os.path.abspath(args.sim), os.path.abspath(args.out), os.path.abspath(args.docs),
-         QUICK_RUNS if args.quick else args.runs, args.jobs, [c for c in args.classes.split(",") if c], args.quick)
+         QUICK_RUNS if args.quick else args.runs, args.jobs, [c for c in args.classes.split(",") if c], args.quick,
+         [law for law in args.laws.split(",") if law])

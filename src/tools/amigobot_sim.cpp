@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "amigobot_tracking/sim/gain_tuner.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"
@@ -123,6 +124,39 @@ bool fileNamesVariant(const std::string& path) {
   }
 }
 
+// --tune: the overrides of the command line apply to every scenario of the suite; the law
+// tuned is the recommended one unless --variant or --set names another.
+int runTuner(const CLI::App& app, const std::string& suite_path, const std::string& out_path, int evaluations,
+             int runs, int jobs, const std::vector<std::string>& sets,
+             const std::map<std::string, std::string>& shorthand_values) {
+  if (out_path == "/tuned_gains.yaml") {
+    std::fprintf(stderr, "amigobot_sim: --tune needs --out DIR or --tune-out FILE\n");
+    return 2;
+  }
+  sim::TunerOptions options;
+  if (!app.count("--variant") && !namesVariant(sets)) options.overrides.push_back("controller.variant=recommended");
+  for (const Shorthand& s : kShorthands)
+    if (app.count(s.flag)) options.overrides.push_back(std::string(s.key) + "=" + shorthand_values.at(s.flag));
+  options.overrides.insert(options.overrides.end(), sets.begin(), sets.end());
+  options.runs = runs > 0 ? runs : 8;
+  options.jobs = jobs;
+  options.max_evaluations = evaluations;
+  options.progress = true;
+  try {
+    if (app.count("--seed")) options.seed = std::stoull(shorthand_values.at("--seed"));
+    const sim::TuningSuite suite = sim::loadTuningSuite(suite_path);
+    const sim::TuningResult result = sim::tuneGains(suite, options);
+    const std::filesystem::path parent = std::filesystem::path(out_path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    sim::writeText(out_path, sim::tunedGainsYaml(result, suite, options));
+    std::printf("%swrote %s\n", sim::tunedGainsYaml(result, suite, options).c_str(), out_path.c_str());
+    return result.best.feasible ? 0 : 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "amigobot_sim: %s\n", e.what());
+    return 2;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -134,7 +168,14 @@ int main(int argc, char** argv) {
   double obstacle_speed = 0.0;
   sim::MonteCarloOptions mc;
   bool no_plot = false;
-  app.add_option("--scenario", scenario_path, "scenario file (config/scenarios/*.yaml)")->required();
+  std::string tune_suite, tune_out;
+  int tune_evaluations = 30;
+  app.add_option("--scenario", scenario_path, "scenario file (config/scenarios/*.yaml); required but with --tune");
+  app.add_option("--tune", tune_suite, "tune the law's gains on this suite (config/scenarios/*_suite.txt): "
+                 "--monte-carlo N variants per scenario (8), writes --tune-out");
+  app.add_option("--tune-out", tune_out, "with --tune: the YAML of the tuned gains (default OUT/tuned_gains.yaml)");
+  app.add_option("--tune-evaluations", tune_evaluations, "with --tune: candidates judged, the start included")
+      ->check(CLI::Range(1, 100000));
   app.add_option("--out", out, "output folder: trajectory.csv, metrics.json, figures");
   app.add_option("--set", sets, "section.key=value: any scenario key (repeatable), checked like the file");
   std::map<std::string, std::string> shorthand_values;
@@ -165,6 +206,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;  // --help: 0; a bad command line: 2, as a bad scenario
+  }
+  if (!tune_suite.empty()) return runTuner(app, tune_suite, tune_out.empty() ? out + "/tuned_gains.yaml" : tune_out,
+                                           tune_evaluations, monte_carlo, jobs, sets, shorthand_values);
+  if (scenario_path.empty()) {
+    std::fprintf(stderr, "amigobot_sim: --scenario FILE is required (or --tune SUITE)\n");
+    return 2;
   }
   if (out.empty() && benchmark == 0) {
     std::fprintf(stderr, "amigobot_sim: --out DIR is required (or --benchmark N)\n%s", app.help().c_str());
