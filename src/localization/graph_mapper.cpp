@@ -139,7 +139,7 @@ bool GraphMapper::closeLoop(int k) {
   return true;
 }
 
-void GraphMapper::update(const RangeScan& scan, const core::Pose2& odom_base, MappingEstimate* estimate) {
+void GraphMapper::update(const RangeScan& scan, const core::Pose2& odom_base, PoseEstimate* estimate) {
   const std::vector<Eigen::Vector2d> points = scanPoints(scan, config_.range_max, config_.icp.max_points);
   if (keyframes_.empty()) {
     last_odom_ = last_match_odom_ = odom_base;

@@ -38,7 +38,7 @@ Localizer::Localizer(const LocalizationConfig& config, const OccupancyMap& map)
 Localizer::~Localizer() = default;
 
 void Localizer::setPose(const core::Pose2& map_base, const core::Pose2& odom_base) {
-  estimate_ = LocalizationEstimate();
+  estimate_ = PoseEstimate();
   estimate_.pose = map_base;
   estimate_.map_to_odom = compose(map_base, inverse(odom_base));
   match_covariance_ = Eigen::Vector3d(0.25, 0.25, 0.07).asDiagonal();  // unknown until a match
@@ -66,7 +66,7 @@ core::Pose2 Localizer::align(const std::vector<Eigen::Vector2d>& points, const c
   return fromMrpt(gaussian.mean);
 }
 
-const LocalizationEstimate& Localizer::update(const RangeScan& scan, const core::Pose2& odom_base) {
+const PoseEstimate& Localizer::update(const RangeScan& scan, const core::Pose2& odom_base) {
   const core::Pose2 predicted = compose(estimate_.map_to_odom, odom_base);
   const double moved = travel(odom_base, last_match_odom_);
   const bool due = !settled_ || moved >= config_.min_travel || turn(odom_base, last_match_odom_) >= config_.min_rotation;
@@ -103,8 +103,8 @@ const LocalizationEstimate& Localizer::update(const RangeScan& scan, const core:
   return estimate_;
 }
 
-RelocalizationResult Localizer::relocalize(const RangeScan& scan, const core::Pose2& odom_base) {
-  RelocalizationResult result;
+GlobalSearch Localizer::relocalize(const RangeScan& scan, const core::Pose2& odom_base) {
+  GlobalSearch result;
   const std::vector<Eigen::Vector2d> points = scanPoints(scan, config_.range_max, std::min(config_.icp.max_points, 120));
   if (points.size() < 10) return result;
   const GlobalConfig& g = config_.global;

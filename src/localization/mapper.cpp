@@ -22,6 +22,7 @@ namespace localization {
 
 Mapper::Mapper(const LocalizationConfig& config) : config_(config) {
   estimate_.pose = config.initial_pose;
+  estimate_.covariance.setZero();  // until the first scan's
   if (config.mapping_method == "graph") {
     graph_ = std::make_unique<GraphMapper>(config);
     return;
@@ -57,7 +58,7 @@ Mapper::Mapper(const LocalizationConfig& config) : config_(config) {
 
 Mapper::~Mapper() = default;
 
-const MappingEstimate& Mapper::update(const RangeScan& scan, const core::Pose2& odom_base) {
+const PoseEstimate& Mapper::update(const RangeScan& scan, const core::Pose2& odom_base) {
   if (graph_) {
     graph_->update(scan, odom_base, &estimate_);
     return estimate_;

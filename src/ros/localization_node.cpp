@@ -25,24 +25,14 @@ LocalizationConfig loadLocalizationConfig(const ros::NodeHandle& pnh) {
 
 LocalizationNode::LocalizationNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : config_(loadLocalizationConfig(pnh)), nh_(nh), pnh_(pnh), listener_(buffer_), updater_(nh, pnh),
-      verdict_(localization::VerdictConfig{config_.min_match, config_.localized_match, config_.max_correction,
-                                           config_.max_correction, config_.localized_window}) {
-  if (config_.mode == "localization") {
-    try {
-      localizer_ = std::make_unique<localization::Localizer>(config_, localization::loadMap(config_.map_file));
-    } catch (const std::exception& e) {
-      throw std::runtime_error("parameter ~map_file: " + std::string(e.what()));
-    }
-  } else {
-    mapper_ = std::make_unique<localization::Mapper>(config_);
-  }
+      engine_(localization::makeEngine(config_)) {
   // Any laser's rate: the window only shows a stall (0 Hz) or a worker that falls behind.
   rate_ = std::make_unique<RateMonitor>("scans", "scans processed [Hz]", 1.0, 100.0, 0.1, 10);
   map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
   pose_pub_ = pnh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 5);
   status_pub_ = nh_.advertise<amigobot_tracking::LocalizationStatus>("localization_status", 5);
   amcl_pose_pub_ = nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("amcl_pose", 5);
-  if (localizer_) publishMap(localizer_->map());
+  if (!engine_->mapGrows()) publishMap(engine_->map());
   worker_ = std::thread([this] { workLoop(); });
   tf_thread_ = std::thread([this] { tfLoop(); });
   initial_pose_sub_ = nh_.subscribe("initialpose", 2, &LocalizationNode::onInitialPose, this);
@@ -110,29 +100,14 @@ void LocalizationNode::workLoop() {
 
 void LocalizationNode::process(const Work& work) {
   std::optional<localization::OccupancyMap> map_to_publish;
-  Estimate update;
-  bool matched = true;  // ICP-SLAM aligns every scan it inserts
+  localization::PoseEstimate update;
   {
     std::lock_guard<std::mutex> engine(engine_mutex_);
-    if (localizer_) {
-      if (!initial_pose_applied_) {  // initial_pose is where the robot is at the first scan
-        localizer_->setPose(config_.initial_pose, work.odom_base);
-        initial_pose_applied_ = true;
-        verdict_.poseSet();
-      }
-      const localization::LocalizationEstimate& e = localizer_->update(work.scan, work.odom_base);
-      update = Estimate{e.map_to_odom, e.pose, e.covariance, e.match, e.icp_goodness, e.lost, true, ""};
-      update.localized = verdict_.update({e.match, e.correction, e.correction_angle}) == localization::LocalizationVerdict::State::kLocalized;
-      update.not_localized = verdict_.reason();
-      matched = e.matched;
-    } else {
-      const localization::MappingEstimate& e = mapper_->update(work.scan, work.odom_base);
-      update = Estimate{e.map_to_odom, e.pose, e.covariance, 0.0, 0.0, false, true, ""};
-      const double now = ros::WallTime::now().toSec();
-      if (last_map_publish_ < 0.0 || now - last_map_publish_ >= config_.map_publish_period) {
-        last_map_publish_ = now;
-        map_to_publish = mapper_->map();
-      }
+    update = engine_->update(work.scan, work.odom_base);
+    const double now = ros::WallTime::now().toSec();
+    if (engine_->mapGrows() && (last_map_publish_ < 0.0 || now - last_map_publish_ >= config_.map_publish_period)) {
+      last_map_publish_ = now;
+      map_to_publish = engine_->map();
     }
     last_work_ = work;
   }
@@ -140,7 +115,7 @@ void LocalizationNode::process(const Work& work) {
     std::lock_guard<std::mutex> lock(mutex_);
     output_.ready = true;
     output_.estimate = update;
-    output_.matches += matched;
+    output_.matches += update.matched;
     ++output_.scans;
     rate_->tick();
   }
@@ -197,7 +172,7 @@ bool LocalizationNode::onAmclGlobalLocalization(std_srvs::Empty::Request&, std_s
   return true;
 }
 
-void LocalizationNode::publishStatus(const ros::Time& stamp, const Estimate& estimate) {
+void LocalizationNode::publishStatus(const ros::Time& stamp, const localization::PoseEstimate& estimate) {
   amigobot_tracking::LocalizationStatus msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = config_.global_frame;
@@ -219,10 +194,6 @@ void LocalizationNode::publishMap(const localization::OccupancyMap& map) {
 }
 
 void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
-  if (!localizer_) {
-    ROS_WARN_STREAM_NAMED("localization", "/initialpose ignored: mode is " << config_.mode);
-    return;
-  }
   if (!msg->header.frame_id.empty() && msg->header.frame_id != config_.global_frame) {
     ROS_WARN_STREAM_NAMED("localization", "/initialpose ignored: frame '" << msg->header.frame_id << "' is not '"
                                                                           << config_.global_frame << "'");
@@ -231,48 +202,39 @@ void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStam
   core::Pose2 odom_base;
   if (!lookup(config_.odom_frame, config_.base_frame, ros::Time(0), &odom_base)) return;
   const core::Pose2 pose = toPose2(msg->pose.pose);
-  core::Pose2 map_to_odom;
+  localization::PoseEstimate estimate;
   {
     std::lock_guard<std::mutex> engine(engine_mutex_);
-    localizer_->setPose(pose, odom_base);
-    initial_pose_applied_ = true;
-    verdict_.poseSet();
-    map_to_odom = localizer_->estimate().map_to_odom;
+    const std::string refused = engine_->setPose(pose, odom_base);
+    if (!refused.empty()) {
+      ROS_WARN_STREAM_NAMED("localization", refused);
+      return;
+    }
+    estimate = engine_->estimate();
   }
   ROS_INFO_STREAM_NAMED("localization", "initial pose (" << pose.x << ", " << pose.y << ", " << pose.theta << ")");
+  poseJumped(estimate, false);
+}
+
+void LocalizationNode::poseJumped(const localization::PoseEstimate& estimate, bool relocalised) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     output_.ready = true;
-    output_.estimate.map_to_odom = map_to_odom;
-    output_.estimate.pose = pose;
-    output_.estimate.localized = false;
-    output_.estimate.not_localized = "initial pose set, no scan agreed with it yet";
+    output_.estimate = estimate;
+    output_.relocalisations += relocalised;
   }
-  publishTransform(map_to_odom);
+  publishTransform(estimate.map_to_odom);  // the jump, in one step
   // Until the next scan is measured there, the pose is the operator's word only: tracking waits.
-  amigobot_tracking::LocalizationStatus status;
-  status.header.stamp = ros::Time::now();
-  status.header.frame_id = config_.global_frame;
-  status.min_match = config_.min_match;
-  status.ok = false;
-  status.reason = "initial pose set, no scan matched there yet";
-  status_pub_.publish(status);
+  publishStatus(ros::Time::now(), estimate);
 }
 
 bool LocalizationNode::onSaveMap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
-  if (!mapper_) {
-    response.message = "nothing to save: mode is localization (the map is " + config_.map_file + ")";
-    return true;
-  }
-  if (config_.map_file.empty()) {
-    response.message = "~map_file is empty: no path to save the map to";
-    return true;
-  }
   localization::OccupancyMap map;
   {
     std::lock_guard<std::mutex> engine(engine_mutex_);
-    map = mapper_->map();
+    response.message = engine_->mapToSave(&map);
   }
+  if (!response.message.empty()) return true;
   try {
     localization::saveMap(config_.map_file, map);
     response.success = true;
@@ -286,24 +248,17 @@ bool LocalizationNode::onSaveMap(std_srvs::Trigger::Request&, std_srvs::Trigger:
 }
 
 bool LocalizationNode::onGlobalLocalization(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
-  if (!localizer_) {
-    response.message = "global localization needs mode localization (mode is " + config_.mode + ")";
-    return true;
-  }
-  localization::RelocalizationResult result;
-  core::Pose2 map_to_odom;
+  localization::GlobalSearch result;
+  localization::PoseEstimate estimate;
   {
     std::lock_guard<std::mutex> engine(engine_mutex_);
     if (!last_work_) {
       response.message = "no scan yet";
       return true;
     }
-    result = localizer_->relocalize(last_work_->scan, last_work_->odom_base);
-    map_to_odom = localizer_->estimate().map_to_odom;
-    if (result.found) {
-      initial_pose_applied_ = true;
-      verdict_.poseSet();
-    }
+    response.message = engine_->globalSearch(last_work_->scan, last_work_->odom_base, &result);
+    if (!response.message.empty()) return true;
+    estimate = engine_->estimate();
   }
   char text[200];
   std::snprintf(text, sizeof text, "%s (%.3f, %.3f, %.3f) matching %.0f %% of the beams, %d candidates",
@@ -312,18 +267,7 @@ bool LocalizationNode::onGlobalLocalization(std_srvs::Trigger::Request&, std_srv
   response.success = result.found;
   response.message = text;
   ROS_INFO_STREAM_NAMED("localization", "~global_localization: " << text);
-  if (result.found) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      output_.ready = true;
-      output_.estimate.map_to_odom = map_to_odom;
-      output_.estimate.pose = result.pose;
-      output_.estimate.localized = false;
-      output_.estimate.not_localized = "relocalised, no scan agreed with the pose yet";
-      ++output_.relocalisations;
-    }
-    publishTransform(map_to_odom);  // the jump, in one step
-  }
+  if (result.found) poseJumped(estimate, true);
   return true;
 }
 
@@ -341,11 +285,11 @@ void LocalizationNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& sta
   rate_->report(status, output_.ready);
   status.add("mode", config_.mode);
   status.add("map file", config_.map_file);
-  if (localizer_) {  // the Mapper's map is made of its own scans: no match to report
+  if (engine_->measuresMatch()) {  // a map made of its own scans has no match to report
     status.add("match (fraction of beams on the map)", output_.estimate.match);
     status.add("ICP goodness", output_.estimate.icp_goodness);
   }
-  const Estimate& e = output_.estimate;
+  const localization::PoseEstimate& e = output_.estimate;
   status.add("covariance xx [m^2]", e.covariance(0, 0));
   status.add("covariance yy [m^2]", e.covariance(1, 1));
   status.add("covariance yaw [rad^2]", e.covariance(2, 2));

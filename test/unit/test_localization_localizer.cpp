@@ -64,7 +64,7 @@ TEST(Localizer, TracksAMovingRobotWhoseOdometryDrifts) {
     const double v = 0.03, w = v / amigobot_test::kLoopRadius;  // per scan
     truth = compose(truth, core::Pose2{v, 0.0, w});
     odom = compose(odom, core::Pose2{v * 1.04 + 0.002 * noise(random), 0.001 * noise(random), w * 1.03 + 0.002 * noise(random)});
-    const LocalizationEstimate& e = localizer.update(scanAt(truth, 360, &random), odom);
+    const PoseEstimate& e = localizer.update(scanAt(truth, 360, &random), odom);
     worst_position = std::max(worst_position, positionError(e.pose, truth));
     worst_heading = std::max(worst_heading, headingError(e.pose, truth));
     odometry_error = positionError(compose(c.initial_pose, odom), truth);
@@ -80,7 +80,7 @@ TEST(Localizer, GlobalRelocalisationFindsAKidnappedRobot) {
   const core::Pose2 odom{0.3, -0.2, 0.1};
   for (const core::Pose2& truth : {core::Pose2{3.5, 2.0, -2.0}, core::Pose2{0.2, -0.3, 1.2}, core::Pose2{1.6, 0.6, 3.0}}) {
     localizer.setPose(core::Pose2{4.0, -0.5, 0.0}, odom);  // believed elsewhere
-    const RelocalizationResult found = localizer.relocalize(scanAt(truth, 360, &random), odom);
+    const GlobalSearch found = localizer.relocalize(scanAt(truth, 360, &random), odom);
     ASSERT_TRUE(found.found) << "best match " << found.match;
     EXPECT_GT(found.candidates, 1000);
     EXPECT_LT(positionError(found.pose, truth), 0.05) << truth.x << ", " << truth.y;

@@ -38,7 +38,7 @@ Drive driveAndMap(const std::string& method = "icp") {
   Drive drive;
   for (int step = 0; step < 300; ++step) {
     const double v = 0.03, w = v / amigobot_test::kLoopRadius;
-    const MappingEstimate& e = mapper.update(scanAt(truth, 360, &random), odom);
+    const PoseEstimate& e = mapper.update(scanAt(truth, 360, &random), odom);
     drive.worst_position = std::max(drive.worst_position, std::hypot(e.pose.x - truth.x, e.pose.y - truth.y));
     truth = compose(truth, core::Pose2{v, 0.0, w});
     odom = compose(odom, core::Pose2{v * 1.04 + 0.002 * noise(random), 0.0, w * 1.03 + 0.002 * noise(random)});

@@ -25,7 +25,7 @@ class CSimplePointsMap;
 namespace amigobot_tracking {
 namespace localization {
 
-struct MappingEstimate;
+struct PoseEstimate;
 
 class GraphMapper {
  public:
@@ -35,7 +35,7 @@ class GraphMapper {
   GraphMapper& operator=(const GraphMapper&) = delete;
 
   // One scan taken when odometry said odom_base; fills `estimate` (pose, map -> odom, covariance).
-  void update(const RangeScan& scan, const core::Pose2& odom_base, MappingEstimate* estimate);
+  void update(const RangeScan& scan, const core::Pose2& odom_base, PoseEstimate* estimate);
   OccupancyMap map() const;
   // The pose of every scan so far, from its keyframe's optimised pose (loops closed later
   // move earlier scans too).

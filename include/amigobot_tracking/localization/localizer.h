@@ -14,6 +14,7 @@
 
 #include "amigobot_tracking/localization/distance_field.h"
 #include "amigobot_tracking/localization/localization_config.h"
+#include "amigobot_tracking/localization/pose_estimate.h"
 #include "amigobot_tracking/localization/range_scan.h"
 
 namespace mrpt::maps {
@@ -23,23 +24,7 @@ class CSimplePointsMap;
 namespace amigobot_tracking {
 namespace localization {
 
-struct LocalizationEstimate {
-  core::Pose2 pose;         // map -> base
-  core::Pose2 map_to_odom;  // the correction published as tf
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  // [m^2, rad^2] of (x, y, yaw)
-  double match = 0.0;        // fraction of the scan's beams on the map, [0, 1]
-  double icp_goodness = 0.0;  // MRPT's fraction of paired points in the last ICP, [0, 1]
-  bool matched = false;      // this scan was aligned (else: odometry only)
-  double correction = 0.0, correction_angle = 0.0;  // [m], [rad] how far this scan's match moved the pose
-  bool lost = false;         // match < min_match
-};
 
-struct RelocalizationResult {
-  bool found = false;
-  core::Pose2 pose;          // map -> base of the best candidate
-  double match = 0.0;        // its fraction of beams on the map
-  int candidates = 0;        // coarse poses scored
-};
 
 class Localizer {
  public:
@@ -52,11 +37,11 @@ class Localizer {
   // The robot is at map_base while odometry says odom_base (initial pose, /initialpose).
   void setPose(const core::Pose2& map_base, const core::Pose2& odom_base);
   // One scan taken when odometry said odom_base.
-  const LocalizationEstimate& update(const RangeScan& scan, const core::Pose2& odom_base);
+  const PoseEstimate& update(const RangeScan& scan, const core::Pose2& odom_base);
   // Global search; on success the pose is set (one jump) and the next scans refine it.
-  RelocalizationResult relocalize(const RangeScan& scan, const core::Pose2& odom_base);
+  GlobalSearch relocalize(const RangeScan& scan, const core::Pose2& odom_base);
 
-  const LocalizationEstimate& estimate() const { return estimate_; }
+  const PoseEstimate& estimate() const { return estimate_; }
   const OccupancyMap& map() const { return field_.map(); }
 
  private:
@@ -67,7 +52,7 @@ class Localizer {
   LocalizationConfig config_;
   DistanceField field_;
   std::unique_ptr<mrpt::maps::CSimplePointsMap> map_points_;  // occupied cell centres
-  LocalizationEstimate estimate_;
+  PoseEstimate estimate_;
   core::Pose2 last_match_odom_;
   Eigen::Matrix3d match_covariance_;  // of the last match
   bool settled_ = false;             // the last match moved the pose by less than a cell

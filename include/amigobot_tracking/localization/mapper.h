@@ -14,6 +14,7 @@
 
 #include "amigobot_tracking/localization/localization_config.h"
 #include "amigobot_tracking/localization/occupancy_map.h"
+#include "amigobot_tracking/localization/pose_estimate.h"
 #include "amigobot_tracking/localization/range_scan.h"
 
 namespace mrpt::slam {
@@ -25,12 +26,6 @@ namespace localization {
 
 class GraphMapper;
 
-struct MappingEstimate {
-  core::Pose2 pose;         // map -> base
-  core::Pose2 map_to_odom;  // the correction published as tf
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  // [m^2, rad^2] of (x, y, yaw)
-  int scans = 0;            // scans processed
-};
 
 class Mapper {
  public:
@@ -40,8 +35,8 @@ class Mapper {
   Mapper& operator=(const Mapper&) = delete;
 
   // One scan taken when odometry said odom_base.
-  const MappingEstimate& update(const RangeScan& scan, const core::Pose2& odom_base);
-  const MappingEstimate& estimate() const { return estimate_; }
+  const PoseEstimate& update(const RangeScan& scan, const core::Pose2& odom_base);
+  const PoseEstimate& estimate() const { return estimate_; }
   // The grid so far, trinary (occupied >= 60 %, free <= 40 %, else unknown); empty before
   // the first scan.
   OccupancyMap map() const;
@@ -54,7 +49,7 @@ class Mapper {
   std::unique_ptr<mrpt::slam::CMetricMapBuilderICP> builder_;  // icp
   std::unique_ptr<GraphMapper> graph_;                         // graph
   std::vector<core::Pose2> trajectory_;                        // icp
-  MappingEstimate estimate_;
+  PoseEstimate estimate_;
   core::Pose2 last_odom_;
   mrpt::Clock::time_point clock_origin_;  // MRPT's clock at initialize()
   double first_stamp_ = 0.0, elapsed_ = 0.0;  // [s] the first scan's stamp, the last one's since

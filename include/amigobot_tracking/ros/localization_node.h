@@ -1,7 +1,7 @@
 // ROS wiring of the localisation layer (nodelet amigobot_tracking/Localization, node
 // localization_node): scans through a tf2 MessageFilter (odom -> laser at the scan's stamp),
 // odometry from tf odom -> base; each scan is handed to a worker thread that runs the
-// Localizer (mode localization, on map_file) or the Mapper (mode mapping, ICP-SLAM). A tf
+// localisation Engine of the mode (engine.h: on map_file, or mapping), never asking which. A tf
 // thread publishes map -> odom at tf_rate, stamped transform_tolerance ahead (as amcl does),
 // so lookups at "now" succeed between scans. Publishes `map` (latched OccupancyGrid; mapping:
 // every map_publish_period), ~pose and /diagnostics; takes /initialpose; serves ~save_map
@@ -28,9 +28,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
-#include "amigobot_tracking/localization/localization_verdict.h"
-#include "amigobot_tracking/localization/localizer.h"
-#include "amigobot_tracking/localization/mapper.h"
+#include "amigobot_tracking/localization/engine.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 #include "amigobot_tracking/ros/stamp_gate.h"
 
@@ -54,17 +52,9 @@ class LocalizationNode {
     core::Pose2 odom_base;
     ros::Time stamp;
   };
-  struct Estimate {  // of either engine
-    core::Pose2 map_to_odom, pose;
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
-    double match = 0.0, icp_goodness = 0.0;
-    bool lost = false;
-    bool localized = true;  // the verdict: the match and the pose agree (mapping: always)
-    std::string not_localized;  // why not
-  };
   struct Output {  // what the publishers and diagnostics read
     bool ready = false;  // a map -> odom exists (after the first scan)
-    Estimate estimate;
+    localization::PoseEstimate estimate;
     std::uint64_t scans = 0, matches = 0, dropped = 0, relocalisations = 0;
     std::string last_error;
   };
@@ -82,7 +72,9 @@ class LocalizationNode {
   void publishPose(const ros::Time& stamp);
   // localization_status: ok when the last scan matched the map at the estimated pose (the
   // match is measured on every scan, at the pose the engine holds).
-  void publishStatus(const ros::Time& stamp, const Estimate& estimate);
+  void publishStatus(const ros::Time& stamp, const localization::PoseEstimate& estimate);
+  // A pose the engine took out of turn (/initialpose, a global search): published at once.
+  void poseJumped(const localization::PoseEstimate& estimate, bool relocalised);
   void publishMap(const localization::OccupancyMap& map);
   bool lookup(const std::string& parent, const std::string& child, const ros::Time& stamp, core::Pose2* out);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -101,11 +93,8 @@ class LocalizationNode {
   diagnostic_updater::Updater updater_;
   ros::Timer diagnostics_timer_;
 
-  std::mutex engine_mutex_;  // guards the engines below (worker, services, /initialpose)
-  std::unique_ptr<localization::Localizer> localizer_;  // mode localization
-  std::unique_ptr<localization::Mapper> mapper_;        // mode mapping
-  bool initial_pose_applied_ = false;
-  localization::LocalizationVerdict verdict_;  // mode localization: "localized" only when match and pose agree
+  std::mutex engine_mutex_;  // guards the engine (worker, services, /initialpose)
+  std::unique_ptr<localization::Engine> engine_;
   std::optional<Work> last_work_;  // the last scan processed, for ~global_localization
   double last_map_publish_ = -1.0;
 
