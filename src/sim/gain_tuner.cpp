@@ -102,6 +102,8 @@ Evaluation evaluate(const std::vector<Loaded>& suite, const std::map<std::string
       else if (m.diamond_violations > 0) violation = std::to_string(m.diamond_violations) + " diamond violations";
       else if (m.envelope_widenings > 0) violation = std::to_string(m.envelope_widenings) + " widenings";
       else if (m.runs_with_nan > 0) violation = std::to_string(m.runs_with_nan) + " runs with NaN";
+      else if (m.worst_orbit_turns >= 1.0) violation = "an orbit of " + std::to_string(m.worst_orbit_turns) + " turns";
+      else if (m.worst_side_flips > 4) violation = std::to_string(m.worst_side_flips) + " side flips";
     }
     if (!violation.empty() && e.feasible) {
       e.feasible = false;
@@ -247,7 +249,7 @@ std::string tunedGainsYaml(const TuningResult& result, const TuningSuite& suite,
   std::snprintf(buf, sizeof buf, "# Objective, mean true ASE relative to the start (lower is better): 1 -> %.4f.\n",
                 result.best.objective);
   out << buf;
-  out << "# Hard constraints (0 contacts, 0 diamond violations, 0 widenings, 0 NaN): "
+  out << "# Hard constraints (0 contacts, 0 diamond violations, 0 widenings, 0 NaN, < 1 orbit turn, <= 4 side flips): "
       << (result.best.feasible ? "met" : "NOT met: " + result.best.violation) << ".\n";
   if (!result.start.feasible) out << "# The start broke them: " << result.start.violation << ".\n";
   out << "# Load after config/controller_experiment.yaml, in the tracking nodelet's namespace.\n";

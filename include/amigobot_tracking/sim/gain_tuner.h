@@ -1,6 +1,7 @@
 // Gain tuning (the paper's future work): a pattern search over some controller gains on a
 // suite of scenarios, each candidate judged by Monte Carlo under hard constraints (no
-// contact, no command outside the diamond, no widening of rho by the guard, no NaN), the
+// contact, no command outside the diamond, no widening of rho by the guard, no NaN, no orbit
+// of a turn or more, at most 4 side flips: issue 20's bar for the recommended law), the
 // objective the mean true ASE relative to the starting gains. `amigobot_sim --tune SUITE`.
 #pragma once
 
