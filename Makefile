@@ -25,7 +25,7 @@ RESULTS := $(WS)/build/test_results
 # $(call timed,PHASE,COMMAND): runs COMMAND and prints how long PHASE took (its exit code kept).
 timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
 
-PHONY := deps deps-workstation deps-robot build test demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
+PHONY := deps deps-workstation deps-robot build test two-machines demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
@@ -58,7 +58,16 @@ test: deps build ## build and run every test, ending with `N passed, N failed` (
 	@# 5 s of each parser's fuzzer; the scenario loader's (it compiles all of core and sim under
 	@# ASan: minutes on a fresh clone) runs in `make fuzz` only.
 	-$(call timed,fuzz,$(ROOT)/scripts/test/run_fuzz.sh --seconds 5 $(RESULTS) $(FUZZ_IN_TEST))
+	@# The two-Odroid experiment across two network namespaces (~1 min), its own JUnit cases.
+	-$(call timed,two machines,$(TWO_MACHINES))
 	@$(ROOT)/scripts/test/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
+
+# Two network namespaces as the two Odroids of the paper's experiment, a veth as their Wi-Fi
+# (scripts/test/two_machines.py, needs root): tracking, a 3 s link cut, bytes/s per topic.
+TWO_MACHINES = $(SETUP) && timeout -k 30 230 $(ROOT)/scripts/test/two_machines.py --results $(RESULTS) \
+  --logs $(WS)/build/two_machines --time-limit 200
+two-machines: build ## the two-Odroid experiment on two network namespaces: tracking, link cut, traffic (~1 min, root)
+	$(call timed,two machines,$(TWO_MACHINES))
 
 # The whole stack on the emulated robot, headless (scripts/reports/run_demo.py): private master,
 # sim.launch with rviz under Xvfb, a virtual obstacle through the topic, a rosbag, and a
