@@ -115,7 +115,7 @@ reproduce: build ## the paper's Section 5 and the baselines: docs/results.md, do
 	$(ROOT)/scripts/reports/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
 
 # The clutter benchmark alone (also part of reproduce): docs/clutter.md. QUICK=1: 4 variants per batch.
-clutter: build ## clutter benchmark, 12 classes x 5 laws x 50 Monte Carlo variants: docs/clutter.md (36 min measured on 2 shared cores at load 13; QUICK=1: 4 variants)
+clutter: build ## clutter benchmark, 12 classes x 5 laws x 50 Monte Carlo variants: docs/clutter.md (5 min measured on 2 cores, 2026-12-03; QUICK=1: 4 variants)
 	$(ROOT)/scripts/reports/clutter.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/clutter $(if $(QUICK),--quick)
 
 # libFuzzer (ASan + UBSan) of every parser: ARIA packets, SCIP, CoLa-A, RPLIDAR, the emulator
