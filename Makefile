@@ -25,7 +25,7 @@ RESULTS := $(WS)/build/test_results
 # $(call timed,PHASE,COMMAND): runs COMMAND and prints how long PHASE took (its exit code kept).
 timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
 
-PHONY := deps deps-workstation deps-robot build test two-machines demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
+PHONY := deps deps-workstation deps-robot build test two-machines soak demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
@@ -68,6 +68,12 @@ TWO_MACHINES = $(SETUP) && timeout -k 30 230 $(ROOT)/scripts/test/two_machines.p
   --logs $(WS)/build/two_machines --time-limit 200
 two-machines: build ## the two-Odroid experiment on two network namespaces: tracking, link cut, traffic (~1 min, root)
 	$(call timed,two machines,$(TWO_MACHINES))
+
+# Not in `make test`: continuous tracking on sim.launch, RSS and CPU of every process sampled,
+# RSS growth per process (MB/h) and the rosout warning rate in report/soak (scripts/test/soak.py).
+SOAK_MINUTES ?= 15
+soak: build ## soak: SOAK_MINUTES (15) of tracking on sim.launch, RSS growth MB/h and warnings per process, report/soak
+	$(call timed,soak,$(ROOT)/scripts/test/soak.py --ws $(WS) --minutes $(SOAK_MINUTES) --out $(ROOT)/report/soak)
 
 # The whole stack on the emulated robot, headless (scripts/reports/run_demo.py): private master,
 # sim.launch with rviz under Xvfb, a virtual obstacle through the topic, a rosbag, and a
