@@ -1,0 +1,95 @@
+// End to end, issue 24 item 2: the laser stalls while tracking (fault_laser_stall.test). The
+// laser_emulator process is stopped with SIGSTOP: its socket stays open and the kernel still
+// acknowledges, but no telegram comes, which is what a wedged sensor or a hung USB-Ethernet
+// link looks like to the Laser nodelet (a killed laser closes the link, an easier case).
+// Judged from the emulator's ground truth and its journal of the commands on the wire.
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+#include <signal.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "circle_target.h"
+#include "experiment.h"
+#include "judge.h"
+
+using e2e::CircleTarget;
+using e2e::EmulatorStatus;
+using e2e::requiredParam;
+
+namespace {
+
+// config/tracking.yaml scan_timeout; one control period (20 Hz); the driver's next command
+// slot (min_command_interval 0.05 s, found by its 20 ms poll), as in test_target_loss.cpp.
+constexpr double kScanTimeout = 0.5, kControlPeriod = 0.05, kDriverSlot = 0.05 + 0.02;
+constexpr double kStall = 3.0;  // [s] well past scan_timeout, short of any reconnect back-off
+
+// laser_emulator is no ROS node (the master cannot name its pid): the process whose command
+// line is laser_emulator ... --tcp-port PORT, from /proc; -1 if none.
+int laserEmulatorPid(int port) {
+  DIR* proc = ::opendir("/proc");
+  if (proc == nullptr) return -1;
+  int found = -1;
+  while (dirent* e = ::readdir(proc)) {
+    const int pid = std::atoi(e->d_name);
+    if (pid <= 0) continue;
+    std::ifstream in("/proc/" + std::to_string(pid) + "/cmdline");
+    std::string cmd((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (char& c : cmd) c = c == '\0' ? ' ' : c;
+    if (cmd.find("laser_emulator ") != std::string::npos &&
+        cmd.find("--tcp-port " + std::to_string(port) + " ") != std::string::npos) {
+      found = pid;
+      break;
+    }
+  }
+  ::closedir(proc);
+  return found;
+}
+
+}  // namespace
+
+TEST(E2E, ALaserStallStopsAndRecovers) {
+  e2e::GroundTruth truth(requiredParam<int>("status_port"));
+  CircleTarget target;
+  ASSERT_TRUE(truth.waitForRobotReady(60.0));
+  ASSERT_TRUE(e2e::waitFor([&] { return truth.truth().v > 0.1; }, 60.0)) << "the robot never drove";
+  ros::Duration(3.0).sleep();
+  const int laser = laserEmulatorPid(requiredParam<int>("laser_port")), manager = e2e::nodePid("/amigobot_manager");
+  ASSERT_GT(laser, 0);
+  ASSERT_GT(manager, 0);
+
+  const EmulatorStatus before = truth.truth();
+  ASSERT_EQ(::kill(laser, SIGSTOP), 0);
+  EmulatorStatus stopped;
+  const bool stood = truth.waitForStandstill(kStall, &stopped);
+  ros::Duration(kStall - (truth.truth().t - before.t)).sleep();
+  const EmulatorStatus still = truth.truth();
+  ASSERT_EQ(::kill(laser, SIGCONT), 0);  // before any ASSERT can leave the laser stopped
+  ASSERT_TRUE(stood) << "the robot kept driving without scans";
+  EXPECT_EQ(still.v, 0.0) << "the robot moved again while the laser was stalled";
+
+  const EmulatorStatus resumed_from = truth.truth();
+  ASSERT_TRUE(e2e::waitFor([&] { return truth.truth().v > 0.1; }, 30.0)) << "tracking never resumed";
+  const EmulatorStatus resumed = truth.truth();
+  ros::Duration(3.0).sleep();
+  EXPECT_GT(truth.truth().v, 0.05) << "not tracking at the end";
+  EXPECT_EQ(laserEmulatorPid(requiredParam<int>("laser_port")), laser) << "the laser emulator died";
+  EXPECT_EQ(e2e::nodePid("/amigobot_manager"), manager) << "the nodelet manager died";
+
+  const auto commands = e2e::readCommandLog(requiredParam<std::string>("command_log"));
+  const double zero_at = e2e::firstZeroSetpoint(commands, before.t);
+  ASSERT_GE(zero_at, 0.0) << "no zero setpoint reached the emulator";
+  // The last scan may have arrived up to one scan period (TiM 15 Hz) before the stall.
+  EXPECT_LE(zero_at - before.t, kScanTimeout + kControlPeriod + kDriverSlot + 0.1) << "zero setpoint late";
+  RecordProperty("zero_setpoint_ms", static_cast<int>(1e3 * (zero_at - before.t)));
+  RecordProperty("standstill_ms", static_cast<int>(1e3 * (stopped.t - before.t)));
+  RecordProperty("resume_ms", static_cast<int>(1e3 * (resumed.t - resumed_from.t)));
+  std::printf("laser stall %.0f s: zero on the wire %.0f ms, standstill %.0f ms after SIGSTOP; "
+              "driving again %.0f ms after SIGCONT\n", kStall, 1e3 * (zero_at - before.t),
+              1e3 * (stopped.t - before.t), 1e3 * (resumed.t - resumed_from.t));
+}
