@@ -164,10 +164,24 @@ YAML::Node parseText(const std::string& text, const std::string& path) {
 
 }  // namespace
 
+namespace {
+World parseWorldTree(const YAML::Node& root, const std::string& path);
+}  // namespace
+
 World loadWorld(const std::string& path) { return parseWorld(core::readInputFile(path), path); }
 
 World parseWorld(const std::string& text, const std::string& path) {
-  const YAML::Node root = parseText(text, path);
+  try {
+    return parseWorldTree(parseText(text, path), path);
+  } catch (const YAML::Exception& e) {  // yaml-cpp's own (an invalid node) must name the file too
+    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
+    throw std::runtime_error(path + line + ": cannot read world: " + e.msg);
+  }
+}
+
+namespace {
+
+World parseWorldTree(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap()) fail(path, root, "(top level)", "expected a mapping {initial_pose: ..., obstacles: [...], walls: [...]}");
   onlyKeys(path, root, "", {"initial_pose", "obstacles", "walls", "polygons"});
   World world;
@@ -186,6 +200,8 @@ World parseWorld(const std::string& text, const std::string& path) {
   });
   return world;
 }
+
+}  // namespace
 
 std::string worldYaml(const World& world) {
   std::ostringstream out;
