@@ -124,19 +124,23 @@ bool fileNamesVariant(const std::string& path) {
   }
 }
 
+// The --set equivalents of the shorthand flags given on the command line.
+std::vector<std::string> shorthandOverrides(const CLI::App& app, const std::map<std::string, std::string>& values) {
+  std::vector<std::string> overrides;
+  for (const Shorthand& s : kShorthands)
+    if (app.count(s.flag)) overrides.push_back(std::string(s.key) + "=" + values.at(s.flag));
+  return overrides;
+}
+
 // --tune: the overrides of the command line apply to every scenario of the suite; the law
 // tuned is the recommended one unless --variant or --set names another.
 int runTuner(const CLI::App& app, const std::string& suite_path, const std::string& out_path, int evaluations,
              int runs, int jobs, const std::vector<std::string>& sets,
              const std::map<std::string, std::string>& shorthand_values) {
-  if (out_path == "/tuned_gains.yaml") {
-    std::fprintf(stderr, "amigobot_sim: --tune needs --out DIR or --tune-out FILE\n");
-    return 2;
-  }
   sim::TunerOptions options;
   if (!app.count("--variant") && !namesVariant(sets)) options.overrides.push_back("controller.variant=recommended");
-  for (const Shorthand& s : kShorthands)
-    if (app.count(s.flag)) options.overrides.push_back(std::string(s.key) + "=" + shorthand_values.at(s.flag));
+  const std::vector<std::string> shorthands = shorthandOverrides(app, shorthand_values);
+  options.overrides.insert(options.overrides.end(), shorthands.begin(), shorthands.end());
   options.overrides.insert(options.overrides.end(), sets.begin(), sets.end());
   options.runs = runs > 0 ? runs : 8;
   options.jobs = jobs;
@@ -148,8 +152,9 @@ int runTuner(const CLI::App& app, const std::string& suite_path, const std::stri
     const sim::TuningResult result = sim::tuneGains(suite, options);
     const std::filesystem::path parent = std::filesystem::path(out_path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
-    sim::writeText(out_path, sim::tunedGainsYaml(result, suite, options));
-    std::printf("%swrote %s\n", sim::tunedGainsYaml(result, suite, options).c_str(), out_path.c_str());
+    const std::string yaml = sim::tunedGainsYaml(result, suite, options);
+    sim::writeText(out_path, yaml);
+    std::printf("%swrote %s\n", yaml.c_str(), out_path.c_str());
     return result.best.feasible ? 0 : 3;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "amigobot_sim: %s\n", e.what());
@@ -207,8 +212,14 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;  // --help: 0; a bad command line: 2, as a bad scenario
   }
-  if (!tune_suite.empty()) return runTuner(app, tune_suite, tune_out.empty() ? out + "/tuned_gains.yaml" : tune_out,
-                                           tune_evaluations, monte_carlo, jobs, sets, shorthand_values);
+  if (!tune_suite.empty()) {
+    if (out.empty() && tune_out.empty()) {
+      std::fprintf(stderr, "amigobot_sim: --tune needs --out DIR or --tune-out FILE\n");
+      return 2;
+    }
+    return runTuner(app, tune_suite, tune_out.empty() ? out + "/tuned_gains.yaml" : tune_out, tune_evaluations,
+                    monte_carlo, jobs, sets, shorthand_values);
+  }
   if (scenario_path.empty()) {
     std::fprintf(stderr, "amigobot_sim: --scenario FILE is required (or --tune SUITE)\n");
     return 2;
@@ -218,9 +229,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  std::vector<std::string> overrides;
-  for (const Shorthand& s : kShorthands)
-    if (app.count(s.flag)) overrides.push_back(std::string(s.key) + "=" + shorthand_values[s.flag]);
+  std::vector<std::string> overrides = shorthandOverrides(app, shorthand_values);
   // No law named on the command line nor in the file: the recommended law.
   if (!app.count("--variant") && !namesVariant(sets) && !fileNamesVariant(scenario_path))
     overrides.insert(overrides.begin(), "controller.variant=recommended");

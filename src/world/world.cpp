@@ -152,12 +152,7 @@ void forEntries(const std::string& path, const YAML::Node& root, const std::stri
 // The file's tree, refused when its aliases expand past core::kMaxYamlNodes (a loader
 // walking them would build the expansion).
 YAML::Node parseText(const std::string& text, const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw std::runtime_error(path + ":" + std::to_string(e.mark.line + 1) + ": cannot read world: " + e.msg);
-  }
+  const YAML::Node root = YAML::Load(text);  // its exceptions: parseWorld names the file
   if (const auto big = core::yamlSizeProblem(root)) fail(path, big->node, "(document)", big->reason);
   return root;
 }
