@@ -22,7 +22,8 @@ target_compile_options(test_e2e PRIVATE ${AMIGOBOT_WARNINGS})
 add_dependencies(test_e2e ${PROJECT_NAME}_generate_messages_cpp)
 add_dependencies(tests test_e2e)
 set(AMIGOBOT_E2E_NODES test_e2e amigobot_emulator amigobot_tracking_ros amigobot_tracking_ros_driver
-    sim_laser ground_truth_localization reference_publisher trail_publisher laser_emulator amigobot_tracking_ros_laser amigobot_tracking_ros_localization)
+    sim_laser ground_truth_localization reference_publisher trail_publisher laser_emulator amigobot_tracking_ros_laser amigobot_tracking_ros_localization
+    laser_node)
 
 # amigobot_add_e2e_test(FILE PORT_ARG...): rostest FILE with a free port for each PORT_ARG.
 function(amigobot_add_e2e_test file)
@@ -50,5 +51,7 @@ amigobot_add_e2e_test(test/e2e/bad_parameters.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/link_loss.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/avoidance.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/rates.test tcp_port status_port)
+# laser:=none with the lab's own driver (a standalone laser_node) on /front_laser/scan; judged in Python.
+amigobot_add_e2e_test(test/e2e/external_laser.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/two_robots.test target_tcp_port target_status_port tracker_tcp_port tracker_status_port
                       target_laser_port tracker_laser_port)
