@@ -292,7 +292,15 @@ void RobotEmulator::stepPhysics(double dt) {
   odo_th_ = odo.theta;
 }
 
+void RobotEmulator::teleport(const core::Pose2& pose) {
+  if (!pose.isFinite()) throw std::invalid_argument("emulator: teleport to a non-finite pose");
+  pose_ = {pose.x, pose.y, std::remainder(pose.theta, 2.0 * M_PI)};
+}
+
 void RobotEmulator::stepTo(double now) {
+  if (teleports_) {
+    if (const std::optional<core::Pose2> pose = teleports_->take()) teleport(*pose);
+  }
   if (last_time_ < 0.0) last_time_ = now;
   // The watchdog is checked every physics step, so a long advance() stops the robot at the
   // right moment rather than at the end.

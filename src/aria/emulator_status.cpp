@@ -1,8 +1,16 @@
 #include "amigobot_tracking/aria/emulator_status.h"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -13,6 +21,8 @@ namespace aria {
 namespace {
 
 constexpr std::size_t kMaxLine = 65536;
+constexpr std::size_t kMaxControlLine = 256;  // "teleport" and three %.17g numbers fit in 80
+constexpr double kMaxTeleport = 1e4;           // [m] farther is a typo, not a room
 
 double steadySeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -101,6 +111,132 @@ std::string StatusClient::query(EmulatorStatus* status) {
     return error.empty() ? error : fail(where() + ": " + error);
   } catch (const std::exception& e) {
     return fail(where() + " lost: " + e.what());
+  }
+}
+
+std::string parseControlLine(const std::string& line, core::Pose2* pose) {
+  std::istringstream in(line);
+  std::string command, extra;
+  core::Pose2 p;
+  if (!(in >> command) || command != "teleport") {
+    return "control line '" + line + "': unknown command (known: teleport x y theta)";
+  }
+  if (!(in >> p.x >> p.y >> p.theta)) return "control line '" + line + "' is not 'teleport x y theta'";
+  if (in >> extra) return "control line '" + line + "' has extra fields";
+  if (!p.isFinite() || std::abs(p.x) > kMaxTeleport || std::abs(p.y) > kMaxTeleport) {
+    return "control line '" + line + "': x and y must be finite within 1e4 m, theta finite";
+  }
+  *pose = p;
+  return "";
+}
+
+std::string formatTeleportLine(const core::Pose2& pose) {
+  char line[128];
+  std::snprintf(line, sizeof(line), "teleport %.17g %.17g %.17g", pose.x, pose.y, pose.theta);
+  return line;
+}
+
+void TeleportMailbox::post(const core::Pose2& pose) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_ = pose;
+}
+
+std::optional<core::Pose2> TeleportMailbox::take() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::optional<core::Pose2> pose;
+  pose.swap(pending_);
+  return pose;
+}
+
+ControlServer::ControlServer(TeleportMailbox& mailbox, const std::string& bind_address, int port)
+    : mailbox_(mailbox) {
+  const std::string where = "emulator control socket " + bind_address + ":" + std::to_string(port);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(port));
+  if (port < 0 || port > 65535) throw std::runtime_error(where + ": the port must be within 0..65535");
+  if (::inet_pton(AF_INET, bind_address.c_str(), &addr.sin_addr) != 1) {
+    throw std::runtime_error(where + ": '" + bind_address + "' is not an IPv4 address");
+  }
+  listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  const int one = 1;
+  if (listen_fd_ >= 0) ::setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
+  socklen_t len = sizeof(addr);
+  if (listen_fd_ < 0 || ::bind(listen_fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0 ||
+      ::listen(listen_fd_, 4) < 0 || ::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len) < 0) {
+    const std::string error = std::strerror(errno);
+    if (listen_fd_ >= 0) ::close(listen_fd_);
+    throw std::runtime_error(where + ": " + error);
+  }
+  port_ = ntohs(addr.sin_port);
+  thread_ = std::thread([this] { run(); });
+}
+
+ControlServer::~ControlServer() {
+  stop_ = true;
+  thread_.join();
+  for (int fd : clients_) ::close(fd);
+  ::close(listen_fd_);
+}
+
+bool ControlServer::serve(int fd, std::string& pending) {
+  char buffer[256];
+  const ssize_t n = ::read(fd, buffer, sizeof(buffer));
+  if (n <= 0) return false;
+  pending.append(buffer, static_cast<std::size_t>(n));
+  std::size_t eol;
+  while ((eol = pending.find('\n')) != std::string::npos) {
+    core::Pose2 pose;
+    const std::string error = parseControlLine(pending.substr(0, eol), &pose);
+    pending.erase(0, eol + 1);
+    if (error.empty()) mailbox_.post(pose);
+    const std::string reply = error.empty() ? "ok\n" : "error: " + error + "\n";
+    if (::send(fd, reply.data(), reply.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(reply.size())) return false;
+  }
+  return pending.size() <= kMaxControlLine;  // a client that sends no line breaks is dropped
+}
+
+void ControlServer::run() {
+  while (!stop_) {
+    std::vector<pollfd> fds{{listen_fd_, POLLIN, 0}};
+    for (int fd : clients_) fds.push_back({fd, POLLIN, 0});
+    if (::poll(fds.data(), fds.size(), 50) <= 0) continue;  // 50 ms: how soon the destructor returns
+    for (std::size_t k = clients_.size(); k-- > 0;) {
+      if (!(fds[k + 1].revents & (POLLIN | POLLHUP | POLLERR)) || serve(clients_[k], buffers_[k])) continue;
+      ::close(clients_[k]);
+      clients_.erase(clients_.begin() + static_cast<std::ptrdiff_t>(k));
+      buffers_.erase(buffers_.begin() + static_cast<std::ptrdiff_t>(k));
+    }
+    if (fds[0].revents & POLLIN) {
+      const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
+      if (fd >= 0) {
+        clients_.push_back(fd);
+        buffers_.emplace_back();
+      }
+    }
+  }
+}
+
+std::string requestTeleport(const std::string& host, int port, const core::Pose2& pose, double timeout) {
+  const std::string where = "emulator control socket " + host + ":" + std::to_string(port);
+  try {
+    std::unique_ptr<Transport> link = makeTransport(host + ":" + std::to_string(port), 0);
+    link->open();
+    const std::string line = formatTeleportLine(pose) + "\n";
+    link->write(std::vector<std::uint8_t>(line.begin(), line.end()));
+    std::string reply;
+    const double deadline = steadySeconds() + timeout;
+    while (reply.find('\n') == std::string::npos) {
+      const double left = deadline - steadySeconds();
+      if (left <= 0.0 || reply.size() > kMaxControlLine) return "no answer from the " + where;
+      std::uint8_t chunk[256];
+      const std::size_t n = link->read(chunk, sizeof(chunk), static_cast<int>(std::ceil(left * 1e3)));
+      reply.append(reinterpret_cast<const char*>(chunk), n);
+    }
+    reply.erase(reply.find('\n'));
+    return reply == "ok" ? "" : where + ": " + reply;
+  } catch (const std::exception& e) {
+    return where + ": " + e.what();
   }
 }
 

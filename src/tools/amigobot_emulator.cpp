@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   EmulatorServerOptions server;
   std::string model = "amigo", params_file, world_file, name, command_log;
   std::uint32_t seed = robot.seed;
+  int control_port = -1;
   CLI::App app("A ROS-free AmigoBot stand-in: the robot's protocol over TCP and a pseudo-terminal, its "
                "ground truth on a status socket.",
                "amigobot_emulator");
@@ -41,6 +43,10 @@ int main(int argc, char** argv) {
   app.add_option("--status-port", server.status_port,
                  "ground-truth status socket (0 = any free port; -1 = none): send any line, get "
                  "'t x y theta v w motors open watchdog'")
+      ->capture_default_str();
+  app.add_option("--control-port", control_port,
+                 "fault injection (0 = any free port; -1 = none): a line 'teleport x y theta' moves the true pose "
+                 "there, the odometry carries on (a kidnap); answered 'ok' or 'error: why'")
       ->capture_default_str();
   app.add_option("--model", model, "amigo | amigo-sh (built-in parameters)")->capture_default_str();
   app.add_option("--robot-params", params_file, "robot parameter YAML instead of the built-in set");
@@ -59,7 +65,7 @@ int main(int argc, char** argv) {
   app.add_flag("--simulator-mode", robot.simulator_mode,
                "behave like an ARIA simulator (MobileSim): motors start enabled, SIPs always 0x32, watchdog "
                "only warns, CLOSE drops the connection");
-  app.footer("Prints 'READY tcp=PORT status=PORT pty=PATH' on stdout once it listens.");
+  app.footer("Prints 'READY tcp=PORT status=PORT pty=PATH [control=PORT]' on stdout once it listens.");
   std::vector<std::string> args = amigobot_tracking::core::ownArguments(argc, argv);
   try {
     app.parse(args);
@@ -84,11 +90,18 @@ int main(int argc, char** argv) {
     }
     EmulatorServer io(emulator, server);
     io.open();
+    TeleportMailbox teleports;
+    std::unique_ptr<ControlServer> control;
+    if (control_port >= 0) {
+      control = std::make_unique<ControlServer>(teleports, server.bind_address, control_port);
+      emulator.setTeleportMailbox(&teleports);
+    }
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
     std::signal(SIGPIPE, SIG_IGN);
-    std::printf("READY tcp=%d status=%d pty=%s\n", io.tcpPort(), io.statusPort(),
-                io.ptyName().empty() ? "-" : io.ptyName().c_str());
+    std::printf("READY tcp=%d status=%d pty=%s%s\n", io.tcpPort(), io.statusPort(),
+                io.ptyName().empty() ? "-" : io.ptyName().c_str(),
+                control ? (" control=" + std::to_string(control->port())).c_str() : "");
     std::fflush(stdout);
     io.run(g_stop);
   } catch (const std::exception& e) {

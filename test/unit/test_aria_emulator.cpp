@@ -238,3 +238,46 @@ TEST(AriaEmulator, CommandLogJournalsEverySetpointPairAsDecoded) {
   EXPECT_EQ(rows[3].v, 0.0);
   EXPECT_DOUBLE_EQ(rows[3].t, 1.5);
 }
+
+// A kidnap (aria/emulator_status.h's control socket, posted through the mailbox): the true
+// pose jumps, the firmware's odometry must not. A twin driven alike but never moved sends the
+// same odometry in every SIP, while the teleported one's truth carries on from the new pose.
+TEST(AriaEmulator, ATeleportMovesTheTruthButNotTheOdometry) {
+  RobotEmulator kidnapped({}), twin({});
+  TeleportMailbox mailbox;
+  kidnapped.setTeleportMailbox(&mailbox);
+  for (RobotEmulator* robot : {&kidnapped, &twin}) {
+    openRobot(*robot, 0.0);
+    robot->handle(packetOf(commandPacket(Command::kEnable, 1)), 0.0);
+    robot->handle(packetOf(commandPacket(Command::kVel, 200)), 0.0);
+  }
+  const amigobot_tracking::core::Pose2 there{2.0, 1.0, 3.0 * M_PI / 2.0};
+  int compared = 0;
+  double twin_x_at_teleport = 0.0;
+  for (int k = 1; k <= 300; ++k) {
+    const double t = 0.01 * k;
+    if (k == 100) {
+      mailbox.post(there);
+      twin_x_at_teleport = twin.truePose().x;
+    }
+    const auto a = sipAt(kidnapped, t), b = sipAt(twin, t);
+    ASSERT_EQ(a.has_value(), b.has_value()) << "t = " << t;
+    if (!a) continue;
+    ++compared;
+    EXPECT_EQ(a->x, b->x) << "odometry jumped at t = " << t;
+    EXPECT_EQ(a->y, b->y) << "odometry jumped at t = " << t;
+    EXPECT_EQ(a->theta, b->theta) << "odometry jumped at t = " << t;
+    EXPECT_EQ(a->left_vel, b->left_vel) << "the wheels changed at t = " << t;
+  }
+  EXPECT_GE(compared, 29);
+  // From `there` (heading -pi/2 after the wrap) it drove on as far as the twin did meanwhile
+  // along its x: the wheels carried on through the teleport.
+  const double driven = twin.truePose().x - twin_x_at_teleport;
+  EXPECT_GT(driven, 0.1) << "the twin never drove";
+  const auto truth = kidnapped.truePose();
+  EXPECT_NEAR(truth.x, 2.0, 1e-6);
+  EXPECT_NEAR(truth.y, 1.0 - driven, 1e-6);
+  EXPECT_NEAR(truth.theta, -M_PI / 2.0, 1e-9) << "heading not wrapped into (-pi, pi]";
+  EXPECT_FALSE(mailbox.take()) << "the teleport was not taken";
+  EXPECT_THROW(kidnapped.teleport({std::nan(""), 0.0, 0.0}), std::invalid_argument);
+}

@@ -94,3 +94,52 @@ TEST(EmulatorStatus, ClientRepeatsTheFailureUntilTheReconnectPeriodHasPassed) {
   EXPECT_TRUE(amigobot_test::waitFor([&] { return client.query(&s).empty(); }, 5.0));
   EXPECT_TRUE(client.connected());
 }
+
+TEST(EmulatorControl, TeleportLinesRoundTripAndBadOnesAreRefusedSayingWhy) {
+  amigobot_tracking::core::Pose2 p{0.1234567890123, -1e3, -3.0};
+  amigobot_tracking::core::Pose2 q;
+  ASSERT_EQ(parseControlLine(formatTeleportLine(p), &q), "") << formatTeleportLine(p);
+  EXPECT_EQ(q.x, p.x);
+  EXPECT_EQ(q.y, p.y);
+  EXPECT_EQ(q.theta, p.theta);
+  q = {7.0, 7.0, 7.0};
+  EXPECT_NE(parseControlLine("jump 1 2 3", &q).find("unknown command"), std::string::npos);
+  EXPECT_NE(parseControlLine("", &q).find("unknown command"), std::string::npos);
+  EXPECT_NE(parseControlLine("teleport 1 2", &q).find("teleport x y theta"), std::string::npos);
+  EXPECT_NE(parseControlLine("teleport 1 2 3 4", &q).find("extra"), std::string::npos);
+  EXPECT_NE(parseControlLine("teleport nan 2 3", &q), "");  // libstdc++ does not read nan or inf
+  EXPECT_NE(parseControlLine("teleport 1 2 1e400", &q), "");
+  EXPECT_NE(parseControlLine("teleport 1e5 2 3", &q).find("1e4 m"), std::string::npos);
+  EXPECT_NE(parseControlLine("teleport 1 -2e4 3", &q).find("1e4 m"), std::string::npos);
+  EXPECT_EQ(q.x, 7.0) << "a refused line must leave the pose alone";
+}
+
+// The tool end to end: --control-port moves the truth its status socket reports; a bad line
+// is answered with the reason and changes nothing; a socket nobody serves is named.
+TEST(EmulatorControl, TheEmulatorsControlSocketTeleportsItsRobot) {
+  const int control = amigobot_test::freePort();
+  amigobot_test::EmulatorProcess emu({"--control-port", std::to_string(control)});
+  StatusClient status("127.0.0.1", emu.statusPort(), 1.0);
+  EmulatorStatus s;
+  ASSERT_EQ(requestTeleport("127.0.0.1", control, {1.5, -0.5, 1.0}, 2.0), "");
+  ASSERT_TRUE(amigobot_test::waitFor([&] { return status.query(&s).empty() && s.pose.x == 1.5; }, 2.0))
+      << "status still says x = " << s.pose.x;
+  EXPECT_EQ(s.pose.y, -0.5);
+  EXPECT_EQ(s.pose.theta, 1.0);
+
+  const int fd = amigobot_test::connectTcp(control);
+  ASSERT_GE(fd, 0);
+  const std::string bad = "teleport 1 2e4 0\n";
+  ASSERT_EQ(::write(fd, bad.data(), bad.size()), static_cast<ssize_t>(bad.size()));
+  std::string reply;
+  char c;
+  while (reply.find('\n') == std::string::npos && ::read(fd, &c, 1) == 1) reply += c;
+  ::close(fd);
+  EXPECT_EQ(reply.rfind("error: ", 0), 0u) << reply;
+  EXPECT_NE(reply.find("within 1e4 m"), std::string::npos) << reply;
+  ASSERT_EQ(status.query(&s), "");
+  EXPECT_EQ(s.pose.x, 1.5) << "a refused line moved the robot";
+
+  const std::string none = requestTeleport("127.0.0.1", amigobot_test::freePort(), {0.0, 0.0, 0.0}, 1.0);
+  EXPECT_NE(none.find("control socket"), std::string::npos) << none;
+}

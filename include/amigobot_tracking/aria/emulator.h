@@ -90,6 +90,13 @@ class RobotEmulator {
   // ROTATE, VEL2, STOP, E-STOP) one line "t command v w" with the setpoints it now holds
   // (SI units, before the speed limits), flushed at once. Tests judge the stack by it.
   void setCommandLog(std::ostream* log) { command_log_ = log; }
+  // A kidnap: the true pose jumps to `pose`; the firmware's odometry, the wheel speeds and
+  // the setpoints carry on as they were (the robot was lifted and put down, its encoders saw
+  // nothing). Throws std::invalid_argument for a non-finite pose.
+  void teleport(const core::Pose2& pose);
+  // Teleports posted from another thread (the control socket, aria/emulator_status.h), taken
+  // at the start of every handle() and advance(); null: none.
+  void setTeleportMailbox(TeleportMailbox* mailbox) { teleports_ = mailbox; }
 
  private:
   void journal(double now, const char* command) const;
@@ -112,6 +119,7 @@ class RobotEmulator {
   double target_v_ = 0.0, target_w_ = 0.0;
   double requested_v_ = 0.0, requested_w_ = 0.0;  // as decoded, before the speed limits
   std::ostream* command_log_ = nullptr;
+  TeleportMailbox* teleports_ = nullptr;
   double max_v_, max_w_;  // SETV / SETRV
   double accel_, decel_, rot_accel_, rot_decel_;
   double v_ = 0.0, w_ = 0.0;  // actual

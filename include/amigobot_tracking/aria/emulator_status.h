@@ -3,10 +3,21 @@
 // "t x y theta v w motors open watchdog" (SI units; motors, open, watchdog 0 or 1); a line
 // starting with "quit" also stops the emulator. Ground-truth localisation and the tests
 // read it through StatusClient.
+// Its control socket (amigobot_emulator --control-port) injects faults into the world: a
+// line "teleport x y theta" (SI units, world frame) moves the true pose there, answered "ok"
+// or "error: <why>". Only the truth jumps: the firmware's odometry and the wheels carry on,
+// as when a robot is lifted and put down elsewhere (a kidnap). A port of its own because the
+// status socket's readers (localisation, laser emulator, judges) must never be able to move
+// the robot by a stray line.
 #pragma once
 
+#include <atomic>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "amigobot_tracking/core/types.h"
 
@@ -56,6 +67,51 @@ class StatusClient {
   std::string buffer_, last_error_;
   double next_attempt_ = 0.0;  // [s] steady clock
 };
+
+// Empty when `line` is "teleport x y theta" with finite values within 1e4 m (then *pose holds
+// it), else what is wrong.
+std::string parseControlLine(const std::string& line, core::Pose2* pose);
+// The line parseControlLine reads back exactly (%.17g), without the line break.
+std::string formatTeleportLine(const core::Pose2& pose);
+
+// Teleports posted by the control socket's thread and taken by the emulator's own loop,
+// which alone touches the RobotEmulator.
+class TeleportMailbox {
+ public:
+  void post(const core::Pose2& pose);
+  // The latest pose posted since the last take, once.
+  std::optional<core::Pose2> take();
+
+ private:
+  std::mutex mutex_;
+  std::optional<core::Pose2> pending_;
+};
+
+// The control socket on a thread of its own (the emulator's poll loop is not ours to extend).
+class ControlServer {
+ public:
+  // Listens on bind_address:port (0: any free port); throws std::runtime_error naming the address.
+  ControlServer(TeleportMailbox& mailbox, const std::string& bind_address, int port);
+  ~ControlServer();
+  ControlServer(const ControlServer&) = delete;
+  ControlServer& operator=(const ControlServer&) = delete;
+  int port() const { return port_; }
+
+ private:
+  void run();
+  bool serve(int fd, std::string& pending);  // false: close the client
+
+  TeleportMailbox& mailbox_;
+  int listen_fd_ = -1, port_ = -1;
+  std::vector<int> clients_;
+  std::vector<std::string> buffers_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+// Asks the control socket at host:port to teleport the robot to `pose`; empty once it said
+// "ok", else why not (naming the socket). Waits at most `timeout` [s] for the answer.
+std::string requestTeleport(const std::string& host, int port, const core::Pose2& pose, double timeout);
 
 }  // namespace aria
 }  // namespace amigobot_tracking
