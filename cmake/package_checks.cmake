@@ -25,6 +25,11 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(cxx_features_noetic ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_cxx_features.py ${PROJECT_SOURCE_DIR})
   amigobot_add_check(check_cxx_features_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_cxx_features.py
                      ${PROJECT_SOURCE_DIR}/scripts/test/check_cxx_features.py)
+  # The udev rules (`make udev`) parse as udev reads them and name /dev/amigobot and /dev/laser.
+  amigobot_add_check(udev_rules ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_udev_rules.py
+                     ${PROJECT_SOURCE_DIR}/config/udev/99-amigobot.rules)
+  amigobot_add_check(check_udev_rules_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_udev_rules.py
+                     ${PROJECT_SOURCE_DIR}/scripts/test/check_udev_rules.py)
   # Every Makefile target has its one-line `make help` entry (help fails naming one without).
   amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 
