@@ -53,9 +53,54 @@ std::string ScanObstacleConfig::validate() const {
   return err.str();
 }
 
-bool ScanGeometry::isValid() const {
-  return std::isfinite(angle_min) && std::isfinite(angle_increment) && angle_increment != 0.0 &&
-         std::isfinite(range_min) && std::isfinite(range_max) && range_min >= 0.0 && range_max > range_min;
+std::string ScanGeometry::problem() const {
+  std::ostringstream err;
+  if (!std::isfinite(angle_min)) {
+    err << "angle_min: must be finite, got " << angle_min;
+  } else if (!(std::isfinite(angle_increment) && angle_increment != 0.0)) {
+    err << "angle_increment: must be finite and non-zero, got " << angle_increment;
+  } else if (!(std::isfinite(range_min) && range_min >= 0.0)) {
+    err << "range_min: must be a finite number >= 0, got " << range_min;
+  } else if (!(std::isfinite(range_max) && range_max > range_min)) {
+    err << "range_max: must be finite and > range_min = " << range_min << ", got " << range_max;
+  }
+  return err.str();
+}
+
+std::string scanBeamsProblem(const ScanGeometry& geometry, double angle_max, const float* ranges, std::size_t count) {
+  std::string bad = geometry.problem();
+  if (!bad.empty()) return bad;
+  std::ostringstream err;
+  if (count == 0 || ranges == nullptr) {
+    err << "ranges: empty";
+    return err.str();
+  }
+  const double step = std::abs(geometry.angle_increment);
+  const double last = geometry.angle_min + geometry.angle_increment * static_cast<double>(count - 1);
+  // One increment of slack: drivers differ on whether angle_max is the last beam or one past it.
+  if (!(std::isfinite(angle_max) && std::abs(last - angle_max) <= step + 1e-6)) {
+    err << "ranges: " << count << " beams from angle_min " << geometry.angle_min << " at angle_increment "
+        << geometry.angle_increment << " end at " << last << ", not at angle_max " << angle_max;
+    return err.str();
+  }
+  if (std::abs(last - geometry.angle_min) > 2.0 * M_PI + step) {
+    err << "angle_max: the scan sweeps " << std::abs(last - geometry.angle_min) << " rad, more than one turn";
+    return err.str();
+  }
+  std::size_t nan = 0, too_close = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const float r = ranges[i];
+    if (std::isnan(r)) {
+      ++nan;
+    } else if (r < geometry.range_min) {  // -inf and negative ranges included
+      ++too_close;
+    } else {
+      return "";  // a reading (+inf: nothing within range_max)
+    }
+  }
+  err << "ranges: none of the " << count << " beams is a reading (" << nan << " NaN, " << too_close
+      << " below range_min " << geometry.range_min << " or negative)";
+  return err.str();
 }
 
 bool scanToObstacles(const ScanGeometry& geometry, const float* ranges, std::size_t count,

@@ -52,26 +52,42 @@ double LaserObstacles::update(const ros::Time& now) {
   }
   if (scan && scan != processed_) {
     processed_ = scan;
-    try {
-      // The MessageFilter let the scan through only once this transform was available.
-      const geometry_msgs::TransformStamped sensor =
-          tf_.lookupTransform(global_frame_, scan->header.frame_id, scan->header.stamp);
-      if (core::scanToObstacles(toScanGeometry(*scan), scan->ranges, toAffine2d(sensor.transform), config_,
-                                &disks_next_)) {
+    const std::string refusal = core::scanBeamsProblem(toScanGeometry(*scan), scan->angle_max, scan->ranges.data(),
+                                                       scan->ranges.size());
+    if (!refusal.empty()) {
+      refuse(refusal, scan->header.frame_id);
+    } else {
+      refusal_.clear();
+      try {
+        // The MessageFilter let the scan through only once this transform was available.
+        const geometry_msgs::TransformStamped sensor =
+            tf_.lookupTransform(global_frame_, scan->header.frame_id, scan->header.stamp);
+        core::scanToObstacles(toScanGeometry(*scan), scan->ranges, toAffine2d(sensor.transform), config_,
+                              &disks_next_);  // cannot fail: the geometry was checked above
         disks_.swap(disks_next_);  // the previous disks stay until a good scan replaces them
         used_ = scan;
         age_.arrived(scan->header.stamp.toSec(), arrival.toSec());
         tracker_.update((scan->header.stamp - epoch_).toSec(), disks_);
-      } else {
-        ROS_WARN_THROTTLE(5.0, "tracking: scan with invalid geometry ignored (frame %s)", scan->header.frame_id.c_str());
+      } catch (const tf2::TransformException& ex) {
+        ROS_WARN_THROTTLE(5.0, "tracking: scan dropped: %s", ex.what());
       }
-    } catch (const tf2::TransformException& ex) {
-      ROS_WARN_THROTTLE(5.0, "tracking: scan dropped: %s", ex.what());
     }
   }
   const core::InputAge age = age_.at(now.toSec());
   scan_problem_ = age.problem;
   return age.have ? age.age : -1.0;
+}
+
+void LaserObstacles::refuse(const std::string& why, const std::string& frame) {
+  // A refused scan does not refresh the scan's age, so with require_scan the robot stops
+  // after scan_timeout. Logged at once when the reason changes (a second kind of bad scan
+  // must not hide behind the first's throttle), else every 5 s.
+  const ros::WallTime now = ros::WallTime::now();
+  if (why != refusal_ || (now - refusal_logged_).toSec() >= 5.0) {
+    ROS_ERROR("tracking: scan refused (frame '%s'): %s", frame.c_str(), why.c_str());
+    refusal_logged_ = now;
+  }
+  refusal_ = why;
 }
 
 void LaserObstacles::obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const {

@@ -66,6 +66,7 @@ void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status)
   status.add("robot pose age [s]", last_pose_age_);
   status.add("target age [s]", last_target_age_);
   status.add("scan age [s]", scan_age_);
+  status.add("last scan refused", laser_ ? laser_->refusal() : std::string());
   status.add("saturation ratio", stats_.saturationRatio());
   status.add("resume ramp on", enabled && loop_.supervisor().ramping());
   status.add("rho [m]", loop_.controller().rho());

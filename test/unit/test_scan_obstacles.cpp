@@ -210,6 +210,58 @@ TEST(ScanObstacles, InvalidGeometryIsRefused) {
   }
 }
 
+// The tracking node logs these reasons: each must name the field of sensor_msgs/LaserScan.
+TEST(ScanObstacles, InvalidGeometryNamesTheField) {
+  const Scan scan = makeScan(10, -0.5, 0.5, kWall);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto problemWith = [&](const std::function<void(ScanGeometry&)>& spoil) {
+    ScanGeometry g = scan.geometry;
+    spoil(g);
+    return g.problem();
+  };
+  EXPECT_EQ(scan.geometry.problem(), "");
+  EXPECT_EQ(problemWith([&](ScanGeometry& g) { g.angle_min = nan; }), "angle_min: must be finite, got nan");
+  EXPECT_EQ(problemWith([](ScanGeometry& g) { g.angle_increment = 0.0; }),
+            "angle_increment: must be finite and non-zero, got 0");
+  EXPECT_EQ(problemWith([](ScanGeometry& g) { g.range_min = -1.0; }), "range_min: must be a finite number >= 0, got -1");
+  EXPECT_EQ(problemWith([](ScanGeometry& g) { g.range_min = 20.0; }),
+            "range_max: must be finite and > range_min = 20, got 10");
+}
+
+TEST(ScanObstacles, BeamsThatCannotBeUsedAreNamed) {
+  const Scan scan = makeScan(10, -0.5, 0.5, kWall);
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  auto problemOf = [&](const std::vector<float>& ranges, double angle_max = 0.5) {
+    return scanBeamsProblem(scan.geometry, angle_max, ranges.data(), ranges.size());
+  };
+  EXPECT_EQ(problemOf(scan.ranges), "");
+  EXPECT_EQ(problemOf(scan.ranges, 0.5 + scan.geometry.angle_increment), "") << "angle_max one past the last beam";
+  EXPECT_EQ(problemOf({}), "ranges: empty");
+  // 100,000 ranges under the 10-beam header: the array is not this scan's.
+  const std::string many = problemOf(std::vector<float>(100000, 1.0f));
+  EXPECT_EQ(many.rfind("ranges: 100000 beams from angle_min -0.5", 0), 0u) << many;
+  EXPECT_NE(many.find("not at angle_max 0.5"), std::string::npos) << many;
+  // 100,000 beams over one turn are a (fine) scan; two turns are not.
+  ScanGeometry fine = scan.geometry;
+  fine.angle_min = -M_PI;
+  fine.angle_increment = 2.0 * M_PI / 99999.0;
+  const std::vector<float> lots(100000, inf);
+  EXPECT_EQ(scanBeamsProblem(fine, M_PI, lots.data(), lots.size()), "");
+  fine.angle_increment *= 2.0;
+  EXPECT_EQ(scanBeamsProblem(fine, 3.0 * M_PI, lots.data(), lots.size()).rfind("angle_max: the scan sweeps", 0), 0u);
+  // All NaN / negative / -inf: a blind laser. +inf alone is an empty room; one reading is enough.
+  EXPECT_EQ(problemOf(std::vector<float>(10, nan)),
+            "ranges: none of the 10 beams is a reading (10 NaN, 0 below range_min 0.05 or negative)");
+  EXPECT_EQ(problemOf({nan, -1.0f, -inf, 0.01f, nan, nan, -2.0f, nan, nan, nan}),
+            "ranges: none of the 10 beams is a reading (6 NaN, 4 below range_min 0.05 or negative)");
+  EXPECT_EQ(problemOf(std::vector<float>(10, inf)), "");
+  EXPECT_EQ(problemOf({nan, -1.0f, -inf, 0.01f, nan, 2.0f, -2.0f, nan, nan, nan}), "");
+  ScanGeometry flat = scan.geometry;
+  flat.angle_increment = 0.0;
+  EXPECT_EQ(scanBeamsProblem(flat, 0.5, scan.ranges.data(), scan.ranges.size()).rfind("angle_increment:", 0), 0u)
+      << "the geometry first";
+}
+
 TEST(ScanObstacles, ConfigValidationNamesTheField) {
   const ScanObstacleConfig good;
   EXPECT_EQ(good.validate(), "");

@@ -56,8 +56,19 @@ struct ScanGeometry {
   double range_min = 0.0;        // [m]
   double range_max = 0.0;        // [m]
 
-  bool isValid() const;  // finite angles, 0 <= range_min < range_max, increment != 0
+  // "" when usable (finite angles, 0 <= range_min < range_max, increment != 0), else
+  // "field: reason, got value" naming the first bad field (the tracking node logs it).
+  std::string problem() const;
+  bool isValid() const { return problem().empty(); }
 };
+
+// Why the beams of a scan cannot be used, naming the field ("" when they can). The `count`
+// beams from angle_min at angle_increment must end at angle_max within one increment (100,000
+// ranges under a 270-degree header are not that laser's scan), sweep at most one turn, and at
+// least one beam must be a reading: finite and >= range_min, or +inf (nothing within
+// range_max). A scan of only NaN, -inf or negative ranges is a blind or covered laser, not an
+// empty room: it must not refresh the scan's age. The geometry is checked first (problem()).
+std::string scanBeamsProblem(const ScanGeometry& geometry, double angle_max, const float* ranges, std::size_t count);
 
 struct ScanObstacleStats {
   std::size_t valid_beams = 0;

@@ -42,6 +42,9 @@ class LaserObstacles {
   // node's clock (core/input_age.h): +inf for a scan stamped 0 or in the future.
   double update(const ros::Time& now);
   const std::string& scanProblem() const { return scan_problem_; }  // why its stamp is untrusted, or ""
+  // Why the last scan looked at was refused, naming the field (core::scanBeamsProblem), or
+  // "" when it was used.
+  const std::string& refusal() const { return refusal_; }
   // *out = the laser obstacles at `now`: the last scan's disks, or with `moving` the
   // tracked disks with their velocities.
   void obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const;
@@ -64,6 +67,10 @@ class LaserObstacles {
   std::vector<core::Disk> disks_, disks_next_;  // disks_next_: scratch for the next scan
   core::InputAgeTracker age_;
   std::string scan_problem_;
+  std::string refusal_;
+  ros::WallTime refusal_logged_;
+
+  void refuse(const std::string& why, const std::string& frame);
 
   std::unique_ptr<message_filters::Subscriber<sensor_msgs::LaserScan>> sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> filter_;
