@@ -21,7 +21,7 @@ amigobot_add_library(amigobot_tracking_aria
   src/aria/emulator_status.cpp
 )
 target_include_directories(amigobot_tracking_aria PUBLIC include)
-target_link_libraries(amigobot_tracking_aria PUBLIC amigobot_tracking_core amigobot_tracking_world mrpt::comms mrpt::poses yaml-cpp Threads::Threads)
+target_link_libraries(amigobot_tracking_aria PUBLIC amigobot_tracking_core amigobot_tracking_world amigobot_tracking_link mrpt::comms mrpt::poses yaml-cpp Threads::Threads)
 
 amigobot_add_tool(amigobot_emulator src/tools/amigobot_emulator.cpp)
 target_link_libraries(amigobot_emulator amigobot_tracking_aria amigobot_tracking_world)

@@ -7,7 +7,6 @@ amigobot_add_library(amigobot_tracking_sensors
   src/sensors/laser_session.cpp
   src/sensors/scan_source.cpp
   src/sensors/laser_emulator_server.cpp
-  src/sensors/transport_address.cpp
   src/sensors/hokuyo_device.cpp
   src/sensors/cola_device.cpp
   src/sensors/cola_session.cpp
@@ -17,7 +16,7 @@ amigobot_add_library(amigobot_tracking_sensors
   src/sensors/laser_driver.cpp
 )
 target_include_directories(amigobot_tracking_sensors PUBLIC include)
-target_link_libraries(amigobot_tracking_sensors PUBLIC amigobot_tracking_core amigobot_tracking_world mrpt::comms mrpt::hwdrivers)
+target_link_libraries(amigobot_tracking_sensors PUBLIC amigobot_tracking_core amigobot_tracking_world amigobot_tracking_link mrpt::comms mrpt::hwdrivers)
 
 amigobot_add_tool(laser_emulator src/tools/laser_emulator.cpp)
 target_link_libraries(laser_emulator amigobot_tracking_sensors amigobot_tracking_aria amigobot_tracking_world)

@@ -19,11 +19,14 @@ ALLOWED = {
     "sim": {"std", "eigen", "core", "yaml", "json"},
     "sim_mrpt": {"std", "eigen", "core", "world", "sim", "mrpt"},
     "world": {"std", "eigen", "core", "yaml"},
-    "aria": {"std", "posix", "eigen", "core", "world", "mrpt", "yaml"},
-    "sensors": {"std", "posix", "eigen", "core", "world", "mrpt"},
+    # The byte links (host:port, serial opener, emulator sockets and pty): below every device
+    # layer and beside core, so it depends on nothing of the package (and needs no MRPT).
+    "link": {"std", "posix"},
+    "aria": {"std", "posix", "eigen", "core", "world", "link", "mrpt", "yaml"},
+    "sensors": {"std", "posix", "eigen", "core", "world", "link", "mrpt"},
     "localization": {"std", "eigen", "core", "world", "mrpt", "yaml"},
     "teleop": {"std", "posix", "linux", "eigen", "core"},
-    "tools": {"std", "posix", "eigen", "core", "sim", "sim_mrpt", "aria", "sensors", "localization", "world", "mrpt", "yaml", "json", "cli11"},
+    "tools": {"std", "posix", "eigen", "core", "sim", "sim_mrpt", "link", "aria", "sensors", "localization", "world", "mrpt", "yaml", "json", "cli11"},
     "ros": None,  # anything
 }
 LIBRARIES = {"Eigen": "eigen", "yaml-cpp": "yaml", "nlohmann": "json", "mrpt": "mrpt", "CLI": "cli11",

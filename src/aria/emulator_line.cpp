@@ -1,7 +1,5 @@
 #include "amigobot_tracking/aria/emulator_line.h"
 
-#include <termios.h>
-
 #include <algorithm>
 
 #include "amigobot_tracking/aria/packet.h"
@@ -14,19 +12,6 @@ constexpr double kBitsPerByte = 10.0;  // start bit, 8 data bits, stop bit
 constexpr double kMaxBacklog = 1.0;    // [s] of output the firmware buffers
 
 }  // namespace
-
-int ttyBaud(int fd) {
-  termios tio{};
-  if (::tcgetattr(fd, &tio) != 0) return 0;
-  static const std::pair<speed_t, int> speeds[] = {{B1200, 1200},     {B2400, 2400},   {B4800, 4800},
-                                                   {B9600, 9600},     {B19200, 19200}, {B38400, 38400},
-                                                   {B57600, 57600},   {B115200, 115200}, {B230400, 230400}};
-  const speed_t speed = ::cfgetospeed(&tio);
-  for (const auto& [code, baud] : speeds) {
-    if (code == speed) return baud;
-  }
-  return 0;
-}
 
 std::uint8_t garble(std::uint8_t byte) {
   // Rotate and invert: different bytes stay different, but no header byte survives, so

@@ -1,12 +1,6 @@
 #include "amigobot_tracking/aria/emulator_server.h"
 
-#include <arpa/inet.h>
-#include <fcntl.h>
-#include <netinet/in.h>
-#include <netinet/tcp.h>
 #include <poll.h>
-#include <sys/socket.h>
-#include <termios.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -16,6 +10,9 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "amigobot_tracking/link/emulator_link.h"
+#include "amigobot_tracking/link/serial_port.h"
+
 namespace amigobot_tracking {
 namespace aria {
 namespace {
@@ -24,48 +21,11 @@ std::runtime_error systemError(const std::string& what) {
   return std::runtime_error("amigobot_emulator: " + what + ": " + std::strerror(errno));
 }
 
-int listenOn(const std::string& address, int port, int& bound_port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  if (fd < 0) throw systemError("socket");
-  const int one = 1;
-  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(static_cast<std::uint16_t>(port));
-  if (::inet_pton(AF_INET, address.c_str(), &addr.sin_addr) != 1) {
-    ::close(fd);
-    throw std::runtime_error("amigobot_emulator: bind address '" + address + "' is not an IPv4 address");
-  }
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0 || ::listen(fd, 4) < 0) {
-    const std::runtime_error error = systemError("cannot listen on " + address + ":" + std::to_string(port));
-    ::close(fd);
-    throw error;
-  }
-  socklen_t len = sizeof(addr);
-  ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
-  bound_port = ntohs(addr.sin_port);
-  return fd;
-}
-
 double wallSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Writes all bytes or gives up (non-blocking peer that does not read: drop, like a UART).
-void writeAll(int fd, const std::vector<std::uint8_t>& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::send(fd, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL | MSG_DONTWAIT);
-    if (n < 0 && errno == ENOTSOCK) {
-      const ssize_t m = ::write(fd, bytes.data() + done, bytes.size() - done);
-      if (m <= 0) return;
-      done += static_cast<std::size_t>(m);
-      continue;
-    }
-    if (n <= 0) return;
-    done += static_cast<std::size_t>(n);
-  }
-}
+void writeAll(int fd, const std::vector<std::uint8_t>& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
 
 }  // namespace
 
@@ -80,34 +40,21 @@ EmulatorServer::EmulatorServer(RobotEmulator& robot, EmulatorServerOptions optio
 }
 
 EmulatorServer::~EmulatorServer() {
-  for (int fd : {tcp_listen_, status_listen_, tcp_client_.fd, pty_.fd, pty_slave_}) {
-    if (fd >= 0) ::close(fd);
-  }
+  if (tcp_client_.fd >= 0) ::close(tcp_client_.fd);
   for (int fd : status_clients_) ::close(fd);
-  if (!options_.pty_link.empty() && !pty_name_.empty()) ::unlink(options_.pty_link.c_str());
 }
 
 void EmulatorServer::open() {
-  if (options_.tcp_port >= 0) tcp_listen_ = listenOn(options_.bind_address, options_.tcp_port, tcp_port_);
-  if (options_.status_port >= 0) status_listen_ = listenOn(options_.bind_address, options_.status_port, status_port_);
-  if (!options_.pty_link.empty()) {
-    pty_.fd = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-    if (pty_.fd < 0 || ::grantpt(pty_.fd) < 0 || ::unlockpt(pty_.fd) < 0) throw systemError("posix_openpt");
-    pty_name_ = ::ptsname(pty_.fd);
-    // Keep a slave descriptor open so the pty survives clients opening and closing it (as a
-    // robot's UART does), and make it raw: no echo, no line discipline.
-    pty_slave_ = ::open(pty_name_.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (pty_slave_ < 0) throw systemError("open " + pty_name_);
-    termios tio{};
-    ::tcgetattr(pty_slave_, &tio);
-    ::cfmakeraw(&tio);
-    ::cfsetspeed(&tio, B9600);
-    ::tcsetattr(pty_slave_, TCSANOW, &tio);
-    ::unlink(options_.pty_link.c_str());
-    if (::symlink(pty_name_.c_str(), options_.pty_link.c_str()) < 0) {
-      throw systemError("symlink " + options_.pty_link + " -> " + pty_name_);
+  try {
+    if (options_.tcp_port >= 0) tcp_listen_.open(options_.bind_address, options_.tcp_port);
+    if (options_.status_port >= 0) status_listen_.open(options_.bind_address, options_.status_port);
+    if (!options_.pty_link.empty()) {
+      pty_terminal_.open(options_.pty_link, 9600);  // a robot's UART starts at 9600
+      pty_.fd = pty_terminal_.master();
+      tcp_active_ = false;
     }
-    tcp_active_ = false;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("amigobot_emulator: ") + e.what());
   }
   start_wall_ = wallSeconds();
 }
@@ -123,11 +70,9 @@ void EmulatorServer::dropTcpClient() {
 }
 
 void EmulatorServer::acceptRobotClient() {
-  const int fd = ::accept4(tcp_listen_, nullptr, nullptr, SOCK_CLOEXEC);
+  const int fd = tcp_listen_.accept();
   if (fd < 0) return;
   dropTcpClient();  // one serial port: the newest client takes it over
-  const int one = 1;
-  ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof(one));
   tcp_client_.fd = fd;
   tcp_active_ = true;
 }
@@ -165,7 +110,7 @@ void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
 
 void EmulatorServer::flushPtyLine() {
   if (pty_.fd < 0) return;
-  const std::vector<std::uint8_t> out = pty_line_.due(wallSeconds(), ttyBaud(pty_slave_));
+  const std::vector<std::uint8_t> out = pty_line_.due(wallSeconds(), link::lineBaud(pty_terminal_.slave()));
   if (!out.empty()) writeAll(pty_.fd, out);
 }
 
@@ -180,7 +125,7 @@ void EmulatorServer::readLink(Link& link, bool is_tcp) {
     link.parser.feed(buffer, static_cast<std::size_t>(n));
   } else {
     const std::vector<std::uint8_t> heard =
-        SerialLineModel::receive(buffer, static_cast<std::size_t>(n), ttyBaud(pty_slave_), robot_.baud());
+        SerialLineModel::receive(buffer, static_cast<std::size_t>(n), link::lineBaud(pty_terminal_.slave()), robot_.baud());
     link.parser.feed(heard.data(), heard.size());
   }
   Packet packet;
@@ -224,8 +169,8 @@ void EmulatorServer::run(const std::atomic<bool>& stop) {
       if (fd >= 0) fds.push_back({fd, POLLIN, 0});
       return fd >= 0 ? static_cast<int>(fds.size()) - 1 : -1;
     };
-    const int i_tcp_listen = add(tcp_listen_);
-    const int i_status_listen = add(status_listen_);
+    const int i_tcp_listen = add(tcp_listen_.fd());
+    const int i_status_listen = add(status_listen_.fd());
     const int i_tcp = add(tcp_client_.fd);
     const int i_pty = add(pty_.fd);
     const int i_status0 = static_cast<int>(fds.size());
@@ -239,7 +184,7 @@ void EmulatorServer::run(const std::atomic<bool>& stop) {
     // POLLHUP on the master only means no client holds the slave: not an error.
     if (i_pty >= 0 && (fds[static_cast<std::size_t>(i_pty)].revents & POLLIN)) readLink(pty_, false);
     if (ready(i_status_listen)) {
-      const int fd = ::accept4(status_listen_, nullptr, nullptr, SOCK_CLOEXEC);
+      const int fd = status_listen_.accept();
       if (fd >= 0) {
         status_clients_.push_back(fd);
         status_buffers_.emplace_back();

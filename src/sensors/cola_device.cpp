@@ -8,16 +8,17 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
 #include <mrpt/comms/CClientTCPSocket.h>
 
+#include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/sensors/cola_a.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_model.h"
-#include "amigobot_tracking/sensors/transport_address.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -35,13 +36,12 @@ std::vector<std::string> fields(const std::string& body) {
 class ColaDevice : public LaserDevice {
  public:
   ColaDevice(const std::string& model, const std::string& port) : port_(port), model_(laserModel(model)) {
-    std::string host;
-    int tcp_port = 0;
-    if (!splitTcpAddress(port, &host, &tcp_port)) {
+    const std::optional<link::TcpAddress> tcp = link::parseTcpAddress(port);
+    if (!tcp) {
       throw std::invalid_argument("port: " + model + " needs host:port (CoLa-A over TCP: :2111, or :2112 as sick_tim and sick_scan), got '" + port + "'");
     }
     try {
-      socket_.connect(host, static_cast<unsigned short>(tcp_port), 2000);
+      socket_.connect(tcp->host, static_cast<unsigned short>(tcp->port), 2000);
       socket_.setTCPNoDelay(1);
     } catch (const std::exception& e) {
       throw std::runtime_error(model + " " + port + ": cannot connect");

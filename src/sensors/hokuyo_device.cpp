@@ -6,6 +6,7 @@
 // so CHokuyoURG treats it as an already open port and leaves reconnecting to LaserDriver.
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include <mrpt/comms/CClientTCPSocket.h>
@@ -13,9 +14,9 @@
 #include <mrpt/hwdrivers/CHokuyoURG.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/scip.h"
-#include "amigobot_tracking/sensors/transport_address.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -72,12 +73,10 @@ class HokuyoDevice : public LaserDevice {
   explicit HokuyoDevice(const std::string& port) : port_(port) {
     urg_.setMinLoggingLevel(mrpt::system::LVL_ERROR);
     urg_.useReceptionTime();
-    std::string host;
-    int tcp_port = 0;
     bool ok = false;
     try {
-      if (splitTcpAddress(port, &host, &tcp_port)) {
-        urg_.bindIO(std::make_shared<SumCheckedSocket>(host, tcp_port, &sums_));
+      if (const std::optional<link::TcpAddress> tcp = link::parseTcpAddress(port)) {
+        urg_.bindIO(std::make_shared<SumCheckedSocket>(tcp->host, tcp->port, &sums_));
       } else {
         urg_.setSerialPort(port);
         urg_.bindIO(std::make_shared<SumCheckedSerialPort>(port, &sums_));

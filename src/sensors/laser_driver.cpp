@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "amigobot_tracking/sensors/transport_address.h"
+#include "amigobot_tracking/link/address.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -20,9 +20,12 @@ void LaserDriverConfig::validate() const {
     throw std::invalid_argument("model: '" + model + "' has no driver here (hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar)");
   }
   if (port.empty()) throw std::invalid_argument("port: empty (expected /dev/ttyACM0 or host:port)");
-  std::string host;
-  int tcp = 0;
-  const bool is_tcp = splitTcpAddress(port, &host, &tcp);
+  bool is_tcp = false;
+  try {
+    is_tcp = link::parseTcpAddress(port).has_value();  // the one address rule
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("port: ") + e.what());
+  }
   if (!is_tcp && (model == "sick_tim5xx" || model == "sick_lms1xx")) {
     throw std::invalid_argument("port: " + model + " speaks CoLa-A over TCP: expected host:port, got '" + port + "'");
   }

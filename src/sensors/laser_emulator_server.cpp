@@ -1,11 +1,6 @@
 #include "amigobot_tracking/sensors/laser_emulator_server.h"
 
-#include <arpa/inet.h>
-#include <fcntl.h>
-#include <netinet/in.h>
 #include <poll.h>
-#include <sys/socket.h>
-#include <termios.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -14,6 +9,8 @@
 #include <limits>
 #include <stdexcept>
 #include <vector>
+
+#include "amigobot_tracking/link/emulator_link.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -27,17 +24,7 @@ double steadySeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Sends everything the peer takes now; a peer that does not read loses the rest, as a
-// sensor's output buffer overflows.
-void sendAll(int fd, const std::string& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    ssize_t n = ::send(fd, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL | MSG_DONTWAIT);
-    if (n < 0 && errno == ENOTSOCK) n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n <= 0) return;
-    done += static_cast<std::size_t>(n);
-  }
-}
+void sendAll(int fd, const std::string& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
 
 // Position just after the n-th occurrence of `c`, or npos.
 std::size_t after(const std::string& text, char c, int n) {
@@ -80,51 +67,25 @@ LaserEmulatorServer::LaserEmulatorServer(LaserModel model, ScanSource source, Po
 }
 
 LaserEmulatorServer::~LaserEmulatorServer() {
-  for (int fd : {listen_fd_, tcp_.fd, pty_.fd, pty_slave_}) {
-    if (fd >= 0) ::close(fd);
-  }
-  if (!options_.pty_link.empty() && !pty_name_.empty()) ::unlink(options_.pty_link.c_str());
+  if (tcp_.fd >= 0) ::close(tcp_.fd);  // the pty's master belongs to pty_terminal_
 }
 
 void LaserEmulatorServer::open() {
-  if (options_.tcp_port >= 0) {
-    listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    if (listen_fd_ < 0) throw failure("socket");
-    const int one = 1;
-    ::setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(static_cast<std::uint16_t>(options_.tcp_port));
-    if (::inet_pton(AF_INET, options_.bind_address.c_str(), &addr.sin_addr) != 1) {
-      throw std::runtime_error("laser_emulator: bind: '" + options_.bind_address + "' is not an IPv4 address");
+  try {
+    if (options_.tcp_port >= 0) listener_.open(options_.bind_address, options_.tcp_port, 2);
+    if (!options_.pty_link.empty()) {
+      pty_terminal_.open(options_.pty_link);
+      pty_.fd = pty_terminal_.master();
+      pty_.session = makeSession(model_, options_.serial);
     }
-    if (::bind(listen_fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0 || ::listen(listen_fd_, 2) < 0) {
-      throw failure("cannot listen on " + options_.bind_address + ":" + std::to_string(options_.tcp_port));
-    }
-    socklen_t len = sizeof(addr);
-    ::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len);
-    tcp_port_ = ntohs(addr.sin_port);
-  }
-  if (!options_.pty_link.empty()) {
-    pty_.fd = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-    if (pty_.fd < 0 || ::grantpt(pty_.fd) < 0 || ::unlockpt(pty_.fd) < 0) throw failure("posix_openpt");
-    pty_name_ = ::ptsname(pty_.fd);
-    // A held slave keeps the pty alive between clients; raw mode: no echo, no line editing.
-    pty_slave_ = ::open(pty_name_.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (pty_slave_ < 0) throw failure("open " + pty_name_);
-    termios tio{};
-    ::tcgetattr(pty_slave_, &tio);
-    ::cfmakeraw(&tio);
-    ::tcsetattr(pty_slave_, TCSANOW, &tio);
-    ::unlink(options_.pty_link.c_str());
-    if (::symlink(pty_name_.c_str(), options_.pty_link.c_str()) < 0) throw failure("symlink " + options_.pty_link);
-    pty_.session = makeSession(model_, options_.serial);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("laser_emulator: ") + e.what());
   }
   next_scan_ = steadySeconds();
 }
 
 void LaserEmulatorServer::accept() {
-  const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC | SOCK_NONBLOCK);
+  const int fd = listener_.accept();
   if (fd < 0) return;
   drop(tcp_);
   tcp_.fd = fd;
@@ -132,7 +93,7 @@ void LaserEmulatorServer::accept() {
 }
 
 void LaserEmulatorServer::drop(Link& link) {
-  if (link.fd >= 0) ::close(link.fd);
+  if (link.fd >= 0 && link.fd != pty_terminal_.master()) ::close(link.fd);
   link.fd = -1;
   link.session.reset();
   link.paced.clear();
@@ -230,13 +191,13 @@ void LaserEmulatorServer::drain(Link& link, double now) {
 void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
   while (!stop) {
     std::vector<pollfd> fds;
-    if (listen_fd_ >= 0) fds.push_back({listen_fd_, POLLIN, 0});
+    if (listener_.isOpen()) fds.push_back({listener_.fd(), POLLIN, 0});
     if (tcp_.fd >= 0) fds.push_back({tcp_.fd, POLLIN, 0});
     if (pty_.fd >= 0) fds.push_back({pty_.fd, POLLIN, 0});
     if (::poll(fds.data(), fds.size(), 5) < 0 && errno != EINTR) throw failure("poll");
     for (const pollfd& p : fds) {
       if (!(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
-      if (p.fd == listen_fd_) {
+      if (p.fd == listener_.fd()) {
         accept();
       } else if (p.fd == tcp_.fd) {
         serve(tcp_);

@@ -9,10 +9,8 @@
 // nearest its centre, +inf where none fell). The revolution is stamped when its first node
 // arrived; the samples are not in angle order in time (clockwise, from the front), so
 // time_increment is 0 and scan_time the measured revolution period.
-#include <fcntl.h>
 #include <poll.h>
 #include <sys/ioctl.h>
-#include <termios.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -25,6 +23,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "amigobot_tracking/link/serial_port.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 #include "amigobot_tracking/sensors/rplidar.h"
@@ -33,39 +32,16 @@ namespace amigobot_tracking {
 namespace sensors {
 namespace {
 
-// 256000 baud has no Bxxx constant: the kernel's termios2 with BOTHER takes any speed
-// (cp210x, the RPLIDAR's adapter, accepts it). <asm/termbits.h> clashes with <termios.h>,
-// hence the kernel's layout restated (asm-generic/termbits.h, NCCS 19).
-struct KernelTermios2 {
-  tcflag_t c_iflag, c_oflag, c_cflag, c_lflag;
-  cc_t c_line;
-  cc_t c_cc[19];
-  speed_t c_ispeed, c_ospeed;
-};
-constexpr tcflag_t kKernelBother = 0010000;  // BOTHER: the speed is c_ispeed/c_ospeed
-
-bool setCustomSpeed(int fd, int baud) {
-  KernelTermios2 t{};
-  if (::ioctl(fd, _IOR('T', 0x2A, KernelTermios2), &t) < 0) return false;  // TCGETS2
-  t.c_cflag = (t.c_cflag & ~static_cast<tcflag_t>(CBAUD)) | kKernelBother;
-  t.c_ispeed = t.c_ospeed = static_cast<speed_t>(baud);
-  return ::ioctl(fd, _IOW('T', 0x2B, KernelTermios2), &t) == 0;  // TCSETS2
-}
-
 class RplidarDevice : public LaserDevice {
  public:
   RplidarDevice(const std::string& port, int baud) : port_(port), model_(laserModel("rplidar")) {
-    fd_ = ::open(port.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-    if (fd_ < 0) throw std::runtime_error("rplidar " + port + ": cannot open: " + std::strerror(errno));
-    termios tio{};
-    if (::tcgetattr(fd_, &tio) < 0) throw failure("not a serial port");
-    ::cfmakeraw(&tio);
-    ::cfsetispeed(&tio, B115200);
-    ::cfsetospeed(&tio, B115200);
-    tio.c_cflag |= CLOCAL | CREAD;
-    if (::tcsetattr(fd_, TCSANOW, &tio) < 0) throw failure("cannot set 115200 8N1");
     // LaserDriverConfig::validate allows 115200 and 256000 only.
-    if (baud != 115200 && !setCustomSpeed(fd_, baud)) throw failure("cannot set " + std::to_string(baud) + " baud: " + std::strerror(errno));
+    try {
+      serial_.open(port, baud);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(std::string("rplidar: ") + e.what());
+    }
+    fd_ = serial_.fd();
     // The A1/A2 USB adapters stop the motor while DTR is set (a pty has no modem lines).
     int dtr = TIOCM_DTR;
     ::ioctl(fd_, TIOCMBIC, &dtr);
@@ -99,7 +75,6 @@ class RplidarDevice : public LaserDevice {
     if (fd_ < 0) return;
     const std::string stop = rplidar::request(rplidar::kStop);
     (void)!::write(fd_, stop.data(), stop.size());
-    ::close(fd_);
   }
 
   bool read(LaserScanData* scan, int timeout_ms) override {
@@ -147,12 +122,7 @@ class RplidarDevice : public LaserDevice {
     if (::write(fd_, bytes.data(), bytes.size()) != static_cast<ssize_t>(bytes.size())) throw failure("write failed");
   }
 
-  void discardInput() {
-    char chunk[4096];
-    while (::read(fd_, chunk, sizeof(chunk)) > 0) {
-    }
-    ::tcflush(fd_, TCIFLUSH);
-  }
+  void discardInput() { serial_.discardInput(); }
 
   std::string readExactly(std::size_t count, int timeout_ms) {
     const double end = systemSeconds() + timeout_ms / 1000.0;
@@ -223,7 +193,8 @@ class RplidarDevice : public LaserDevice {
 
   std::string port_, identity_, buffer_, damage_;
   LaserModel model_;
-  int fd_ = -1;
+  link::SerialPort serial_;  // raw 8N1 at 115200 or 256000
+  int fd_ = -1;              // serial_'s, read with poll() here
   std::vector<rplidar::Sample> samples_;
   double started_ = 0.0;  // [s] when the first node of this revolution arrived
 };

@@ -78,6 +78,19 @@ class CheckLayers(unittest.TestCase):
                          ["src/core/joystick.cpp:1: <linux/joystick.h> (linux)",
                           'src/teleop/device.cpp:4: "amigobot_tracking/aria/client.h" (aria)'])
 
+    def test_link_may_use_posix_only_and_aria_sensors_may_use_link(self):
+        self.write("src/link/serial_port.cpp", "#include <termios.h>\n#include <sys/socket.h>\n#include <string>\n"
+                   '#include "amigobot_tracking/core/types.h"\n#include <mrpt/comms/CSerialPort.h>\n#include <ros/ros.h>\n')
+        self.write("src/aria/transport.cpp", '#include "amigobot_tracking/link/address.h"\n')
+        self.write("src/sensors/device.cpp", '#include "amigobot_tracking/link/serial_port.h"\n')
+        self.write("src/core/uses_link.cpp", '#include "amigobot_tracking/link/address.h"\n')
+        messages, _, _ = check_layers.violations(self.root)
+        self.assertEqual([m.split(" is not")[0] for m in messages],
+                         ['src/core/uses_link.cpp:1: "amigobot_tracking/link/address.h" (link)',
+                          'src/link/serial_port.cpp:4: "amigobot_tracking/core/types.h" (core)',
+                          "src/link/serial_port.cpp:5: <mrpt/comms/CSerialPort.h> (mrpt)",
+                          "src/link/serial_port.cpp:6: <ros/ros.h> (other)"])
+
     def test_relative_quoted_include_outside_ros_fails(self):
         self.write("src/world/world.cpp", '#include "world.h"\n')
         self.assertIn('"world.h" (other)', self.only_violation())

@@ -12,9 +12,7 @@
 namespace amigobot_tracking {
 namespace aria {
 
-// The line speed [baud] a terminal's termios hold (both ends of a pty share them); 0 when
-// unknown.
-int ttyBaud(int fd);
+// (The speed the pty's termios hold, which both its ends share: link::lineBaud.)
 
 // One byte as a UART at another baud decodes it.
 std::uint8_t garble(std::uint8_t byte);

@@ -1,8 +1,8 @@
 // I/O around RobotEmulator: the robot port over TCP (one client at a time, like the one
 // serial port of a robot: a new connection replaces the old one) and over a pseudo-terminal
 // with a stable symlink (a modelled UART: aria/emulator_line.h), plus a line-based status socket that answers every line with the
-// ground-truth status line. Plain POSIX sockets and poll(): the emulator is the server side,
-// which MRPT's client classes do not cover.
+// ground-truth status line. The sockets and the pty are link/emulator_link.h's, shared with
+// the laser emulator; the poll() loop is the robot's own.
 #pragma once
 
 #include <atomic>
@@ -13,6 +13,7 @@
 
 #include "amigobot_tracking/aria/emulator.h"
 #include "amigobot_tracking/aria/emulator_line.h"
+#include "amigobot_tracking/link/emulator_link.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -36,9 +37,9 @@ class EmulatorServer {
 
   // Opens the listening sockets and the pty; throws std::runtime_error naming what failed.
   void open();
-  int tcpPort() const { return tcp_port_; }
-  int statusPort() const { return status_port_; }
-  const std::string& ptyName() const { return pty_name_; }
+  int tcpPort() const { return tcp_listen_.port(); }
+  int statusPort() const { return status_listen_.port(); }
+  const std::string& ptyName() const { return pty_terminal_.name(); }
   // Serves until `stop` becomes true (checked at least every 10 ms).
   void run(const std::atomic<bool>& stop);
 
@@ -57,10 +58,9 @@ class EmulatorServer {
 
   RobotEmulator& robot_;
   EmulatorServerOptions options_;
-  int tcp_listen_ = -1, status_listen_ = -1, pty_slave_ = -1;
-  int tcp_port_ = -1, status_port_ = -1;
-  std::string pty_name_;
-  Link tcp_client_, pty_;
+  link::TcpListener tcp_listen_, status_listen_;
+  link::PseudoTerminal pty_terminal_;
+  Link tcp_client_, pty_;  // pty_.fd is pty_terminal_'s master
   bool tcp_active_ = true;  // where the robot's replies go: the link that spoke last
   std::vector<int> status_clients_;
   std::vector<std::string> status_buffers_;

@@ -1,6 +1,6 @@
-// Byte links to the robot through MRPT: CSerialPort for a device path, CClientTCPSocket
-// for "host:port" (a robot simulator or a serial-to-TCP bridge). Errors are thrown as
-// std::runtime_error naming the port.
+// Byte links to the robot: link::SerialPort for a device path, MRPT's CClientTCPSocket for
+// "host:port" (a robot simulator or a serial-to-TCP bridge); which is which follows the one
+// address rule (link/address.h). Errors are thrown as std::runtime_error naming the port.
 #pragma once
 
 #include <cstddef>
@@ -32,9 +32,8 @@ class Transport {
   virtual std::string describe() const = 0;
 };
 
-// "host:port" (port all digits) selects TCP, anything else is a serial device.
-bool isTcpAddress(const std::string& port);
-// Throws std::invalid_argument for a malformed address or a non-positive baud rate.
+// Throws std::invalid_argument naming the text for a malformed address (link::parseTcpAddress)
+// or a non-positive baud rate.
 std::unique_ptr<Transport> makeTransport(const std::string& port, int baud);
 
 }  // namespace aria

@@ -4,7 +4,8 @@
 // at the model's rate from the robot pose the status source gives, and streamed to the
 // client that asked for it: at once when its last beam is measured, or for a RPLIDAR, whose
 // nodes leave as they are measured, paced over the revolution. Faults on request
-// damage every n-th streamed scan telegram. Plain POSIX sockets and poll().
+// damage every n-th streamed scan telegram. The socket and the pty are link/emulator_link.h's,
+// shared with the robot emulator; the poll() loop and the pacing are the laser's own.
 #pragma once
 
 #include <atomic>
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 #include "amigobot_tracking/sensors/laser_session.h"
 #include "amigobot_tracking/sensors/scan_source.h"
@@ -47,8 +49,8 @@ class LaserEmulatorServer {
   LaserEmulatorServer& operator=(const LaserEmulatorServer&) = delete;
 
   void open();  // throws std::runtime_error naming what failed
-  int tcpPort() const { return tcp_port_; }
-  const std::string& ptyName() const { return pty_name_; }
+  int tcpPort() const { return listener_.port(); }
+  const std::string& ptyName() const { return pty_terminal_.name(); }
   void run(const std::atomic<bool>& stop);  // checks `stop` at least every 10 ms
 
  private:
@@ -71,9 +73,9 @@ class LaserEmulatorServer {
   ScanSource source_;
   PoseSource pose_;
   LaserServerOptions options_;
-  int listen_fd_ = -1, pty_slave_ = -1, tcp_port_ = -1;
-  std::string pty_name_;
-  Link tcp_, pty_;
+  link::TcpListener listener_;
+  link::PseudoTerminal pty_terminal_;
+  Link tcp_, pty_;  // pty_.fd is pty_terminal_'s master
   EmulatedScan latest_, pending_;  // last sent; cast but not yet sent
   bool has_pending_ = false;
   double next_scan_ = 0.0, stall_until_ = 0.0, pending_due_ = 0.0;
