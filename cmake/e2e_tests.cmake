@@ -13,7 +13,8 @@ endif()
 add_executable(test_e2e EXCLUDE_FROM_ALL test/e2e/test_e2e.cpp test/e2e/test_bad_parameters.cpp
   test/e2e/test_target_loss.cpp test/e2e/test_link_loss.cpp test/e2e/test_avoidance.cpp test/e2e/test_two_robots.cpp
   test/e2e/test_fault_injection.cpp test/e2e/test_wrong_initial_pose.cpp test/e2e/test_laser_faults.cpp
-  test/e2e/test_cpu_starvation.cpp)
+  test/e2e/test_cpu_starvation.cpp
+  test/e2e/test_bad_scans.cpp test/e2e/test_bad_virtual_obstacles.cpp)
 target_link_libraries(test_e2e amigobot_tracking_ros_sim ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 target_include_directories(test_e2e SYSTEM PRIVATE ${GTEST_INCLUDE_DIRS})
 target_include_directories(test_e2e PRIVATE test/support)
@@ -48,6 +49,9 @@ amigobot_add_e2e_test(test/e2e/fault_laser_stall.test tcp_port status_port laser
 amigobot_add_e2e_test(test/e2e/fault_laser_kill.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/fault_cpu_starvation.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/bad_parameters.test tcp_port status_port)
+amigobot_add_e2e_test(test/e2e/bad_parameter_types.test tcp_port status_port)
+amigobot_add_e2e_test(test/e2e/bad_scans.test tcp_port status_port)
+amigobot_add_e2e_test(test/e2e/bad_virtual_obstacles.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/link_loss.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/avoidance.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/rates.test tcp_port status_port)

@@ -4,7 +4,8 @@
 // motion commands it decoded from the wire (judge.h). Timeouts are generous (shared 2-core
 // machine); the only time limits asserted are the nodes' documented timeouts.
 // Cases: this file (tracking, diamond, watchdog), test_bad_parameters.cpp, test_target_loss.cpp,
-// test_link_loss.cpp, test_avoidance.cpp, test_two_robots.cpp, test_fault_injection.cpp.
+// test_link_loss.cpp, test_avoidance.cpp, test_two_robots.cpp, test_fault_injection.cpp,
+// test_bad_scans.cpp, test_bad_virtual_obstacles.cpp.
 #include <gtest/gtest.h>
 
 #include <signal.h>
