@@ -4,6 +4,7 @@ amigobot_add_library(amigobot_tracking_sensors
   src/sensors/scip.cpp
   src/sensors/cola_a.cpp
   src/sensors/laser_model.cpp
+  src/sensors/laser_registry.cpp
   src/sensors/laser_session.cpp
   src/sensors/scan_source.cpp
   src/sensors/laser_emulator_server.cpp
@@ -23,7 +24,7 @@ target_link_libraries(laser_emulator amigobot_tracking_sensors amigobot_tracking
 
 if(CATKIN_ENABLE_TESTING)
   # The encoders against the specifications' examples, the sessions' conversations.
-  foreach(unit scip cola_a laser_session rplidar)
+  foreach(unit scip cola_a laser_session laser_registry rplidar)
     amigobot_add_unit_test(test_sensors_${unit} test/unit/test_sensors_${unit}.cpp)
     target_link_libraries(test_sensors_${unit} amigobot_tracking_sensors)
   endforeach()

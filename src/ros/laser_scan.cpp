@@ -6,27 +6,17 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/ros/param_reader.h"
+#include "amigobot_tracking/sensors/laser_registry.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
 const core::FieldTable<LaserParams>& laserFields() {
   using P = LaserParams;
-  using D = sensors::LaserDriverConfig;
   using core::field;
   static const core::FieldTable<P> table = [] {
     core::FieldTable<P> t;
-    core::include(&t, "", &P::driver,
-                  core::FieldTable<D>{
-                      field("model", &D::model, "-", "the laser's protocol", core::oneOf({"hokuyo_urg", "sick_tim5xx", "sick_lms1xx", "rplidar"})),
-                      field("port", &D::port, "-", "serial device, or host:port for TCP"),
-                      field("reconnect_period", &D::reconnect_period, "s", "first wait before reopening (doubles up to 8x)",
-                            core::interval(0.0, true, 60.0, false)),
-                      field("stall_timeout", &D::stall_timeout, "s", "no scan for this long: the link is reopened",
-                            core::interval(0.0, true, 60.0, false)),
-                      field("baud", &D::baud, "baud", "rplidar: 115200 (A1, A2M8) or 256000 (A2M12, A3); 0: 115200",
-                            core::nonNegative()),
-                  });
+    core::include(&t, "", &P::driver, sensors::laserDriverFields());  // the driver's rows, described once
     t.push_back(field("angle_convention", &P::angle_convention, "-",
                       "rplidar: device (0 = the device's 0 deg mark) or rplidar_ros (pi - theta, as rplidar_ros)",
                       core::oneOf({"device", "rplidar_ros"})));
@@ -52,7 +42,9 @@ std::string LaserParams::validate() const {
     return e.what();
   }
   if (frame_id.empty()) return "frame_id: empty";
-  if (angle_convention == "rplidar_ros" && driver.model != "rplidar") return "angle_convention: rplidar_ros is for model rplidar";
+  if (angle_convention == "rplidar_ros" && sensors::laserModel(driver.model).protocol != sensors::Protocol::kRplidar) {
+    return "angle_convention: rplidar_ros is for model rplidar";  // driver.validate() above: the model is known
+  }
   if (!(angle_max > angle_min)) return "angle_max: must be > angle_min";
   if (range_max > 0.0 && !(range_max > range_min)) return "range_max: must be > range_min";
   return "";

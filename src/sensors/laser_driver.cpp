@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "amigobot_tracking/link/address.h"
+#include "amigobot_tracking/sensors/laser_registry.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -16,9 +17,9 @@ double systemSeconds() {
 }
 
 void LaserDriverConfig::validate() const {
-  if (model != "hokuyo_urg" && model != "sick_tim5xx" && model != "sick_lms1xx" && model != "rplidar") {
-    throw std::invalid_argument("model: '" + model + "' has no driver here (hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar)");
-  }
+  const std::string bad = core::checkFields(laserDriverFields(), *this);  // the model known, the periods bounded
+  if (!bad.empty()) throw std::invalid_argument(bad);
+  const LaserModelEntry& entry = laserModelEntry(model);
   if (port.empty()) throw std::invalid_argument("port: empty (expected /dev/ttyACM0 or host:port)");
   bool is_tcp = false;
   try {
@@ -26,20 +27,20 @@ void LaserDriverConfig::validate() const {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("port: ") + e.what());
   }
-  if (!is_tcp && (model == "sick_tim5xx" || model == "sick_lms1xx")) {
-    throw std::invalid_argument("port: " + model + " speaks CoLa-A over TCP: expected host:port, got '" + port + "'");
+  if (!is_tcp && !entry.serial()) {
+    throw std::invalid_argument("port: " + model + " is reached over TCP only: expected host:port, got '" + port + "'");
   }
-  if (is_tcp && model == "rplidar") {
-    throw std::invalid_argument("port: rplidar (A1/A2) is a serial device: expected e.g. /dev/ttyUSB0, got '" + port + "'");
+  if (is_tcp && !entry.tcp()) {
+    throw std::invalid_argument("port: " + model + " is a serial device: expected e.g. /dev/ttyUSB0, got '" + port + "'");
   }
-  if (baud != 0 && model != "rplidar") {
-    throw std::invalid_argument("baud: only the rplidar's is chosen here (" + model + ": leave it 0), got " + std::to_string(baud));
+  if (baud != 0 && entry.bauds.empty()) {
+    throw std::invalid_argument("baud: " + model + " has no speed to choose (leave it 0), got " + std::to_string(baud));
   }
-  if (baud != 0 && baud != 115200 && baud != 256000) {
-    throw std::invalid_argument("baud: rplidar runs at 115200 (A1, A2M8) or 256000 (A2M12, A3), got " + std::to_string(baud));
+  if (baud != 0 && std::find(entry.bauds.begin(), entry.bauds.end(), baud) == entry.bauds.end()) {
+    std::string allowed;
+    for (int b : entry.bauds) allowed += (allowed.empty() ? "" : " or ") + std::to_string(b);
+    throw std::invalid_argument("baud: " + model + " runs at " + allowed + ", got " + std::to_string(baud));
   }
-  if (!(reconnect_period > 0.0 && reconnect_period <= 60.0)) throw std::invalid_argument("reconnect_period: must be within (0, 60] s");
-  if (!(stall_timeout > 0.0 && stall_timeout <= 60.0)) throw std::invalid_argument("stall_timeout: must be within (0, 60] s");
 }
 
 LaserDriver::LaserDriver(LaserDriverConfig config) : config_(std::move(config)) {
@@ -64,13 +65,8 @@ bool LaserDriver::poll(LaserScanData* scan, double timeout) {
       return false;
     }
     try {
-      if (config_.model == "hokuyo_urg") {
-        device_ = openHokuyo(config_.port);
-      } else if (config_.model == "rplidar") {
-        device_ = openRplidar(config_.port, config_.baud == 0 ? 115200 : config_.baud);
-      } else {
-        device_ = openCola(config_.model, config_.port);
-      }
+      const LaserModelEntry& entry = laserModelEntry(config_.model);
+      device_ = entry.open(config_.port, config_.baud == 0 && !entry.bauds.empty() ? entry.bauds.front() : config_.baud);
     } catch (const std::exception& e) {
       fail(e.what());
       return false;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "amigobot_tracking/link/emulator_link.h"
+#include "amigobot_tracking/sensors/laser_registry.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -55,7 +56,9 @@ void LaserServerOptions::validate(const LaserModel& model) const {
   if (fault == Fault::kChecksum && model.protocol != Protocol::kScip) {
     throw std::invalid_argument("fault: checksum needs a SCIP model (CoLa-A has no checksum)");
   }
-  if (!pty_link.empty() && model.protocol == Protocol::kColaA) throw std::invalid_argument("pty: the SICK lasers have no serial port");
+  if (!pty_link.empty() && !laserModelEntry(model.name).serial()) {
+    throw std::invalid_argument("pty: " + model.name + " has no serial port (TCP only)");
+  }
   if (!(stall_time > 0.0)) throw std::invalid_argument("stall_time: must be > 0");
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "amigobot_tracking/sensors/laser_registry.h"
 #include "amigobot_tracking/sensors/scip.h"
 
 namespace amigobot_tracking {
@@ -136,12 +137,12 @@ std::vector<std::uint32_t> deviceRanges(const LaserModel& model, const std::vect
   return out;
 }
 
+std::unique_ptr<LaserSession> makeScipSession(const LaserModel& model, const std::string& serial) {
+  return std::make_unique<ScipSession>(model, serial);
+}
+
 std::unique_ptr<LaserSession> makeSession(const LaserModel& model, const std::string& serial) {
-  switch (model.protocol) {
-    case Protocol::kScip: return std::make_unique<ScipSession>(model, serial);
-    case Protocol::kColaA: return makeColaSession(model, serial);
-    default: return makeRplidarSession(model, serial);
-  }
+  return laserModelEntry(model.name).session(model, serial);
 }
 
 }  // namespace sensors

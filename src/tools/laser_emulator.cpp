@@ -18,6 +18,7 @@
 #include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/core/program_arguments.h"
 #include "amigobot_tracking/sensors/laser_emulator_server.h"
+#include "amigobot_tracking/sensors/laser_registry.h"
 #include "amigobot_tracking/world/world.h"
 
 using namespace amigobot_tracking;
@@ -40,12 +41,12 @@ int main(int argc, char** argv) {
                "(Slamtec A1) scans of a world file.",
                "laser_emulator");
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-  app.add_option("--model", model_name, "hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar")->capture_default_str();
+  app.add_option("--model", model_name, sensors::laserModelList())->capture_default_str();
   app.add_option("--scan-frequency", lms_frequency, "sick_lms1xx: 25 | 50 [Hz]")->capture_default_str();
   app.add_option("--resolution", lms_resolution, "sick_lms1xx: 0.5 | 0.25 [deg] (0.25 at 25 Hz only)")->capture_default_str();
   app.add_option("--tcp-port", server.tcp_port, "TCP port (0 = any free port; -1 = none)")->capture_default_str();
   app.add_option("--bind", server.bind_address, "IPv4 address to listen on")->capture_default_str();
-  app.add_option("--pty", server.pty_link, "hokuyo_urg, rplidar: also serve a pseudo-terminal, symlinked at this path");
+  app.add_option("--pty", server.pty_link, "models with a serial port: also serve a pseudo-terminal, symlinked at this path");
   app.add_option("--world", world_file, "world YAML (world/world.h): the disks, walls and polygons the laser sees");
   app.add_option("--status-port", status_port, "amigobot_emulator's status port: the robot's true pose (-1: --pose)")
       ->capture_default_str();

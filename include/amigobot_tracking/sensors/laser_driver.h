@@ -13,13 +13,15 @@ namespace amigobot_tracking {
 namespace sensors {
 
 struct LaserDriverConfig {
-  std::string model = "hokuyo_urg";    // hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar
+  std::string model = "hokuyo_urg";    // an entry of laser_registry.h
   std::string port = "/dev/ttyACM0";   // serial device or host:port
   double reconnect_period = 1.0;       // [s] first wait before reopening
   double stall_timeout = 1.0;          // [s] no scan for this long: the link is reopened
-  int baud = 0;                        // rplidar: 115200 (A1, A2M8) or 256000 (A2M12, A3); 0: 115200
+  int baud = 0;                        // one of the model's bauds (rplidar: 115200 or 256000); 0: its first
 
-  void validate() const;  // throws std::invalid_argument naming the bad field
+  // Checks laserDriverFields() (laser_registry.h) and the model's link and bauds; throws
+  // std::invalid_argument naming the bad field.
+  void validate() const;
 };
 
 struct LaserDriverCounters {

@@ -38,7 +38,7 @@ struct RplidarGeometry {
 };
 
 struct LaserModel {
-  std::string name;  // hokuyo_urg | sick_tim5xx | sick_lms1xx | rplidar
+  std::string name;  // its entry in laser_registry.h
   Protocol protocol = Protocol::kScip;
   ScipGeometry scip;
   ColaGeometry cola;
@@ -58,10 +58,8 @@ struct LaserModel {
   core::ScanGeometry geometry() const;
 };
 
-// hokuyo_urg (URG-04LX: 240 deg, 0.352 deg, 10 Hz, 4 m), sick_tim5xx (TiM5xx: 270 deg,
-// 0.333 deg, 15 Hz, 10 m), sick_lms1xx (LMS111: 270 deg, 0.5 deg, 25 Hz, 20 m) or rplidar
-// (A1M8: 360 deg, ~1 deg, 5.5 Hz, 12 m). Throws std::invalid_argument naming the model
-// otherwise.
+// The model of a laser_registry.h entry (laser_registry.cpp); throws std::invalid_argument
+// naming `name` and the known models when there is no such entry.
 LaserModel laserModel(const std::string& name);
 // The LMS1xx's scan configurations (mLMPsetscancfg): 25 Hz at 0.25 or 0.5 deg, 50 Hz at
 // 0.5 deg. Throws std::invalid_argument naming the bad value for another combination.

@@ -1,0 +1,110 @@
+#include "amigobot_tracking/sensors/laser_registry.h"
+
+#include <stdexcept>
+
+namespace amigobot_tracking {
+namespace sensors {
+namespace {
+
+LaserModel hokuyoUrg() {
+  LaserModel m;
+  m.name = "hokuyo_urg";
+  m.protocol = Protocol::kScip;  // the URG-04LX's PP numbers are ScipGeometry's defaults
+  m.range_min = m.scip.dmin_mm / 1000.0;
+  m.range_max = m.scip.dmax_mm / 1000.0;
+  m.rate = m.scip.scan_rpm / 60.0;
+  return m;
+}
+
+LaserModel sickTim5xx() {
+  LaserModel m;
+  m.name = "sick_tim5xx";
+  m.protocol = Protocol::kColaA;  // the TiM5xx's telegram numbers are ColaGeometry's defaults
+  m.range_min = 0.05;
+  m.range_max = 10.0;
+  m.rate = m.cola.scan_frequency / 100.0;
+  return m;
+}
+
+LaserModel sickLms1xx() {
+  LaserModel m;
+  m.name = "sick_lms1xx";
+  m.protocol = Protocol::kColaA;
+  // The LMS111 data sheet's operating range starts at 0.5 m, but the device reports echoes
+  // from 0.01 m on (real captures carry 0.126 m) and clearpath's LMS1xx driver publishes
+  // range_min 0.01: dropping them would lose what the device measured.
+  m.range_min = 0.01;
+  m.range_max = 20.0;
+  setLms1xxScanConfig(&m, 25.0, 0.5);
+  return m;
+}
+
+LaserModel rplidarA1() {
+  LaserModel m;
+  m.name = "rplidar";
+  m.protocol = Protocol::kRplidar;
+  m.range_min = 0.15;  // A1M8 data sheet: 0.15 .. 12 m
+  m.range_max = 12.0;
+  m.rate = 5.5;
+  return m;
+}
+
+// Built on first use (not at static initialisation), so any other static may read it. One
+// entry per model: name, what it is, link, serial speeds, model, driver, emulator session.
+const std::vector<LaserModelEntry>& registry() {
+  static const std::vector<LaserModelEntry> models{
+      {"hokuyo_urg", "Hokuyo URG-04LX, SCIP 2.0: 240 deg, 0.352 deg, 10 Hz, 0.02 .. 4 m", LaserLink::kSerialOrTcp, {},
+       hokuyoUrg, [](const std::string& port, int) { return openHokuyo(port); }, makeScipSession},
+      {"sick_tim5xx", "SICK TiM5xx, CoLa-A over TCP: 270 deg, 0.333 deg, 15 Hz, 0.05 .. 10 m", LaserLink::kTcp, {},
+       sickTim5xx, [](const std::string& port, int) { return openCola("sick_tim5xx", port); }, makeColaSession},
+      {"sick_lms1xx", "SICK LMS111, CoLa-A over TCP: 270 deg, 0.5 deg, 25 Hz, 0.01 .. 20 m", LaserLink::kTcp, {},
+       sickLms1xx, [](const std::string& port, int) { return openCola("sick_lms1xx", port); }, makeColaSession},
+      {"rplidar", "Slamtec RPLIDAR A1M8 (A2, A3), serial: 360 deg, ~1 deg, 5.5 Hz, 0.15 .. 12 m", LaserLink::kSerial,
+       {115200, 256000}, rplidarA1, [](const std::string& port, int baud) { return openRplidar(port, baud); },
+       makeRplidarSession},
+  };
+  return models;
+}
+
+}  // namespace
+
+const std::vector<LaserModelEntry>& laserModels() { return registry(); }
+
+std::vector<std::string> laserModelNames() {
+  std::vector<std::string> names;
+  for (const LaserModelEntry& e : registry()) names.push_back(e.name);
+  return names;
+}
+
+std::string laserModelList() {
+  std::string list;
+  for (const LaserModelEntry& e : registry()) list += (list.empty() ? "" : " | ") + e.name;
+  return list;
+}
+
+const LaserModelEntry& laserModelEntry(const std::string& name) {
+  for (const LaserModelEntry& e : registry()) {
+    if (e.name == name) return e;
+  }
+  throw std::invalid_argument("model: '" + name + "' is not a known laser (" + laserModelList() + ")");
+}
+
+LaserModel laserModel(const std::string& name) { return laserModelEntry(name).model(); }
+
+const core::FieldTable<LaserDriverConfig>& laserDriverFields() {
+  using D = LaserDriverConfig;
+  using core::field;
+  static const core::FieldTable<D> table = {
+      field("model", &D::model, "-", "the laser's protocol", core::oneOf(laserModelNames())),
+      field("port", &D::port, "-", "serial device, or host:port for TCP"),
+      field("reconnect_period", &D::reconnect_period, "s", "first wait before reopening (doubles up to 8x)",
+            core::boundedTimeout()),
+      field("stall_timeout", &D::stall_timeout, "s", "no scan for this long: the link is reopened", core::boundedTimeout()),
+      field("baud", &D::baud, "baud", "rplidar: 115200 (A1, A2M8) or 256000 (A2M12, A3); 0: 115200",
+            core::nonNegative()),
+  };
+  return table;
+}
+
+}  // namespace sensors
+}  // namespace amigobot_tracking
