@@ -37,6 +37,8 @@ FieldTable<ControllerConfig> makeTable() {
             oneOf(controlLawNames())),
       field("barrier_rate", &C::barrier_rate, "1/s",
             "recommended law: barrier rate gamma, clearance' >= -gamma (clearance - min_margin)", positive()),
+      field("body_margin", &C::body_margin, "m",
+            "recommended law: the body and p_r's R-disk are held this much wider (sensing error)", boundedRadiusOrOff()),
       field("field_margin", &C::field_margin, "m", "recommended law: width of the field's bend around a disk's zone",
             positive()),
       // Beyond the paper: each default is the paper's law.

@@ -14,6 +14,13 @@ namespace {
 constexpr double kBandSlowness = 3.0;  // at a zone's boundary, from outside
 constexpr double kZoneSlowness = 20.0; // deep inside a zone
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// A corridor between two zones narrower than this many cells is not resolved by the grid: the
+// field's direction in it flips from one node to the next (p_r wedged in a 7 cm corridor of a
+// U's back wall, d = +-side on alternate steps, 0.8 rad/s bang-bang). narrowGapsClosed closes it.
+constexpr double kResolvedGapCells = 2.0;
+// A bridge's zone reaches this many cells beyond the corridor's middle: zones are soft (20x),
+// so a bridge one cell thick was crossed rather than a 3 m detour taken round a U.
+constexpr double kBridgeCells = 3.0;
 
 // The grid: nodes at (i0 + i, j0 + j) * cell, i in [0, nx), j in [0, ny).
 struct Grid {
@@ -70,8 +77,30 @@ double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacle
   return f;
 }
 
+std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const NavigationFieldConfig& config) {
+  const double a = kResolvedGapCells * config.cell;
+  std::vector<Disk> zones = obstacles;
+  for (size_t j = 0; j < obstacles.size(); ++j)
+    for (size_t k = j + 1; k < obstacles.size(); ++k) {
+      const Eigen::Vector2d between = obstacles[k].center - obstacles[j].center;
+      const double distance = between.norm();
+      const double w = distance - obstacles[j].radius - obstacles[k].radius - 2.0 * config.robot_radius;
+      const double t = std::clamp((2.0 * a - w) / a, 0.0, 1.0);
+      const double closing = 0.5 * w + kBridgeCells * config.cell;  // the bridge's zone radius that shuts the corridor
+      if (t <= 0.0 || closing <= -config.margin || distance < 1e-9) continue;
+      // Zone radius from -margin (no slowness anywhere) at t = 0 to `closing` at t = 1.
+      const double zone = -config.margin + t * (closing + config.margin);
+      Disk bridge;
+      bridge.center = obstacles[j].center + (obstacles[j].radius + config.robot_radius + 0.5 * w) / distance * between;
+      bridge.radius = zone - config.robot_radius;
+      zones.push_back(bridge);
+    }
+  return zones;
+}
+
 NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
-                                        const std::vector<Disk>& obstacles, const NavigationFieldConfig& config) {
+                                        const std::vector<Disk>& sensed, const NavigationFieldConfig& config) {
+  const std::vector<Disk> obstacles = narrowGapsClosed(sensed, config);
   NavigationDirection out;
   const Eigen::Vector2d e = p_d - p_r;
   const Eigen::Vector2d e_hat = e.norm() > 1e-12 ? Eigen::Vector2d(e / e.norm()) : Eigen::Vector2d::Zero();

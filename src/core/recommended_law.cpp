@@ -15,17 +15,26 @@ namespace core {
 RecommendedCommand recommendedCommand(const ControllerConfig& config, const DiamondSet& diamond,
                                       const RecommendedInput& in, const std::vector<Disk>& obstacles) {
   RecommendedCommand out;
-  const double radius = config.effectiveRadius();
+  // The law holds the body itself (body_safe: the body disk and the disk of radius R around
+  // p_r, safety_filter.h), not the disk of radius R + r around p_r of (10), so its zones are
+  // R wide (plus body_margin): a gap the body passes is a gap for the field.
+  const double radius = config.robot_radius + config.body_margin;
   const double error_norm = in.e.norm();
   const double xi = error_norm / in.rho;
   const Eigen::Vector2d e_hat = error_norm > 1e-12 ? Eigen::Vector2d(in.e / error_norm) : Eigen::Vector2d::Zero();
   const double pull = config.k_d * transformT(xi) + config.lambda * (in.rho - config.rho_inf) * xi;
   out.u_track = pull * e_hat + in.v_hat;
 
+  // A moving disk is held off by more: up to the full R + r of (10) for a disk as fast as the
+  // robot (|v_j| >= v_bar), which the body, steering only along its heading, cannot outrun
+  // sideways; it needs the room to turn away. Continuous in the disk's speed.
+  std::vector<Disk> held = obstacles;
+  for (Disk& o : held) o.radius += config.offset * std::min(1.0, o.velocity.norm() / config.v_max);
+
   NavigationFieldConfig field;
   field.robot_radius = radius;
   field.margin = config.field_margin;
-  const NavigationDirection nav = navigationDirection(in.p_r, in.p_r + in.e, obstacles, field);
+  const NavigationDirection nav = navigationDirection(in.p_r, in.p_r + in.e, held, field);
   out.direction = nav.direction;
   out.blend = nav.blend;
   const double feed_forward = std::clamp(nav.direction.dot(e_hat), 0.0, 1.0);
@@ -41,8 +50,9 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   filter.gamma = config.barrier_rate;
   filter.min_margin = config.min_margin;
   filter.obstacle_velocities = config.moving_obstacles;
+  filter.body_rows = config.body_safe;
   filter.nominal = out.u_nominal;
-  const SafetyFilterResult safe = safetyFilter(filter, diamond, obstacles);
+  const SafetyFilterResult safe = safetyFilter(filter, diamond, held);
   if (!safe.solved || !safe.u.isFinite()) return out;
   out.valid = true;
   out.u = safe.u;
@@ -52,9 +62,7 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   const Eigen::Vector2d applied = safe.u.v * heading + config.offset * safe.u.omega * Eigen::Vector2d(-heading.y(), heading.x());
   out.shortfall = std::max(0.0, e_hat.dot(out.u_track - applied));
   out.relaxation = (1.0 + config.k_r) * xi * xi * out.shortfall;
-  out.min_clearance = std::numeric_limits<double>::infinity();
-  for (const Disk& o : obstacles)
-    out.min_clearance = std::min(out.min_clearance, (in.p_r - o.center).norm() - radius - o.radius);
+  out.min_clearance = safetyClearance(filter, obstacles);
   return out;
 }
 

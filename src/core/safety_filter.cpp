@@ -114,6 +114,20 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
     qp.b.push_back(bound);
     ++result.rows;
   }
+  if (in.body_rows) {
+    for (const Disk& o : obstacles) {
+      const Eigen::Vector2d away = in.pose.position() - o.center;
+      const double distance = away.norm();
+      const Eigen::Vector2d n = distance < 1e-9 ? Eigen::Vector2d(-heading) : Eigen::Vector2d(away / distance);
+      const double h = distance - (in.robot_radius + o.radius);
+      const double bound = in.gamma * (h - in.min_margin) - (in.obstacle_velocities ? n.dot(o.velocity) : 0.0);
+      if (bound >= diamond.vMax()) continue;  // the centre moves at most v_bar
+      // -n^T heading v - s <= gamma (h - m) - n^T v_j: the centre's velocity is v heading.
+      qp.a.emplace_back(-n.dot(heading), 0.0, -1.0);
+      qp.b.push_back(bound);
+      ++result.rows;
+    }
+  }
   const SmallQpResult solution = solveSmallQp(qp);
   if (!solution.solved) return result;
   result.solved = true;
@@ -124,6 +138,16 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
   // Round-off may leave the vertex a hair outside the diamond: scale it back (sigma of (12)).
   if (const auto inside = diamond.saturate(result.u)) result.u = *inside;
   return result;
+}
+
+double safetyClearance(const SafetyFilterInput& in, const std::vector<Disk>& obstacles) {
+  const Eigen::Vector2d p_r = in.pose.position() + in.offset * Eigen::Vector2d(std::cos(in.pose.theta), std::sin(in.pose.theta));
+  double least = std::numeric_limits<double>::infinity();
+  for (const Disk& o : obstacles) {
+    least = std::min(least, (p_r - o.center).norm() - in.robot_radius - o.radius);
+    if (in.body_rows) least = std::min(least, (in.pose.position() - o.center).norm() - in.robot_radius - o.radius);
+  }
+  return least;
 }
 
 }  // namespace core

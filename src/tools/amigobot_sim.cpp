@@ -169,6 +169,7 @@ int main(int argc, char** argv) {
   std::string scenario_path, out, benchmark_json;
   std::vector<std::string> sets;
   int monte_carlo = 0, benchmark = 0;
+  long long replay = -1;  // --mc-replay K
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   double obstacle_speed = 0.0;
   sim::MonteCarloOptions mc;
@@ -201,6 +202,10 @@ int main(int argc, char** argv) {
   app.add_option("--mc-noise", mc.noise_std_max, "Monte Carlo: target noise std drawn in [0, S] m")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--mc-sample-periods", mc.sample_periods, "Monte Carlo: target sample period drawn from these [s]")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--mc-replay", replay,
+                 "run Monte Carlo variant K alone (per_run[].index of monte_carlo.json, same --seed and --mc-* options), "
+                 "writing its trajectory and metrics like a single run")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--benchmark", benchmark, "run N times without output; print the real-time factor")
       ->check(CLI::Range(1, 1000000));
@@ -259,6 +264,11 @@ int main(int argc, char** argv) {
       std::printf("%s", json.substr(0, json.find("\"per_run\"")).c_str());
       std::printf("  ...\n}\nwrote %s/monte_carlo.json\n", out.c_str());
       return 0;
+    }
+    if (replay >= 0) {  // one variant, drawn as runMonteCarlo draws it
+      mc.seed = seed;
+      mc.obstacle_speed = obstacle_speed;
+      scenario = sim::randomVariant(scenario, mc, static_cast<std::uint64_t>(replay));
     }
     const sim::RunResult result = sim::runScenario(scenario, true);
     sim::writeTrajectoryCsv(out + "/trajectory.csv", result.rows);

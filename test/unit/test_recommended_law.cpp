@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "amigobot_tracking/core/controller.h"
+#include "amigobot_tracking/core/navigation_field.h"
 #include "amigobot_tracking/core/recommended_law.h"
 #include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/sim/closed_loop.h"
@@ -156,8 +157,8 @@ TEST(RecommendedLaw, CommandIsContinuousAsADiskJoinsAGroup) {
   EXPECT_LT(largest_jump, 0.01);  // [m/s] per mm; the escape jumped 0 -> 0.305 m/s here
 }
 
-// Small state changes: the pose moved across the pillar's shadow, where the field bends and the
-// barrier row binds. Continuity, not only a small step: the largest change per step shrinks
+// Small state changes: the pose moved across the pillar's shadow, close to its zone, where the
+// field turns fastest. Continuity, not only a small step: the largest change per step shrinks
 // with the step (a jump would not).
 TEST(RecommendedLaw, CommandIsContinuousInThePose) {
   core::ControllerConfig config;
@@ -165,17 +166,19 @@ TEST(RecommendedLaw, CommandIsContinuousInThePose) {
   const core::DiamondSet diamond(config.v_max, config.w_max);
   const std::vector<core::Disk> disks = {clutter_scenes::disk(1.5, 0.0, 0.3)};
   const Eigen::Vector2d target(3.5, 0.0);
+  bool bending = false;
   auto largestJump = [&](double step) {
     double largest = 0.0;
     core::RecommendedCommand last;
     for (int k = 0; k * step <= 0.2; ++k) {
       core::RecommendedInput in;
-      in.pose = {0.0, -0.1 + step * k, 0.0};
+      in.pose = {0.65, -0.1 + step * k, 0.0};  // p_r 7 cm from the pillar's zone, where the field bends
       in.p_r = in.pose.position() + Eigen::Vector2d(config.offset, 0.0);
       in.e = target - in.p_r;
       in.rho = 4.0;
       const core::RecommendedCommand c = core::recommendedCommand(config, diamond, in, disks);
       EXPECT_TRUE(c.valid);
+      bending = bending || c.blend > 0.5;
       if (k > 0) largest = std::max(largest, std::hypot(c.u.v - last.u.v, config.offset * (c.u.omega - last.u.omega)));
       last = c;
     }
@@ -184,6 +187,8 @@ TEST(RecommendedLaw, CommandIsContinuousInThePose) {
   const double coarse = largestJump(0.002), fine = largestJump(0.0005);
   EXPECT_LT(coarse, 0.05);        // [m/s] per 2 mm
   EXPECT_LT(fine, 0.5 * coarse);  // about a quarter for a Lipschitz command
+  EXPECT_TRUE(bending) << "the field never bent in the sweep: it tests nothing";
+  EXPECT_GT(coarse, 1e-4) << "the command did not change across the sweep: it tests nothing";
 }
 
 // (13') holds |e| < rho by itself against an infeasible reference (0.6 m/s against v_bar 0.3),
@@ -228,4 +233,47 @@ TEST(RecommendedLaw, RhoDoesNotJumpWithAThinBandAt20Hz) {
   EXPECT_LT(largest_step[0], 0.1) << "recommended";
   EXPECT_LT(largest_rho[0], 3.0) << "recommended";
   EXPECT_GT(largest_step[1], 1.0) << "paper (measured 7.1 m in the audit)";
+}
+
+// A doorway the body passes (0.7 m between the disks' surfaces, the body 0.36 m wide) but the
+// disk of radius R + r around p_r of (10) does not (0.96 m): the law holds the body itself
+// (safety_filter.h, body_rows), so the robot drives through the door, with no contact, instead
+// of going round the pair (as it did while the law held the R + r disk).
+TEST(RecommendedLaw, DrivesThroughADoorTheBodyPassesButTheEffectiveDiskDoesNot) {
+  Scene door{"door", {clutter_scenes::disk(2.5, 0.45, 0.1), clutter_scenes::disk(2.5, -0.45, 0.1)}, {},
+             {{0.6, 0.0}, {5.0, 0.0}}, 25.0, 30.0};
+  const sim::ClosedLoopSetup setup = setupOf(door, sim::ControlLaw::kRecommended);
+  const core::SplineReference reference(door.waypoints, door.spline_duration);
+  double crossing_y = NAN;  // where the centre crosses the door's line
+  double last_x = 0.0, last_y = 0.0;
+  const sim::ClosedLoopSummary s = sim::runClosedLoop(setup, reference, [&](const sim::ClosedLoopStep& step) {
+    if (last_x < 2.5 && step.pose.x >= 2.5 && std::isnan(crossing_y)) crossing_y = last_y;
+    last_x = step.pose.x;
+    last_y = step.pose.y;
+  });
+  ASSERT_FALSE(std::isnan(crossing_y)) << "the robot never crossed x = 2.5";
+  EXPECT_LT(std::abs(crossing_y), 0.45 - 0.1 - 0.18) << "crossed outside the door";
+  EXPECT_EQ(s.metrics.body_collisions + s.metrics.offset_collisions, 0u);
+  EXPECT_GT(s.metrics.min_clearance_body, 0.0);
+  EXPECT_EQ(s.envelope_widenings, 0u);
+  EXPECT_LT(s.final_error, 0.2);
+}
+
+// The field's bridges (navigation_field.h): a corridor the 5 cm grid cannot resolve is shut,
+// a wide one is left alone, and the slowness at the corridor's middle grows continuously as
+// the disks close in (no bridge appears with a jump).
+TEST(RecommendedLaw, FieldShutsCorridorsTheGridCannotResolve) {
+  core::NavigationFieldConfig field;
+  field.robot_radius = 0.18;
+  auto middleSlowness = [&](double w) {  // two 0.2 m disks whose zones leave a corridor w wide
+    const double half = 0.2 + 0.18 + 0.5 * w;
+    const std::vector<core::Disk> disks = {clutter_scenes::disk(0.0, half, 0.2), clutter_scenes::disk(0.0, -half, 0.2)};
+    return core::fieldSlowness(Eigen::Vector2d::Zero(), core::narrowGapsClosed(disks, field), field);
+  };
+  EXPECT_DOUBLE_EQ(middleSlowness(0.5), 1.0);   // wide: free space in the middle, no bridge
+  EXPECT_GT(middleSlowness(0.066), 15.0);       // the U's 6.6 cm corridor: shut (20 deep inside a zone)
+  double largest_step = 0.0;
+  for (double w = 0.25; w > 0.0; w -= 0.0005)
+    largest_step = std::max(largest_step, std::abs(middleSlowness(w) - middleSlowness(w + 0.0005)));
+  EXPECT_LT(largest_step, 1.0);  // per 0.5 mm, against 20 inside a zone: no jump
 }

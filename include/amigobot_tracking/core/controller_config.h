@@ -53,8 +53,11 @@ struct ControllerConfig {
   // (recommended_law.h: a navigation field, a safety filter over the diamond and (13'); the
   // switches tangential_avoidance, k_t, tangential_hysteresis and obstacle_horizon do not apply).
   std::string law = "paper";
-  double barrier_rate = 2.0;           // [1/s] gamma of the recommended law's barrier rows:
+  double barrier_rate = 5.333;         // [1/s] gamma of the recommended law's barrier rows (amigobot_sim --tune):
                                        // clearance' >= -gamma (clearance - min_margin)
+  double body_margin = 0.0;            // [m] the recommended law holds the body (and the disk of
+                                       // radius R around p_r) this much wider: laser noise and
+                                       // localisation error on a real robot (config/tracking.yaml)
   double field_margin = 0.1;           // [m] the recommended law's field bends around a disk's
                                        // zone within this, and blends in when the line of sight
                                        // to the target passes closer than this

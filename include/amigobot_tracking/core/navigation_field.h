@@ -48,6 +48,13 @@ double segmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, cons
 // The slowness f(x) of the field (1 in free space).
 double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
 
+// The disks as the field sees them: the sensed ones plus, between two whose zones leave a
+// corridor w < 2a (a = 2 cells) the grid cannot resolve, a bridge disk at the corridor's middle
+// whose zone grows continuously from nothing (zone radius -margin, no slowness) at w = 2a to
+// w/2 + 3 cells at w <= a, which shuts the corridor. (A bridge's radius may be negative: only
+// its zone R + r_b counts.) The safety filter still holds the true disks.
+std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
+
 NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
                                         const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
 

@@ -43,7 +43,7 @@ struct RecommendedCommand {
   double slack = 0.0;       // the filter's slack (0 unless the barrier rows conflict)
   int barrier_rows = 0;
   int active_barriers = 0;
-  double min_clearance = 0.0;  // of the effective disk around p_r [m]; +inf without obstacles
+  double min_clearance = 0.0;  // of the disks the filter holds (safetyClearance) [m]; +inf without obstacles
 };
 
 RecommendedCommand recommendedCommand(const ControllerConfig& config, const DiamondSet& diamond,

@@ -7,7 +7,12 @@
 //   subject to  |v|/v_bar + |w|/w_bar <= 1                    (the diamond's four edges)
 //               n_j^T (G u - v_j) >= -gamma (h_j - m) - s      (one row per disk j)
 // with h_j = |p_r - c_j| - (R_eff + r_j) the clearance of the offset point's disk, n_j its
-// outward normal, v_j the disk's velocity and m = min_margin. The objective is strictly
+// outward normal, v_j the disk's velocity and m = min_margin. With `body_rows`, each disk
+// also gets the row of the body disk itself (centre c, radius R_eff):
+//               n_c^T (v heading - v_j) >= -gamma (h_c - m) - s,  h_c = |c - c_j| - (R_eff + r_j)
+// which holds the body exactly instead of through the disk of radius R + r around p_r that
+// encloses it at every heading (the body may pass a disk sideways, where that disk keeps r
+// too much). Only v enters it: turning on the spot never moves the body disk. The objective is strictly
 // convex, so the minimiser is unique and continuous in the state and in the geometry; a disk
 // whose row cannot bind inside the diamond (gamma (h_j - m) - n_j^T v_j >= the diamond's
 // largest |G u|) is left out, which changes nothing, so there is no detection threshold.
@@ -46,6 +51,7 @@ struct SafetyFilterInput {
   double gamma = 2.0;           // [1/s] barrier rate
   double min_margin = 1e-3;     // m [m]: the barrier keeps h_j >= m
   bool obstacle_velocities = false;  // use Disk::velocity in the rows
+  bool body_rows = false;       // also hold the body disk (centre, robot_radius) clear
   Twist2 nominal;
 };
 
@@ -56,6 +62,10 @@ struct SafetyFilterResult {
   int rows = 0;            // barrier rows that entered the QP
   int active = 0;          // barrier rows active at the solution
 };
+
+// The least clearance of the disks the filter holds (the disk of robot_radius around p_r and,
+// with body_rows, the body disk), +inf without obstacles.
+double safetyClearance(const SafetyFilterInput& in, const std::vector<Disk>& obstacles);
 
 // The slack's weight: large, so a slack appears only where nothing else is feasible.
 constexpr double kSafetySlackWeight = 1e6;
