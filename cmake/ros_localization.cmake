@@ -16,7 +16,7 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(test_stamp_gate ${catkin_LIBRARIES})
   # The nodelet (pluginlib lookup through package.xml) against a synthetic room: the test
   # publishes the scans and odom -> base_footprint itself.
-  foreach(behaviour tracking mapping bad_param)
+  foreach(behaviour tracking mapping bad_param bad_scans)
     amigobot_add_rostest_gtest(test_localization_${behaviour} test/rostest/localization_${behaviour}.test
                                test/rostest/test_localization_${behaviour}.cpp)
     target_link_libraries(test_localization_${behaviour} amigobot_tracking_localization amigobot_tracking_world)

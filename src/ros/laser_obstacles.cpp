@@ -80,14 +80,8 @@ double LaserObstacles::update(const ros::Time& now) {
 
 void LaserObstacles::refuse(const std::string& why, const std::string& frame) {
   // A refused scan does not refresh the scan's age, so with require_scan the robot stops
-  // after scan_timeout. Logged at once when the reason changes (a second kind of bad scan
-  // must not hide behind the first's throttle), else every 5 s.
-  const ros::WallTime now = ros::WallTime::now();
-  if (why != refusal_ || (now - refusal_logged_).toSec() >= 5.0) {
-    ROS_ERROR("tracking: scan refused (frame '%s'): %s", frame.c_str(), why.c_str());
-    refusal_logged_ = now;
-  }
-  refusal_ = why;
+  // after scan_timeout.
+  if (refusal_.due(why)) ROS_ERROR("tracking: scan refused (frame '%s'): %s", frame.c_str(), why.c_str());
 }
 
 void LaserObstacles::obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const {

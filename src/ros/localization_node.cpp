@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "amigobot_tracking/LocalizationStatus.h"
+#include "amigobot_tracking/core/scan_obstacles.h"
 
 #include "amigobot_tracking/localization/poses.h"
 #include "amigobot_tracking/ros/localization_messages.h"
@@ -70,6 +71,18 @@ bool LocalizationNode::lookup(const std::string& parent, const std::string& chil
 }
 
 void LocalizationNode::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+  // A scan whose geometry or beams cannot be used (core/scan_obstacles.h) is not matched:
+  // the pose keeps its last correction and ages, as with no scan.
+  const core::ScanGeometry geometry{msg->angle_min, msg->angle_increment, msg->range_min, msg->range_max};
+  const std::string refused = core::scanBeamsProblem(geometry, msg->angle_max, msg->ranges.data(), msg->ranges.size());
+  if (!refused.empty()) {
+    if (scan_refusal_.due(refused)) {
+      ROS_ERROR_STREAM_NAMED("localization", "localization: scan refused (frame '" << msg->header.frame_id
+                                                                                   << "'): " << refused);
+    }
+    return;
+  }
+  scan_refusal_.clear();
   Work work;
   core::Pose2 mount;
   if (!lookup(config_.odom_frame, config_.base_frame, msg->header.stamp, &work.odom_base) ||

@@ -25,6 +25,7 @@
 
 #include "circle_target.h"
 #include "judge.h"
+#include "one_turn_scan.h"
 #include "rosout_log.h"
 
 using e2e::CircleTarget;
@@ -39,20 +40,8 @@ constexpr double kScanTimeout = 0.5, kControlPeriod = 0.05, kDriverSlot = 0.05 +
 constexpr double kBadFor = 1.5;  // [s] each bad scan is sent this long: three scan timeouts
 constexpr float kInf = std::numeric_limits<float>::infinity(), kNaN = std::numeric_limits<float>::quiet_NaN();
 
-// The good scan of an empty room, as sim_laser sends it: 360 beams over one turn, nothing
-// within range_max (+inf, REP 117).
-sensor_msgs::LaserScan goodScan() {
-  sensor_msgs::LaserScan s;
-  s.header.frame_id = "laser";
-  s.angle_min = static_cast<float>(-M_PI);
-  s.angle_max = static_cast<float>(M_PI);
-  s.angle_increment = static_cast<float>(2.0 * M_PI / 359.0);
-  s.range_min = 0.05f;
-  s.range_max = 8.0f;
-  s.scan_time = 0.1f;
-  s.ranges.assign(360, kInf);
-  return s;
-}
+// The good scan of an empty room: nothing within range_max.
+sensor_msgs::LaserScan goodScan() { return amigobot_test::oneTurnScan(kInf); }
 
 sensor_msgs::LaserScan spoiled(const std::function<void(sensor_msgs::LaserScan&)>& spoil) {
   sensor_msgs::LaserScan s = goodScan();

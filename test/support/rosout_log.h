@@ -1,17 +1,20 @@
 // Lines on /rosout at or above a level, for the e2e tests that assert a node said why it
 // refused something (the nodelets log through their manager; rostest starts no rosout
-// aggregator, so the test listens to every node's /rosout publisher itself).
+// aggregator, so the test listens to every node's /rosout publisher itself). Header-only on
+// roscpp: the rostests of test/rostest use it too.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <ros/ros.h>
 #include <rosgraph_msgs/Log.h>
 
-#include "judge.h"  // e2e::waitFor
 
 namespace e2e {
 
@@ -23,7 +26,7 @@ class RosoutLog {
   // n publishers (this node, the manager, ...) are connected, so no line of theirs can be
   // missed any more.
   bool connected(std::uint32_t publishers, double timeout) {
-    return waitFor([&] { return sub_.getNumPublishers() >= publishers; }, timeout);
+    return poll([&] { return sub_.getNumPublishers() >= publishers; }, timeout);
   }
   // Lines so far: pass it as `since` to look only at what comes after.
   std::size_t count() {
@@ -34,7 +37,7 @@ class RosoutLog {
   // *found = that line.
   bool waitForMentionOfAll(const std::vector<std::string>& texts, double timeout, std::size_t since = 0,
                            std::string* found = nullptr) {
-    return waitFor([&] {
+    return poll([&] {
       std::lock_guard<std::mutex> lock(mutex_);
       for (std::size_t i = since; i < lines_.size(); ++i) {
         bool all = true;
@@ -51,6 +54,14 @@ class RosoutLog {
   }
 
  private:
+  static bool poll(const std::function<bool()>& predicate, double timeout) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
+    while (std::chrono::steady_clock::now() < end) {
+      if (predicate()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return predicate();
+  }
   void onLog(const rosgraph_msgs::Log::ConstPtr& log) {
     if (log->level < min_level_) return;
     std::lock_guard<std::mutex> lock(mutex_);

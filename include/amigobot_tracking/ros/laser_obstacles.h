@@ -18,6 +18,7 @@
 #include "amigobot_tracking/core/input_age.h"
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/ros/refusal_log.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -44,7 +45,7 @@ class LaserObstacles {
   const std::string& scanProblem() const { return scan_problem_; }  // why its stamp is untrusted, or ""
   // Why the last scan looked at was refused, naming the field (core::scanBeamsProblem), or
   // "" when it was used.
-  const std::string& refusal() const { return refusal_; }
+  const std::string& refusal() const { return refusal_.last(); }
   // *out = the laser obstacles at `now`: the last scan's disks, or with `moving` the
   // tracked disks with their velocities.
   void obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const;
@@ -67,8 +68,7 @@ class LaserObstacles {
   std::vector<core::Disk> disks_, disks_next_;  // disks_next_: scratch for the next scan
   core::InputAgeTracker age_;
   std::string scan_problem_;
-  std::string refusal_;
-  ros::WallTime refusal_logged_;
+  RefusalLog refusal_;
 
   void refuse(const std::string& why, const std::string& frame);
 

@@ -30,6 +30,7 @@
 
 #include "amigobot_tracking/localization/engine.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
+#include "amigobot_tracking/ros/refusal_log.h"
 #include "amigobot_tracking/ros/stamp_gate.h"
 
 namespace amigobot_tracking {
@@ -101,6 +102,7 @@ class LocalizationNode {
   std::mutex mutex_;  // guards output_, pending_, rate_
   std::condition_variable wake_;
   std::optional<Work> pending_;
+  RefusalLog scan_refusal_;  // onScan's only (the MessageFilter calls it on one thread)
   Output output_;
   std::unique_ptr<RateMonitor> rate_;
 
