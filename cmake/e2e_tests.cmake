@@ -13,11 +13,11 @@ endif()
 add_executable(test_e2e EXCLUDE_FROM_ALL test/e2e/test_e2e.cpp test/e2e/test_bad_parameters.cpp
   test/e2e/test_target_loss.cpp test/e2e/test_link_loss.cpp test/e2e/test_avoidance.cpp test/e2e/test_two_robots.cpp
   test/e2e/test_fault_injection.cpp test/e2e/test_wrong_initial_pose.cpp test/e2e/test_laser_faults.cpp
-  test/e2e/test_cpu_starvation.cpp
+  test/e2e/test_cpu_starvation.cpp test/e2e/test_kidnap.cpp
   test/e2e/test_bad_scans.cpp test/e2e/test_bad_virtual_obstacles.cpp)
 target_link_libraries(test_e2e amigobot_tracking_ros_sim ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 target_include_directories(test_e2e SYSTEM PRIVATE ${GTEST_INCLUDE_DIRS})
-target_include_directories(test_e2e PRIVATE test/support)
+target_include_directories(test_e2e PRIVATE test/support test/e2e/include)
 target_compile_definitions(test_e2e PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
 target_compile_options(test_e2e PRIVATE ${AMIGOBOT_WARNINGS})
 add_dependencies(test_e2e ${PROJECT_NAME}_generate_messages_cpp)
@@ -48,6 +48,7 @@ amigobot_add_e2e_test(test/e2e/fault_wrong_initial_pose.test tcp_port status_por
 amigobot_add_e2e_test(test/e2e/fault_laser_stall.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/fault_laser_kill.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/fault_cpu_starvation.test tcp_port status_port)
+amigobot_add_e2e_test(test/e2e/fault_kidnap.test tcp_port status_port laser_port control_port)
 amigobot_add_e2e_test(test/e2e/bad_parameters.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/bad_parameter_types.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/bad_scans.test tcp_port status_port)

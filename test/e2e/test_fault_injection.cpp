@@ -11,6 +11,7 @@
 
 #include "circle_target.h"
 #include "experiment.h"
+#include "fault_run.h"
 #include "judge.h"
 
 using e2e::CircleTarget;
@@ -31,9 +32,7 @@ constexpr double kPoseTimeout = 0.5, kDriverSlot = 0.05 + 0.02;
 TEST(E2E, ATargetStampedAheadThenSilentStops) {
   e2e::GroundTruth truth(requiredParam<int>("status_port"));
   CircleTarget target;
-  ASSERT_TRUE(truth.waitForRobotReady(60.0));
-  ASSERT_TRUE(e2e::waitFor([&] { return truth.truth().v > 0.1; }, 60.0)) << "the robot never drove";
-  ros::Duration(3.0).sleep();
+  ASSERT_TRUE(e2e::trackingStarted(truth));
 
   const EmulatorStatus before = truth.truth();
   target.lastSampleAhead(30.0);
@@ -59,9 +58,7 @@ TEST(E2E, ASecondCmdVelPublisherIsNotFollowed) {
   ros::NodeHandle nh;
   e2e::GroundTruth truth(requiredParam<int>("status_port"));
   CircleTarget target;
-  ASSERT_TRUE(truth.waitForRobotReady(60.0));
-  ASSERT_TRUE(e2e::waitFor([&] { return truth.truth().v > 0.1; }, 60.0)) << "the robot never drove";
-  ros::Duration(3.0).sleep();
+  ASSERT_TRUE(e2e::trackingStarted(truth));
 
   ros::Publisher intruder = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
   geometry_msgs::Twist spin;
