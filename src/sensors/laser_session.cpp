@@ -52,18 +52,18 @@ class ScipSession : public LaserSession {
     // "version(date)" (urg_sensor_firmware_version cuts at '('); II 7 entries
     // (II_RESPONSE_LINES 9) with STAT, and MESM with a space (urg_sensor_state cuts at ' ').
     if (command == "VV") {
-      return scip::infoReply(line, {"VEND:Hokuyo Automatic Co.,Ltd.", "PROD:SOKUIKI Sensor URG-04LX (emulated)",
+      return scip::infoReply(line, {"VEND:Hokuyo Automatic Co.,Ltd.", "PROD:SOKUIKI Sensor " + model_.scip.product + " (emulated)",
                                     "FIRM:3.4.03(17/Dec./2012)", "PROT:SCIP 2.0", "SERI:" + serial_});
     }
     if (command == "PP") {
       const ScipGeometry& g = model_.scip;
-      return scip::infoReply(line, {"MODL:URG-04LX(Hokuyo Automatic Co.,Ltd.)", "DMIN:" + std::to_string(g.dmin_mm),
+      return scip::infoReply(line, {"MODL:" + model_.scip.product + "(Hokuyo Automatic Co.,Ltd.)", "DMIN:" + std::to_string(g.dmin_mm),
                                     "DMAX:" + std::to_string(g.dmax_mm), "ARES:" + std::to_string(g.ares),
                                     "AMIN:" + std::to_string(g.amin), "AMAX:" + std::to_string(g.amax),
                                     "AFRT:" + std::to_string(g.afrt), "SCAN:" + std::to_string(g.scan_rpm)});
     }
     if (command == "II") {
-      return scip::infoReply(line, {"MODL:URG-04LX(Hokuyo Automatic Co.,Ltd.)", "LASR:" + std::string(laser_on_ ? "ON" : "OFF"),
+      return scip::infoReply(line, {"MODL:" + model_.scip.product + "(Hokuyo Automatic Co.,Ltd.)", "LASR:" + std::string(laser_on_ ? "ON" : "OFF"),
                                     "SCSP:Initial(" + std::to_string(model_.scip.scan_rpm) + "[rpm])",
                                     std::string("MESM:") + (laser_on_ ? "Measuring by Normal Mode" : "Idling (laser off)"),
                                     "SBPS:Ethernet (emulated)",

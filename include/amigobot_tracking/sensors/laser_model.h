@@ -19,6 +19,7 @@ struct ScipGeometry {
   int amin = 44, amax = 725, afrt = 384;  // first, last and front step
   int dmin_mm = 20, dmax_mm = 4000;
   int scan_rpm = 600;
+  std::string product = "URG-04LX";  // the name in MODL (PP, II) and PROD (VV): each SCIP model's own
 };
 
 struct ColaGeometry {
