@@ -21,6 +21,12 @@ constexpr double kResolvedGapCells = 2.0;
 // A bridge's zone reaches this many cells beyond the corridor's middle: zones are soft (20x),
 // so a bridge one cell thick was crossed rather than a 3 m detour taken round a U.
 constexpr double kBridgeCells = 3.0;
+// Deep inside a bridge: harder than a disk's zone (20), since a bridge stands for a gap the body
+// cannot take; at 20 the field still sent p_r into such gaps of a U's back wall and the robot
+// stood wedged there up to 30 s (5 of 50 runs; 28: 1.1 s). A disk's own zone stays soft (a
+// target inside it pulls to the best standoff; 50 for every zone made p_r reverse round
+// disks 5-14 times in test_recommended_law's scenes, 35 here 5 times in its U).
+constexpr double kBridgeSlowness = 28.0;
 
 // The grid: nodes at (i0 + i, j0 + j) * cell, i in [0, nx), j in [0, ny).
 struct Grid {
@@ -64,14 +70,17 @@ double segmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, cons
   return least;
 }
 
-double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacles, const NavigationFieldConfig& config) {
+double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacles, const NavigationFieldConfig& config,
+                     std::size_t bridges_from) {
   double f = 1.0;
-  for (const Disk& o : obstacles) {
+  for (std::size_t j = 0; j < obstacles.size(); ++j) {
+    const Disk& o = obstacles[j];
+    const double deep = j < bridges_from ? kZoneSlowness : kBridgeSlowness;
     const double h = (x - o.center).norm() - config.robot_radius - o.radius;
     if (h >= config.margin) continue;
     const double outside = 1.0 - std::max(h, 0.0) / config.margin;  // 0 at the ramp's edge, 1 at the boundary
     double value = 1.0 + (kBandSlowness - 1.0) * outside * outside;
-    if (h < 0.0) value += (kZoneSlowness - kBandSlowness) * std::min(1.0, -2.0 * h / config.margin);
+    if (h < 0.0) value += (deep - kBandSlowness) * std::min(1.0, -2.0 * h / config.margin);
     f = std::max(f, value);
   }
   return f;
@@ -126,13 +135,13 @@ NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen:
   g.slowness.resize(nodes);
   g.accepted.assign(nodes, 0);
   for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) g.slowness[g.index(i, j)] = fieldSlowness(g.position(i, j), obstacles, config);
+    for (int i = 0; i < g.nx; ++i) g.slowness[g.index(i, j)] = fieldSlowness(g.position(i, j), obstacles, config, sensed.size());
 
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> trial;
   // Seeds: the nodes around the target (clamped into the grid) at their exact straight
   // distance times the target's slowness, so phi moves continuously with the target.
-  const double target_slowness = fieldSlowness(p_d, obstacles, config);
+  const double target_slowness = fieldSlowness(p_d, obstacles, config, sensed.size());
   const int ti = static_cast<int>(std::floor(p_d.x() / c) - g.i0), tj = static_cast<int>(std::floor(p_d.y() / c) - g.j0);
   for (int j = tj - 1; j <= tj + 2; ++j)
     for (int i = ti - 1; i <= ti + 2; ++i) {

@@ -46,7 +46,9 @@ double segmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, cons
                         double robot_radius);
 
 // The slowness f(x) of the field (1 in free space).
-double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
+// Disks from index bridges_from on are narrowGapsClosed's bridges (harder inside).
+double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacles, const NavigationFieldConfig& config,
+                     std::size_t bridges_from = static_cast<std::size_t>(-1));
 
 // The disks as the field sees them: the sensed ones plus, between two whose zones leave a
 // corridor w < 2a (a = 2 cells) the grid cannot resolve, a bridge disk at the corridor's middle
