@@ -117,13 +117,20 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
   if (in.body_rows) {
     for (const Disk& o : obstacles) {
       const Eigen::Vector2d away = in.pose.position() - o.center;
-      const double distance = away.norm();
-      const Eigen::Vector2d n = distance < 1e-9 ? Eigen::Vector2d(-heading) : Eigen::Vector2d(away / distance);
-      const double h = distance - (in.robot_radius + o.radius);
+      const double distance = std::max(away.norm(), 1e-9);
+      const Eigen::Vector2d n = away.norm() < 1e-9 ? Eigen::Vector2d(-heading) : Eigen::Vector2d(away / distance);
+      const double facing = n.dot(heading);  // 1: heading away from the disk, -1: at it
+      // h = |c - c_j| - (R + r_j) - L (1 - n^T heading): the body's clearance less a look-ahead
+      // L that grows as the robot faces the disk, so h >= m keeps the true clearance >= m and
+      // dh/dt has omega in it: at contact the filter turns the robot along the disk instead
+      // of holding v = 0 while omega flips (v-only rows pinned a body on a ring's disk 24 s).
+      const double h = distance - (in.robot_radius + o.radius) - kBodyLookahead * (1.0 - facing);
       const double bound = in.gamma * (h - in.min_margin) - (in.obstacle_velocities ? n.dot(o.velocity) : 0.0);
-      if (bound >= diamond.vMax()) continue;  // the centre moves at most v_bar
-      // -n^T heading v - s <= gamma (h - m) - n^T v_j: the centre's velocity is v heading.
-      qp.a.emplace_back(-n.dot(heading), 0.0, -1.0);
+      // dh/dt = v (n^T heading + L (1 - (n^T heading)^2) / |c - c_j|) + L omega n^T side.
+      const double a_v = facing + kBodyLookahead * (1.0 - facing * facing) / distance;
+      const double a_w = kBodyLookahead * n.dot(side);
+      if (bound >= std::max(std::abs(a_v) * diamond.vMax(), std::abs(a_w) * diamond.wMax())) continue;  // cannot bind
+      qp.a.emplace_back(-a_v, -a_w, -1.0);
       qp.b.push_back(bound);
       ++result.rows;
     }

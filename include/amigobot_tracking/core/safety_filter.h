@@ -12,7 +12,9 @@
 //               n_c^T (v heading - v_j) >= -gamma (h_c - m) - s,  h_c = |c - c_j| - (R_eff + r_j)
 // which holds the body exactly instead of through the disk of radius R + r around p_r that
 // encloses it at every heading (the body may pass a disk sideways, where that disk keeps r
-// too much). Only v enters it: turning on the spot never moves the body disk. The objective is strictly
+// too much). Its clearance is taken less a look-ahead L (1 - n_c^T heading) (L =
+// kBodyLookahead: 0 heading away, 2L facing the disk), so omega enters the row and, at
+// contact, the robot is turned along the disk rather than pinned; the true clearance stays >= m. The objective is strictly
 // convex, so the minimiser is unique and continuous in the state and in the geometry; a disk
 // whose row cannot bind inside the diamond (gamma (h_j - m) - n_j^T v_j >= the diamond's
 // largest |G u|) is left out, which changes nothing, so there is no detection threshold.
@@ -66,6 +68,9 @@ struct SafetyFilterResult {
 // The least clearance of the disks the filter holds (the disk of robot_radius around p_r and,
 // with body_rows, the body disk), +inf without obstacles.
 double safetyClearance(const SafetyFilterInput& in, const std::vector<Disk>& obstacles);
+
+// [m] the body row's look-ahead L (above).
+constexpr double kBodyLookahead = 0.05;
 
 // The slack's weight: large, so a slack appears only where nothing else is feasible.
 constexpr double kSafetySlackWeight = 1e6;
