@@ -144,6 +144,7 @@ void EmulatorServer::readLink(Link& link, bool is_tcp) {
 void EmulatorServer::serveStatus(std::size_t index, bool& quit) {
   char buffer[256];
   const ssize_t n = ::read(status_clients_[index], buffer, sizeof(buffer));
+  if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return;  // non-blocking: nothing yet
   if (n <= 0) {
     ::close(status_clients_[index]);
     status_clients_[index] = -1;
@@ -183,6 +184,9 @@ void EmulatorServer::run(const std::atomic<bool>& stop) {
     if (ready(i_tcp) && tcp_client_.fd == fds[static_cast<std::size_t>(i_tcp)].fd) readLink(tcp_client_, true);
     // POLLHUP on the master only means no client holds the slave: not an error.
     if (i_pty >= 0 && (fds[static_cast<std::size_t>(i_pty)].revents & POLLIN)) readLink(pty_, false);
+    // The clients polled above only: a client accepted below has no slot in fds yet (reading
+    // fds past its end gave it a garbage revents, and its first read, EAGAIN, closed it).
+    const std::size_t n_status = status_clients_.size();
     if (ready(i_status_listen)) {
       const int fd = status_listen_.accept();
       if (fd >= 0) {
@@ -190,7 +194,6 @@ void EmulatorServer::run(const std::atomic<bool>& stop) {
         status_buffers_.emplace_back();
       }
     }
-    const std::size_t n_status = status_clients_.size();
     for (std::size_t k = 0; k < n_status; ++k) {
       if (ready(i_status0 + static_cast<int>(k))) serveStatus(k, quit);
     }
