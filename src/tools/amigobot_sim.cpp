@@ -253,10 +253,10 @@ int main(int argc, char** argv) {
 
   try {
     std::filesystem::create_directories(out);
+    mc.seed = seed;  // the variants' draw, for --monte-carlo and --mc-replay alike
+    mc.obstacle_speed = obstacle_speed;
     if (monte_carlo > 0) {
       mc.runs = monte_carlo;
-      mc.seed = seed;
-      mc.obstacle_speed = obstacle_speed;
       mc.jobs = jobs;
       mc.progress = true;  // on stderr: progress and the time left
       const std::string json = sim::runMonteCarlo(scenario, mc);
@@ -266,8 +266,6 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (replay >= 0) {  // one variant, drawn as runMonteCarlo draws it
-      mc.seed = seed;
-      mc.obstacle_speed = obstacle_speed;
       scenario = sim::randomVariant(scenario, mc, static_cast<std::uint64_t>(replay));
     }
     const sim::RunResult result = sim::runScenario(scenario, true);
