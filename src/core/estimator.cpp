@@ -17,7 +17,8 @@ const FieldTable<EstimatorConfig>& estimatorFields() {
       field("jump_threshold", &E::jump_threshold, "m", "a sample this far from the prediction is a jump; 0 = off",
             nonNegative()),
       field("max_acceleration", &E::max_acceleration, "m/s^2",
-            "jump rule: the target's rate may change by this times the sample interval per sample", nonNegative()),
+            "the target's rate changes by at most this: the jump rule's tolerance, and the recommended law's "
+            "feed-forward follows v_hat no faster (0: no bound there)", nonNegative()),
   };
   return table;
 }

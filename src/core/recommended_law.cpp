@@ -22,8 +22,20 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   const double error_norm = in.e.norm();
   const double xi = error_norm / in.rho;
   const Eigen::Vector2d e_hat = error_norm > 1e-12 ? Eigen::Vector2d(in.e / error_norm) : Eigen::Vector2d::Zero();
-  const double pull = config.k_d * transformT(xi) + config.lambda * (in.rho - config.rho_inf) * xi;
+  // The prescribed decay's term with the floor rho decays to, as in recommendedRhoStep: the two
+  // cancel in the argument of docs/controller.md.
+  const double rho_floor = std::max(config.rho_inf, in.rho_floor);
+  const double pull = config.k_d * transformT(xi) + config.lambda * std::max(0.0, in.rho - rho_floor) * xi;
   out.u_track = pull * e_hat + in.v_hat;
+  // While rho is wide the pull of (9) is weak: about (k_d / rho + lambda (1 - rho_inf / rho)) |e|,
+  // 0.6 |e| at rho = 1 m with Section 5.3's gains, so an off-course start crawls in for seconds.
+  // The law drives with at least the gain (9) has at its own steady state, k_d / rho_inf
+  // (T(xi) >= xi at rho = rho_inf): 1.5 1/s there. It only adds along e_hat, so the shortfall and
+  // (13') still count u_track (the argument of docs/controller.md holds as it is); it is
+  // continuous (a max of two continuous terms) and no new gain. The floor stops at 2 v_bar: far
+  // off, the pull of (9) is larger anyway, and an uncapped floor magnified the field's turns
+  // near a pillar's zone into 0.12 m/s command changes per 2 mm (2.4x the law without it).
+  const double drive = std::max(pull, std::min(config.k_d / config.rho_inf * error_norm, 2.0 * config.v_max));
 
   // A moving disk is held off by more: up to the full R + r of (10) for a disk as fast as the
   // robot (|v_j| >= v_bar), which the body, steering only along its heading, cannot outrun
@@ -38,7 +50,7 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   out.direction = nav.direction;
   out.blend = nav.blend;
   const double feed_forward = std::clamp(nav.direction.dot(e_hat), 0.0, 1.0);
-  out.u_nom = pull * nav.direction + (error_norm > 1e-12 ? feed_forward : 1.0) * in.v_hat;
+  out.u_nom = drive * nav.direction + (error_norm > 1e-12 ? feed_forward : 1.0) * in.v_hat;
 
   const Eigen::Vector2d heading(std::cos(in.pose.theta), std::sin(in.pose.theta));
   out.u_nominal = offsetVelocityToTwist(out.u_nom, heading, config.offset);
@@ -66,8 +78,10 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   return out;
 }
 
-double recommendedRhoStep(const ControllerConfig& config, double rho, double relaxation, double h) {
-  const double decayed = config.rho_inf + (rho - config.rho_inf) * std::exp(-config.lambda * h);
+double recommendedRhoStep(const ControllerConfig& config, double rho, double relaxation, double h, double rho_floor) {
+  // A floor that rose above rho (noise measured): rho rises to it at the prescribed rate.
+  const double floor = std::max(config.rho_inf, rho_floor);
+  const double decayed = floor + (rho - floor) * std::exp(-config.lambda * h);
   return decayed + std::min(h, config.max_relaxation_interval) * relaxation;
 }
 

@@ -59,6 +59,7 @@ struct ControllerOutput {
   Twist2 u_d;                     // desired command (11)
   double t = 0.0;
   double rho = 0.0;
+  double rho_floor = 0.0;         // recommended law: rho's floor, rho_inf plus the measured noise's reach [m]
   Eigen::Vector2d e = Eigen::Vector2d::Zero();       // p_d - p_r
   Eigen::Vector2d p_r = Eigen::Vector2d::Zero();     // offset point
   Eigen::Vector2d p_d = Eigen::Vector2d::Zero();     // target position used
@@ -130,7 +131,7 @@ class PerformanceController {
   Pose2 compensatedPose(double t, const PoseSample& robot) const;
   void remember(double t, const Twist2& u);
   // config.law == "recommended": u from recommended_law.h into `out` (p_r, e, v_hat, rho set).
-  bool commandRecommended(const Pose2& pose, const std::vector<Disk>& obstacles, ControllerOutput& out);
+  bool commandRecommended(const Pose2& pose, const std::vector<Disk>& obstacles, double h, ControllerOutput& out);
 
   ControllerConfig config_;
   DiamondSet diamond_;
@@ -142,6 +143,16 @@ class PerformanceController {
   double start_ratio_ = 0.0;  // > 0: the next start uses restart()'s rule
   double conflict_ = 0.0;  // second argument of the min in (13), from the last step
   double shortfall_ = 0.0; // relaxation term of (13') (recommended law), from the last step
+  // The recommended law's feed-forward: v_hat followed at most estimator.max_acceleration per
+  // second (recommended_law.h); NaN until the first step.
+  Eigen::Vector2d feed_forward_ = Eigen::Vector2d::Constant(NAN);
+  // The recommended law's noise estimate: the last target sample and the running mean of the
+  // squared innovation of the samples against the feed-forward's prediction.
+  double noise_variance_ = 0.0;
+  double last_sample_stamp_ = NAN;
+  Eigen::Vector2d last_sample_ = Eigen::Vector2d::Zero();
+  void observeNoise(const TargetSample& target, bool jumped);
+  double rhoFloor() const;
   int passing_side_ = 0;   // latched side of the tangential term (0 = released)
   // Applied commands, each held from its time to the next one's (zero before the first),
   // over the last max_prediction seconds: pose-age compensation replays them.

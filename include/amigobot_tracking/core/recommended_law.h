@@ -3,12 +3,15 @@
 // (safety_filter.h) instead of the repulsion (10) and the saturation (12), with rho following
 // (13'), whose relaxation counts the shortfall of the applied motion (docs/controller.md):
 //
-//   u_track = k_d T(xi) e_hat + v_hat + lambda (rho - rho_inf) e / rho      (the tracking part of (9))
-//   u_nom   = (k_d T(xi) + lambda (rho - rho_inf) xi) d + clamp(d^T e_hat, 0, 1) v_hat
-//             (d: the field's direction; d = e_hat with a clear line of sight, then u_nom = u_track)
+//   u_track = k_d T(xi) e_hat + v_f + lambda (rho - rho_f) e / rho        (the tracking part of (9))
+//   u_nom   = max(k_d T(xi) + lambda (rho - rho_f) xi, min((k_d / rho_inf) |e|, 2 v_bar)) d + clamp(d^T e_hat, 0, 1) v_f
+//             (d: the field's direction; d = e_hat with a clear line of sight; the max keeps
+//             at least the gain (9) has at steady state while rho is still wide)
 //   u       = safetyFilter(G^-1 u_nom)
 //   Delta   = max(0, e_hat^T (u_track - G u))                               (the shortfall)
-//   rho'    = -lambda (rho - rho_inf) + (1 + k_r) xi^2 Delta               (13')
+//   rho'    = -lambda (rho - rho_f) + (1 + k_r) xi^2 Delta                 (13')
+//   v_f: v_hat slew-limited to a_max (RecommendedInput::v_hat); rho_f: rho_inf plus the measured
+//   noise's reach (RecommendedInput::rho_floor); both kept by PerformanceController.
 #pragma once
 
 #include <vector>
@@ -26,8 +29,9 @@ struct RecommendedInput {
   Pose2 pose;
   Eigen::Vector2d p_r = Eigen::Vector2d::Zero();
   Eigen::Vector2d e = Eigen::Vector2d::Zero();   // p_d - p_r
-  Eigen::Vector2d v_hat = Eigen::Vector2d::Zero();
+  Eigen::Vector2d v_hat = Eigen::Vector2d::Zero();  // the feed-forward v_f
   double rho = 1.0;
+  double rho_floor = 0.0;  // where rho decays to: rho_inf, or more under measurement noise (controller.h)
 };
 
 struct RecommendedCommand {
@@ -51,7 +55,8 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
 
 // One step of (13') of length h: the prescribed decay integrated exactly, plus the relaxation
 // term (RecommendedCommand::relaxation, from the last step) held over min(h, max_relaxation_interval).
-double recommendedRhoStep(const ControllerConfig& config, double rho, double relaxation, double h);
+// rho_floor: where rho decays to (>= rho_inf; RecommendedInput::rho_floor).
+double recommendedRhoStep(const ControllerConfig& config, double rho, double relaxation, double h, double rho_floor);
 
 }  // namespace core
 }  // namespace amigobot_tracking
