@@ -98,6 +98,7 @@ void PerformanceController::reset() {
   conflict_ = 0.0;
   shortfall_ = 0.0;
   feed_forward_ = Eigen::Vector2d::Constant(NAN);
+  smoothed_velocity_ = Eigen::Vector2d::Constant(NAN);
   noise_variance_ = 0.0;
   last_sample_stamp_ = NAN;
   passing_side_ = 0;
@@ -315,6 +316,14 @@ bool PerformanceController::commandRecommended(const Pose2& pose, const std::vec
   in.p_r = out.p_r;
   in.e = out.e;
   in.v_hat = feed_forward_;
+  // The field's look-ahead multiplies a velocity by seconds: v_f's walk under noise (a_max h a
+  // step) would move the goal by decimetres round a parked target. Averaged over the
+  // look-ahead itself, the goal's offset is about the target's displacement over that time,
+  // whose noise is the sample noise (a few cm), not tau times a velocity's.
+  const double tau = config_.field_lookahead;
+  if (!smoothed_velocity_.allFinite() || tau <= 0.0) smoothed_velocity_ = feed_forward_;
+  else smoothed_velocity_ += (feed_forward_ - smoothed_velocity_) * std::min(1.0, h / tau);
+  in.v_smooth = smoothed_velocity_;
   in.rho_floor = out.rho_floor = rhoFloor();
   in.rho = rho_;
   const RecommendedCommand command = recommendedCommand(config_, diamond_, in, obstacles);

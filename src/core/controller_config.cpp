@@ -41,6 +41,9 @@ FieldTable<ControllerConfig> makeTable() {
             "recommended law: the body and p_r's R-disk are held this much wider (sensing error)", boundedRadiusOrOff()),
       field("field_margin", &C::field_margin, "m", "recommended law: width of the field's bend around a disk's zone",
             positive()),
+      field("field_lookahead", &C::field_lookahead, "s",
+            "recommended law: a target in or near a zone, the field aims this far ahead along its smoothed velocity",
+            durationOrZero()),
       // Beyond the paper: each default is the paper's law.
       field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
       field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),

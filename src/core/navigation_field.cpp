@@ -109,6 +109,12 @@ std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const Nav
 
 NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
                                         const std::vector<Disk>& sensed, const NavigationFieldConfig& config) {
+  return navigationDirection(p_r, p_d, p_d, sensed, config);
+}
+
+NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
+                                        const Eigen::Vector2d& goal, const std::vector<Disk>& sensed,
+                                        const NavigationFieldConfig& config) {
   const std::vector<Disk> obstacles = narrowGapsClosed(sensed, config);
   NavigationDirection out;
   const Eigen::Vector2d e = p_d - p_r;
@@ -122,8 +128,8 @@ NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen:
   const double c = config.cell;
   const double half = 0.5 * config.max_extent;
   const Eigen::Vector2d pad = Eigen::Vector2d::Constant(config.padding), reach = Eigen::Vector2d::Constant(half);
-  const Eigen::Vector2d lo = (p_r.cwiseMin(p_d) - pad).cwiseMax(p_r - reach);
-  const Eigen::Vector2d hi = (p_r.cwiseMax(p_d) + pad).cwiseMin(p_r + reach);
+  const Eigen::Vector2d lo = (p_r.cwiseMin(p_d).cwiseMin(goal) - pad).cwiseMax(p_r - reach);
+  const Eigen::Vector2d hi = (p_r.cwiseMax(p_d).cwiseMax(goal) + pad).cwiseMin(p_r + reach);
   Grid g;
   g.cell = c;
   g.i0 = static_cast<long>(std::floor(lo.x() / c));
@@ -139,14 +145,14 @@ NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen:
 
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> trial;
-  // Seeds: the nodes around the target (clamped into the grid) at their exact straight
-  // distance times the target's slowness, so phi moves continuously with the target.
-  const double target_slowness = fieldSlowness(p_d, obstacles, config, sensed.size());
-  const int ti = static_cast<int>(std::floor(p_d.x() / c) - g.i0), tj = static_cast<int>(std::floor(p_d.y() / c) - g.j0);
+  // Seeds: the nodes around the goal (clamped into the grid) at their exact straight
+  // distance times the goal's slowness, so phi moves continuously with the goal.
+  const double target_slowness = fieldSlowness(goal, obstacles, config, sensed.size());
+  const int ti = static_cast<int>(std::floor(goal.x() / c) - g.i0), tj = static_cast<int>(std::floor(goal.y() / c) - g.j0);
   for (int j = tj - 1; j <= tj + 2; ++j)
     for (int i = ti - 1; i <= ti + 2; ++i) {
       if (!g.inside(i, j)) continue;
-      const double value = target_slowness * (g.position(i, j) - p_d).norm();
+      const double value = target_slowness * (g.position(i, j) - goal).norm();
       g.phi[g.index(i, j)] = value;
       trial.emplace(value, g.index(i, j));
     }

@@ -46,7 +46,21 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   NavigationFieldConfig field;
   field.robot_radius = radius;
   field.margin = config.field_margin;
-  const NavigationDirection nav = navigationDirection(in.p_r, in.p_r + in.e, held, field);
+  // A target in or near a zone (the threshold, saddle and doorway classes: it drives over a
+  // disk) pulls the field to the zone's near side, where the robot waited until the target came
+  // out (4 s in front of a 0.2 m disk). The field aims instead up to tau |v_smooth| ahead of it,
+  // weighted by how deep the target is in the ramp (beta_d = clamp(1 - q_d / margin, 0, 1), q_d
+  // its clearance from the zones: 0 in free space, so a reachable target is tracked as before)
+  // and at most |e| ahead (a robot that has caught up aims at the target: no overshoot past a
+  // target that parks behind a pillar). Continuous in the state and the geometry. The
+  // line-of-sight blend and (13') still use p_d itself.
+  const Eigen::Vector2d p_d = in.p_r + in.e;
+  Eigen::Vector2d ahead = config.field_lookahead * in.v_smooth;
+  if (!ahead.allFinite()) ahead.setZero();
+  if (ahead.norm() > error_norm) ahead *= error_norm / ahead.norm();
+  const double q_d = segmentClearance(p_d, p_d + ahead, held, radius);
+  const double target_blocked = std::clamp(1.0 - q_d / field.margin, 0.0, 1.0);
+  const NavigationDirection nav = navigationDirection(in.p_r, p_d, p_d + target_blocked * ahead, held, field);
   out.direction = nav.direction;
   out.blend = nav.blend;
   const double feed_forward = std::clamp(nav.direction.dot(e_hat), 0.0, 1.0);

@@ -61,6 +61,8 @@ struct ControllerConfig {
   double field_margin = 0.1;           // [m] the recommended law's field bends around a disk's
                                        // zone within this, and blends in when the line of sight
                                        // to the target passes closer than this
+  double field_lookahead = 1.5;        // [s] a target in or near a zone: the field aims this far
+                                       // ahead along its smoothed velocity (0: at the target)
   // Beyond the paper: each switch off reproduces the paper exactly.
   bool tangential_avoidance = false;   // escape the saddle behind a disk (avoidance.h)
   double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c;

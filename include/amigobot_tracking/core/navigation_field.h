@@ -15,6 +15,10 @@
 // direction e_hat by beta = clamp(1 - q / margin, 0, 1), q the least clearance of the segment
 // p_r -> p_d from the zones: with a clear line of sight (q >= margin) the direction is e_hat
 // exactly and no field is computed.
+//
+// The field is seeded at `goal`, the blend judged on the segment to p_d: the recommended law
+// passes a goal ahead of a target that is in or near a zone (recommended_law.h), so the robot
+// heads for where the target comes out rather than waiting at the near side.
 #pragma once
 
 #include <vector>
@@ -59,6 +63,9 @@ std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const Nav
 
 NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
                                         const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
+NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
+                                        const Eigen::Vector2d& goal, const std::vector<Disk>& obstacles,
+                                        const NavigationFieldConfig& config);
 
 }  // namespace core
 }  // namespace amigobot_tracking

@@ -30,6 +30,7 @@ struct RecommendedInput {
   Eigen::Vector2d p_r = Eigen::Vector2d::Zero();
   Eigen::Vector2d e = Eigen::Vector2d::Zero();   // p_d - p_r
   Eigen::Vector2d v_hat = Eigen::Vector2d::Zero();  // the feed-forward v_f
+  Eigen::Vector2d v_smooth = Eigen::Vector2d::Zero();  // v_f averaged over field_lookahead (controller.h)
   double rho = 1.0;
   double rho_floor = 0.0;  // where rho decays to: rho_inf, or more under measurement noise (controller.h)
 };
