@@ -147,12 +147,12 @@ NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen:
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> trial;
   // Seeds: the nodes around the goal (clamped into the grid) at their exact straight
   // distance times the goal's slowness, so phi moves continuously with the goal.
-  const double target_slowness = fieldSlowness(goal, obstacles, config, sensed.size());
+  const double goal_slowness = fieldSlowness(goal, obstacles, config, sensed.size());
   const int ti = static_cast<int>(std::floor(goal.x() / c) - g.i0), tj = static_cast<int>(std::floor(goal.y() / c) - g.j0);
   for (int j = tj - 1; j <= tj + 2; ++j)
     for (int i = ti - 1; i <= ti + 2; ++i) {
       if (!g.inside(i, j)) continue;
-      const double value = target_slowness * (g.position(i, j) - goal).norm();
+      const double value = goal_slowness * (g.position(i, j) - goal).norm();
       g.phi[g.index(i, j)] = value;
       trial.emplace(value, g.index(i, j));
     }

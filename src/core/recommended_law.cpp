@@ -49,8 +49,9 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // A target in or near a zone (the threshold, saddle and doorway classes: it drives over a
   // disk) pulls the field to the zone's near side, where the robot waited until the target came
   // out (4 s in front of a 0.2 m disk). The field aims instead up to tau |v_smooth| ahead of it,
-  // weighted by how deep the target is in the ramp (beta_d = clamp(1 - q_d / margin, 0, 1), q_d
-  // its clearance from the zones: 0 in free space, so a reachable target is tracked as before)
+  // weighted by how near the target's own next path p_d -> p_d + a comes to a zone (beta_d =
+  // clamp(1 - q_d / margin, 0, 1), q_d that segment's clearance: 0 when it is in free space, so a
+  // reachable target is tracked as before)
   // and at most |e| ahead (a robot that has caught up aims at the target: no overshoot past a
   // target that parks behind a pillar). Continuous in the state and the geometry. The
   // line-of-sight blend and (13') still use p_d itself.
