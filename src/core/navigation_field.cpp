@@ -108,11 +108,6 @@ std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const Nav
 }
 
 NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
-                                        const std::vector<Disk>& sensed, const NavigationFieldConfig& config) {
-  return navigationDirection(p_r, p_d, p_d, sensed, config);
-}
-
-NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
                                         const Eigen::Vector2d& goal, const std::vector<Disk>& sensed,
                                         const NavigationFieldConfig& config) {
   const std::vector<Disk> obstacles = narrowGapsClosed(sensed, config);

@@ -61,8 +61,8 @@ double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacle
 // its zone R + r_b counts.) The safety filter still holds the true disks.
 std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
 
-NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
-                                        const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
+// The field seeded at `goal` (p_d, or ahead of a blocked target: recommended_law.cpp), blended
+// by the line of sight p_r -> p_d.
 NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
                                         const Eigen::Vector2d& goal, const std::vector<Disk>& obstacles,
                                         const NavigationFieldConfig& config);
