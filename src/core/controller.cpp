@@ -99,6 +99,7 @@ void PerformanceController::reset() {
   shortfall_ = 0.0;
   feed_forward_ = Eigen::Vector2d::Constant(NAN);
   smoothed_velocity_ = Eigen::Vector2d::Constant(NAN);
+  last_command_ = Twist2{};
   noise_variance_ = 0.0;
   last_sample_stamp_ = NAN;
   passing_side_ = 0;
@@ -326,9 +327,11 @@ bool PerformanceController::commandRecommended(const Pose2& pose, const std::vec
   in.v_smooth = smoothed_velocity_;
   in.rho_floor = out.rho_floor = rhoFloor();
   in.rho = rho_;
+  in.previous = last_command_;
+  in.h = h;
   const RecommendedCommand command = recommendedCommand(config_, diamond_, in, obstacles);
   if (!command.valid) return false;
-  out.u = command.u;
+  out.u = last_command_ = command.u;
   out.u_d = command.u_nominal;
   out.u_r = command.u_nom;
   out.detected_obstacles = command.barrier_rows;

@@ -44,6 +44,9 @@ FieldTable<ControllerConfig> makeTable() {
       field("field_lookahead", &C::field_lookahead, "s",
             "recommended law: a target in or near a zone, the field aims this far ahead along its smoothed velocity",
             durationOrZero()),
+      live(field("command_rise_time", &C::command_rise_time, "s",
+                 "recommended law: the command moves by at most (v_max, w_max) h / this per step (0: no bound)",
+                 durationOrZero())),
       // Beyond the paper: each default is the paper's law.
       field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
       field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),

@@ -135,13 +135,43 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
       ++result.rows;
     }
   }
-  const SmallQpResult solution = solveSmallQp(qp);
+  SmallQpResult solution = solveSmallQp(qp);
   if (!solution.solved) return result;
+  double slack = std::max(0.0, solution.x(2));
+  const size_t barrier_end = qp.a.size();
+  SmallQp boxed;                 // the rate box's QP, when it has one
+  const SmallQp* used = &qp;     // the QP whose rows `solution` is judged against
+  if (std::isfinite(in.max_change.v) && std::isfinite(in.max_change.omega) && in.previous.isFinite()) {
+    // The rate box, |v - v_prev| <= dv + K s and |w - w_prev| <= dw + K (w_bar / v_bar) s, over
+    // the barrier rows loosened by the slack s0 they need without it (0 unless they conflict
+    // inside the diamond): the box holds while the barriers hold as well as they can, and gives
+    // way K times faster than a barrier row would be short. Safety comes first, and u is
+    // continuous (s0 is the slack of a strictly convex QP); without s0 a conflict's slack
+    // opened the box, and u jumped between the diamond's vertices in one step.
+    // A command held from a larger diamond (reconfigure) is first brought inside this one.
+    Twist2 previous = in.previous;
+    if (const auto inside = diamond.saturate(previous)) previous = *inside;
+    boxed = qp;
+    for (size_t i = 5; i < barrier_end; ++i) boxed.b[i] += slack;
+    const double give_v = kRateBoxGiveWay, give_w = kRateBoxGiveWay * diamond.wMax() / diamond.vMax();
+    for (double sign : {-1.0, 1.0}) {
+      boxed.a.emplace_back(sign, 0.0, -give_v);
+      boxed.b.push_back(sign * previous.v + in.max_change.v);
+      boxed.a.emplace_back(0.0, sign, -give_w);
+      boxed.b.push_back(sign * previous.omega + in.max_change.omega);
+    }
+    const SmallQpResult within = solveSmallQp(boxed);
+    if (within.solved) {  // always: the slack opens the box
+      solution = within;
+      used = &boxed;
+      slack += std::max(0.0, within.x(2));
+    }
+  }
   result.solved = true;
   result.u = {solution.x(0), solution.x(1)};
-  result.slack = std::max(0.0, solution.x(2));
-  for (size_t i = 5; i < qp.a.size(); ++i)
-    if (qp.a[i].dot(solution.x) > qp.b[i] - 1e-9 * (1.0 + std::abs(qp.b[i]))) ++result.active;
+  result.slack = slack;
+  for (size_t i = 5; i < barrier_end; ++i)
+    if (used->a[i].dot(solution.x) > used->b[i] - 1e-9 * (1.0 + std::abs(used->b[i]))) ++result.active;
   // Round-off may leave the vertex a hair outside the diamond: scale it back (sigma of (12)).
   if (const auto inside = diamond.saturate(result.u)) result.u = *inside;
   return result;

@@ -147,6 +147,7 @@ class PerformanceController {
   // second (recommended_law.h); NaN until the first step.
   Eigen::Vector2d feed_forward_ = Eigen::Vector2d::Constant(NAN);
   Eigen::Vector2d smoothed_velocity_ = Eigen::Vector2d::Constant(NAN);  // v_f, first-order over field_lookahead
+  Twist2 last_command_;  // the recommended law's last u: its rate box is centred on it
   // The recommended law's noise estimate: the last target sample and the running mean of the
   // squared innovation of the samples against the feed-forward's prediction.
   double noise_variance_ = 0.0;

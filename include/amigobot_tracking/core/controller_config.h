@@ -63,6 +63,9 @@ struct ControllerConfig {
                                        // to the target passes closer than this
   double field_lookahead = 1.5;        // [s] a target in or near a zone: the field aims this far
                                        // ahead along its smoothed velocity (0: at the target)
+  double command_rise_time = 0.25;     // [s] the recommended law's command changes by at most
+                                       // (v_bar, w_bar) h / this per step: the safety filter's
+                                       // rate box, which gives way to a barrier (0: no bound)
   // Beyond the paper: each switch off reproduces the paper exactly.
   bool tangential_avoidance = false;   // escape the saddle behind a disk (avoidance.h)
   double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c;

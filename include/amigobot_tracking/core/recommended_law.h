@@ -7,7 +7,8 @@
 //   u_nom   = max(k_d T(xi) + lambda (rho - rho_f) xi, min((k_d / rho_inf) |e|, 2 v_bar)) d + clamp(d^T e_hat, 0, 1) v_f
 //             (d: the field's direction; d = e_hat with a clear line of sight; the max keeps
 //             at least the gain (9) has at steady state while rho is still wide)
-//   u       = safetyFilter(G^-1 u_nom)
+//   u       = safetyFilter(G^-1 u_nom), at most (v_bar, w_bar) h / command_rise_time from the last u
+//             while every barrier row holds (safety_filter.h's rate box)
 //   Delta   = max(0, e_hat^T (u_track - G u))                               (the shortfall)
 //   rho'    = -lambda (rho - rho_f) + (1 + k_r) xi^2 Delta                 (13')
 //   v_f: v_hat slew-limited to a_max (RecommendedInput::v_hat); rho_f: rho_inf plus the measured
@@ -33,6 +34,8 @@ struct RecommendedInput {
   Eigen::Vector2d v_smooth = Eigen::Vector2d::Zero();  // v_f averaged over field_lookahead (controller.h)
   double rho = 1.0;
   double rho_floor = 0.0;  // where rho decays to: rho_inf, or more under measurement noise (controller.h)
+  Twist2 previous;         // the last command, which u leaves at most (v_accel, w_accel) h away from
+  double h = 0.0;          // [s] since that command; 0: none (the first step is not bounded)
 };
 
 struct RecommendedCommand {

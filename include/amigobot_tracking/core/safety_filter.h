@@ -6,6 +6,10 @@
 //             (= |G(th) (u - u_n)|^2: the offset point's velocity error, G of (8))
 //   subject to  |v|/v_bar + |w|/w_bar <= 1                    (the diamond's four edges)
 //               n_j^T (G u - v_j) >= -gamma (h_j - m) - s      (one row per disk j)
+//               |v - v_p| <= dv + K s,  |w - w_p| <= dw + K (w_bar / v_bar) s   (the rate box,
+//               with max_change: solved after the box-free QP, over barrier rows loosened by
+//               that QP's slack s0, so the box holds while the barriers hold as well as they
+//               can and gives way K = kRateBoxGiveWay times faster than a barrier row is short)
 // with h_j = |p_r - c_j| - (R_eff + r_j) the clearance of the offset point's disk, n_j its
 // outward normal, v_j the disk's velocity and m = min_margin. With `body_rows`, each disk
 // also gets the row of the body disk itself (centre c, radius R_eff):
@@ -20,6 +24,7 @@
 // largest |G u|) is left out, which changes nothing, so there is no detection threshold.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -55,6 +60,11 @@ struct SafetyFilterInput {
   bool obstacle_velocities = false;  // use Disk::velocity in the rows
   bool body_rows = false;       // also hold the body disk (centre, robot_radius) clear
   Twist2 nominal;
+  // The command may change by at most (max_change.v, max_change.omega) from `previous` (the
+  // robot's acceleration over one period), while the barrier rows hold; +inf: no bound. A
+  // `previous` outside the diamond (it shrank under a held command) is first scaled into it.
+  Twist2 previous;
+  Twist2 max_change{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
 };
 
 struct SafetyFilterResult {
@@ -74,6 +84,8 @@ constexpr double kBodyLookahead = 0.05;
 
 // The slack's weight: large, so a slack appears only where nothing else is feasible.
 constexpr double kSafetySlackWeight = 1e6;
+// [-] K: the rate box opens by K m/s per m/s a barrier row is short (the box's rows carry -K s).
+constexpr double kRateBoxGiveWay = 10.0;
 
 SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& diamond,
                                 const std::vector<Disk>& obstacles);
