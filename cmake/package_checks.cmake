@@ -60,6 +60,11 @@ if(CATKIN_ENABLE_TESTING)
                      --world ${PROJECT_SOURCE_DIR}/config/worlds/lab.yaml --compare ${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
   add_rostest(test/rostest/sim_launch.test DEPENDENCIES amigobot_emulator sim_laser ground_truth_localization
               trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
+  # Again with the serial-only laser: laser_emulator --endpoint gives it a pty, the driver's
+  # laser_emulator:PORT finds it there (the registry's endpoint rule, no name in the launch).
+  add_rostest(test/rostest/sim_launch.test ARGS laser:=rplidar
+              DEPENDENCIES amigobot_emulator laser_emulator ground_truth_localization trail_publisher
+              reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
 
   # rosrun finds every executable once (no build or install tree inside the package).
   amigobot_add_check(rosrun_finds_each_once ${PROJECT_SOURCE_DIR}/test/install/check_rosrun_unique.sh

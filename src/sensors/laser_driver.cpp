@@ -22,8 +22,10 @@ void LaserDriverConfig::validate() const {
   const LaserModelEntry& entry = laserModelEntry(model);
   if (port.empty()) throw std::invalid_argument("port: empty (expected /dev/ttyACM0 or host:port)");
   bool is_tcp = false;
+  std::string opened;  // "laser_emulator:PORT" judged as the pty or host:port it stands for (always its link)
   try {
-    is_tcp = link::parseTcpAddress(port).has_value();  // the one address rule
+    opened = resolveLaserPort(model, port);
+    is_tcp = link::parseTcpAddress(opened).has_value();  // the one address rule
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("port: ") + e.what());
   }
@@ -45,6 +47,7 @@ void LaserDriverConfig::validate() const {
 
 LaserDriver::LaserDriver(LaserDriverConfig config) : config_(std::move(config)) {
   config_.validate();
+  config_.port = resolveLaserPort(config_.model, config_.port);  // what to open, and to name in errors
   backoff_ = config_.reconnect_period;
 }
 

@@ -40,6 +40,32 @@ std::size_t after(const std::string& text, char c, int n) {
 
 }  // namespace
 
+std::string scanSettingChoices() {
+  std::string choices;
+  for (const LaserModelEntry& e : laserModels()) {
+    if (e.scan_setting) choices += (choices.empty() ? "" : "; ") + e.name + ": " + e.scan_setting->choices;
+  }
+  return choices;
+}
+
+LaserModel emulatedLaserModel(const std::string& name, std::optional<double> frequency_hz,
+                              std::optional<double> resolution_deg) {
+  const LaserModelEntry& entry = laserModelEntry(name);
+  LaserModel model = entry.model();
+  if (!entry.scan_setting) {
+    if (!frequency_hz && !resolution_deg) return model;
+    std::string takers;  // from the registry, so a new model with a setting is named here too
+    for (const LaserModelEntry& e : laserModels()) {
+      if (e.scan_setting) takers += (takers.empty() ? "" : ", ") + e.name;
+    }
+    throw std::invalid_argument(std::string(frequency_hz ? "--scan-frequency" : "--resolution") + ": " + name +
+                                " has a fixed scan (a scan to choose: " + (takers.empty() ? "no model" : takers) + ")");
+  }
+  const LaserScanSetting& setting = *entry.scan_setting;
+  setting.apply(&model, frequency_hz.value_or(setting.frequency_hz), resolution_deg.value_or(setting.resolution_deg));
+  return model;
+}
+
 Fault parseFault(const std::string& name) {
   if (name == "none") return Fault::kNone;
   if (name == "malformed") return Fault::kMalformed;

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "amigobot_tracking/link/address.h"
+
 namespace amigobot_tracking {
 namespace sensors {
 namespace {
@@ -35,7 +37,7 @@ LaserModel sickLms1xx() {
   // range_min 0.01: dropping them would lose what the device measured.
   m.range_min = 0.01;
   m.range_max = 20.0;
-  setLms1xxScanConfig(&m, 25.0, 0.5);
+  setLms1xxScanConfig(&m, 25.0, 0.5);  // the factory scan, as the entry's scan_setting says
   return m;
 }
 
@@ -50,18 +52,20 @@ LaserModel rplidarA1() {
 }
 
 // Built on first use (not at static initialisation), so any other static may read it. One
-// entry per model: name, what it is, link, serial speeds, model, driver, emulator session.
+// entry per model: name, what it is, link, serial speeds, model, driver, emulator session,
+// the scan to choose (std::nullopt: fixed).
 const std::vector<LaserModelEntry>& registry() {
   static const std::vector<LaserModelEntry> models{
       {"hokuyo_urg", "Hokuyo URG-04LX, SCIP 2.0: 240 deg, 0.352 deg, 10 Hz, 0.02 .. 4 m", LaserLink::kSerialOrTcp, {},
-       hokuyoUrg, [](const std::string& port, int) { return openHokuyo(port); }, makeScipSession},
+       hokuyoUrg, [](const std::string& port, int) { return openHokuyo(port); }, makeScipSession, std::nullopt},
       {"sick_tim5xx", "SICK TiM5xx, CoLa-A over TCP: 270 deg, 0.333 deg, 15 Hz, 0.05 .. 10 m", LaserLink::kTcp, {},
-       sickTim5xx, [](const std::string& port, int) { return openCola("sick_tim5xx", port); }, makeColaSession},
+       sickTim5xx, [](const std::string& port, int) { return openCola("sick_tim5xx", port); }, makeColaSession, std::nullopt},
       {"sick_lms1xx", "SICK LMS111, CoLa-A over TCP: 270 deg, 0.5 deg, 25 Hz, 0.01 .. 20 m", LaserLink::kTcp, {},
-       sickLms1xx, [](const std::string& port, int) { return openCola("sick_lms1xx", port); }, makeColaSession},
+       sickLms1xx, [](const std::string& port, int) { return openCola("sick_lms1xx", port); }, makeColaSession,
+       LaserScanSetting{"25 Hz at 0.5 | 0.25 deg, 50 Hz at 0.5 deg", 25.0, 0.5, setLms1xxScanConfig}},
       {"rplidar", "Slamtec RPLIDAR A1M8 (A2, A3), serial: 360 deg, ~1 deg, 5.5 Hz, 0.15 .. 12 m", LaserLink::kSerial,
        {115200, 256000}, rplidarA1, [](const std::string& port, int baud) { return openRplidar(port, baud); },
-       makeRplidarSession},
+       makeRplidarSession, std::nullopt},
   };
   return models;
 }
@@ -91,12 +95,35 @@ const LaserModelEntry& laserModelEntry(const std::string& name) {
 
 LaserModel laserModel(const std::string& name) { return laserModelEntry(name).model(); }
 
+std::string LaserEndpoint::address() const { return pty.empty() ? "localhost:" + std::to_string(tcp_port) : pty; }
+
+LaserEndpoint laserEmulatorEndpoint(const std::string& model, int port) {
+  const LaserModelEntry& entry = laserModelEntry(model);
+  if (port < 1 || port > 65535) {
+    throw std::invalid_argument("endpoint: port " + std::to_string(port) + " outside 1 .. 65535 (the driver must know it)");
+  }
+  LaserEndpoint endpoint;
+  if (entry.tcp()) {
+    endpoint.tcp_port = port;
+  } else {
+    endpoint.pty = "/tmp/amigobot_laser_" + entry.name + "_" + std::to_string(port);
+  }
+  return endpoint;
+}
+
+std::string resolveLaserPort(const std::string& model, const std::string& port) {
+  // The address rule reads "laser_emulator:PORT" as a host and a checked port: one port rule.
+  const std::optional<link::TcpAddress> address = port.empty() ? std::nullopt : link::parseTcpAddress(port);
+  if (!address || address->host != "laser_emulator") return port;
+  return laserEmulatorEndpoint(model, address->port).address();
+}
+
 const core::FieldTable<LaserDriverConfig>& laserDriverFields() {
   using D = LaserDriverConfig;
   using core::field;
   static const core::FieldTable<D> table = {
       field("model", &D::model, "-", "the laser's protocol", core::oneOf(laserModelNames())),
-      field("port", &D::port, "-", "serial device, or host:port for TCP"),
+      field("port", &D::port, "-", "serial device, host:port for TCP, or laser_emulator:PORT (laser_emulator --endpoint PORT)"),
       field("reconnect_period", &D::reconnect_period, "s", "first wait before reopening (doubles up to 8x)",
             core::boundedTimeout()),
       field("stall_timeout", &D::stall_timeout, "s", "no scan for this long: the link is reopened", core::boundedTimeout()),

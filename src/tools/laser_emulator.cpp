@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,8 +33,8 @@ void onSignal(int) { g_stop = true; }
 
 int main(int argc, char** argv) {
   std::string model_name = "hokuyo_urg", world_file, status_host = "127.0.0.1", fault = "none";
-  int status_port = -1;
-  double lms_frequency = 25.0, lms_resolution = 0.5;
+  int status_port = -1, endpoint = 0;
+  double scan_frequency = 0.0, scan_resolution = 0.0;  // read only when given: the model's own otherwise
   std::vector<double> pose{0.0, 0.0, 0.0};
   sensors::ScanSourceOptions scan;
   sensors::LaserServerOptions server;
@@ -42,11 +43,20 @@ int main(int argc, char** argv) {
                "laser_emulator");
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.add_option("--model", model_name, sensors::laserModelList())->capture_default_str();
-  app.add_option("--scan-frequency", lms_frequency, "sick_lms1xx: 25 | 50 [Hz]")->capture_default_str();
-  app.add_option("--resolution", lms_resolution, "sick_lms1xx: 0.5 | 0.25 [deg] (0.25 at 25 Hz only)")->capture_default_str();
-  app.add_option("--tcp-port", server.tcp_port, "TCP port (0 = any free port; -1 = none)")->capture_default_str();
+  CLI::Option* frequency_option = app.add_option("--scan-frequency", scan_frequency,
+                                                 "[Hz] models with a scan to choose (" + sensors::scanSettingChoices() + ")");
+  CLI::Option* resolution_option =
+      app.add_option("--resolution", scan_resolution, "[deg] angular resolution, as --scan-frequency");
+  CLI::Option* endpoint_option = app.add_option(
+      "--endpoint", endpoint,
+      "serve the model's own link from PORT, where the driver's port laser_emulator:PORT finds it: TCP on PORT, "
+      "or a serial-only model's pty at /tmp/amigobot_laser_MODEL_PORT (instead of --tcp-port / --pty)");
+  CLI::Option* tcp_option =
+      app.add_option("--tcp-port", server.tcp_port, "TCP port (0 = any free port; -1 = none)")->capture_default_str();
   app.add_option("--bind", server.bind_address, "IPv4 address to listen on")->capture_default_str();
-  app.add_option("--pty", server.pty_link, "models with a serial port: also serve a pseudo-terminal, symlinked at this path");
+  CLI::Option* pty_option = app.add_option(
+      "--pty", server.pty_link, "models with a serial port: also serve a pseudo-terminal, symlinked at this path");
+  endpoint_option->excludes(tcp_option)->excludes(pty_option);
   app.add_option("--world", world_file, "world YAML (world/world.h): the disks, walls and polygons the laser sees");
   app.add_option("--status-port", status_port, "amigobot_emulator's status port: the robot's true pose (-1: --pose)")
       ->capture_default_str();
@@ -70,11 +80,14 @@ int main(int argc, char** argv) {
   }
   try {
     server.fault = sensors::parseFault(fault);
-    sensors::LaserModel model = sensors::laserModel(model_name);
-    if (model_name == "sick_lms1xx") {
-      sensors::setLms1xxScanConfig(&model, lms_frequency, lms_resolution);
-    } else if (lms_frequency != 25.0 || lms_resolution != 0.5) {
-      throw std::invalid_argument("--scan-frequency, --resolution: sick_lms1xx only");
+    // The registry's entry decides (scan setting, link): this tool names no model.
+    const sensors::LaserModel model = sensors::emulatedLaserModel(
+        model_name, frequency_option->count() ? std::optional<double>(scan_frequency) : std::nullopt,
+        resolution_option->count() ? std::optional<double>(scan_resolution) : std::nullopt);
+    if (endpoint_option->count()) {
+      const sensors::LaserEndpoint link = sensors::laserEmulatorEndpoint(model_name, endpoint);
+      server.tcp_port = link.tcp_port;
+      server.pty_link = link.pty;
     }
     world::World room;
     if (!world_file.empty()) room = world::loadWorld(world_file);

@@ -1,8 +1,9 @@
 // The laser model registry (sensors/laser_registry.h): every entry complete and consistent,
 // and an unknown model an error wherever a model is named (model, session, driver, emulator),
-// naming it and the known ones.
+// naming it and the known ones; the emulator's endpoint and scan options read from the entry.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -80,4 +81,65 @@ TEST(LaserRegistry, LinksAndBaudsComeFromTheEntry) {
   pty.pty_link = "/tmp/never";
   EXPECT_NE(errorOf([&] { pty.validate(laserModel("sick_lms1xx")); }).find("sick_lms1xx has no serial port"), std::string::npos);
   EXPECT_EQ(errorOf([&] { pty.validate(laserModel("hokuyo_urg")); }), "");
+}
+
+// The emulator's endpoint comes from the entry's link (serial-only: a pty; else TCP), so the
+// launch file passes a port alone and the driver's laser_emulator:PORT opens the same place.
+TEST(LaserRegistry, EmulatorEndpointFollowsTheEntrysLink) {
+  for (const LaserModelEntry& e : laserModels()) {
+    SCOPED_TRACE(e.name);
+    const LaserEndpoint endpoint = laserEmulatorEndpoint(e.name, 10940);
+    if (e.tcp()) {
+      EXPECT_EQ(endpoint.tcp_port, 10940);
+      EXPECT_EQ(endpoint.pty, "");
+      EXPECT_EQ(endpoint.address(), "localhost:10940");
+    } else {
+      EXPECT_EQ(endpoint.tcp_port, -1);
+      EXPECT_EQ(endpoint.pty, "/tmp/amigobot_laser_" + e.name + "_10940");
+      EXPECT_EQ(endpoint.address(), endpoint.pty);
+    }
+    EXPECT_EQ(resolveLaserPort(e.name, "laser_emulator:10940"), endpoint.address());
+    LaserDriverConfig c;
+    c.model = e.name;
+    c.port = "laser_emulator:10940";
+    EXPECT_EQ(errorOf([&] { c.validate(); }), "") << "the endpoint is always the model's own link";
+  }
+  EXPECT_EQ(laserEmulatorEndpoint("rplidar", 10940).address(), "/tmp/amigobot_laser_rplidar_10940");
+  EXPECT_EQ(laserEmulatorEndpoint("sick_lms1xx", 10940).address(), "localhost:10940");
+  EXPECT_EQ(resolveLaserPort("rplidar", "/dev/ttyUSB0"), "/dev/ttyUSB0");  // other ports as they are
+  EXPECT_EQ(resolveLaserPort("sick_tim5xx", "192.168.0.1:2112"), "192.168.0.1:2112");
+  const std::string unknown = errorOf([] { laserEmulatorEndpoint("lidar9000", 10940); });
+  EXPECT_NE(unknown.find("'lidar9000'"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find(laserModelList()), std::string::npos) << unknown;
+  EXPECT_NE(errorOf([] { resolveLaserPort("lidar9000", "laser_emulator:10940"); }).find("'lidar9000'"), std::string::npos);
+  EXPECT_NE(errorOf([] { laserEmulatorEndpoint("rplidar", 0); }).find("port 0"), std::string::npos);
+  LaserDriverConfig bad;
+  bad.model = "rplidar";
+  bad.port = "laser_emulator:x";
+  EXPECT_EQ(errorOf([&] { bad.validate(); }).rfind("port:", 0), 0u);
+}
+
+// --scan-frequency / --resolution are the entry's scan setting: a model without one refuses
+// them, naming the option and the model; a model with one applies them.
+TEST(LaserRegistry, EmulatorScanOptionsNeedTheEntrysScanSetting) {
+  const std::string tim = errorOf([] { emulatedLaserModel("sick_tim5xx", 25.0, std::nullopt); });
+  EXPECT_NE(tim.find("--scan-frequency"), std::string::npos) << tim;
+  EXPECT_NE(tim.find("sick_tim5xx"), std::string::npos) << tim;
+  EXPECT_NE(tim.find("sick_lms1xx"), std::string::npos) << tim << " (the models that take it)";
+  const std::string urg = errorOf([] { emulatedLaserModel("hokuyo_urg", std::nullopt, 0.5); });
+  EXPECT_NE(urg.find("--resolution"), std::string::npos) << urg;
+  EXPECT_NE(urg.find("hokuyo_urg"), std::string::npos) << urg;
+  EXPECT_NE(errorOf([] { emulatedLaserModel("lidar9000", std::nullopt, std::nullopt); }).find("'lidar9000'"),
+            std::string::npos);
+  for (const LaserModelEntry& e : laserModels()) {
+    SCOPED_TRACE(e.name);
+    EXPECT_EQ(emulatedLaserModel(e.name, std::nullopt, std::nullopt).beams(), e.model().beams());
+    if (e.scan_setting) {
+      EXPECT_NE(scanSettingChoices().find(e.name), std::string::npos);
+    }
+  }
+  const LaserModel fast = emulatedLaserModel("sick_lms1xx", 50.0, std::nullopt);
+  EXPECT_EQ(fast.rate, 50.0);
+  EXPECT_EQ(emulatedLaserModel("sick_lms1xx", std::nullopt, 0.25).beams(), 1081);
+  EXPECT_NE(errorOf([] { emulatedLaserModel("sick_lms1xx", 50.0, 0.25); }).find("25 Hz"), std::string::npos);
 }

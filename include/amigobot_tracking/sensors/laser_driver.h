@@ -14,7 +14,7 @@ namespace sensors {
 
 struct LaserDriverConfig {
   std::string model = "hokuyo_urg";    // an entry of laser_registry.h
-  std::string port = "/dev/ttyACM0";   // serial device or host:port
+  std::string port = "/dev/ttyACM0";   // serial device, host:port, or laser_emulator:PORT (laser_registry.h)
   double reconnect_period = 1.0;       // [s] first wait before reopening
   double stall_timeout = 1.0;          // [s] no scan for this long: the link is reopened
   int baud = 0;                        // one of the model's bauds (rplidar: 115200 or 256000); 0: its first

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "amigobot_tracking/core/types.h"
@@ -37,6 +38,15 @@ struct LaserServerOptions {
 
   void validate(const LaserModel& model) const;  // throws naming the bad option
 };
+
+// The model laser_emulator serves: the entry's, with the scan --scan-frequency and
+// --resolution ask for (nullopt: not given, the entry's own). A model whose entry has no
+// scan_setting refuses either option: std::invalid_argument naming the option, the model and
+// the models that take one; a bad value is the setting's own error.
+LaserModel emulatedLaserModel(const std::string& name, std::optional<double> frequency_hz,
+                              std::optional<double> resolution_deg);
+// "sick_lms1xx: 25 Hz at 0.5 | 0.25 deg, ...": the models with a scan to choose, for help texts.
+std::string scanSettingChoices();
 
 // The robot's pose at emulator time: false when it is not known (then no scan is sent).
 using PoseSource = std::function<bool(core::Pose2* base, double* t)>;

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,14 @@ namespace sensors {
 
 enum class LaserLink { kSerial, kTcp, kSerialOrTcp };
 
+// A device whose scan is chosen at start-up (frequency, angular resolution), as the LMS1xx's
+// mLMPsetscancfg: the emulator's --scan-frequency / --resolution. A fixed-scan model has none.
+struct LaserScanSetting {
+  std::string choices;  // the data sheet's pairs, for help texts
+  double frequency_hz = 0.0, resolution_deg = 0.0;  // the entry's model's own scan
+  std::function<void(LaserModel*, double frequency_hz, double resolution_deg)> apply;  // throws naming a bad value
+};
+
 struct LaserModelEntry {
   std::string name;         // the `model` parameter's value
   std::string description;  // the device and its data sheet's figures
@@ -30,6 +39,7 @@ struct LaserModelEntry {
   std::function<LaserModel()> model;  // geometry, rate, range limits
   std::function<std::unique_ptr<LaserDevice>(const std::string& port, int baud)> open;  // baud: 0 or one of `bauds`
   std::function<std::unique_ptr<LaserSession>(const LaserModel& model, const std::string& serial)> session;
+  std::optional<LaserScanSetting> scan_setting;  // empty: the scan is fixed
 
   bool tcp() const { return link != LaserLink::kSerial; }
   bool serial() const { return link != LaserLink::kTcp; }
@@ -40,6 +50,21 @@ const std::vector<LaserModelEntry>& laserModels();
 const LaserModelEntry& laserModelEntry(const std::string& name);
 std::vector<std::string> laserModelNames();
 std::string laserModelList();  // "hokuyo_urg | sick_tim5xx | ...", for help texts and errors
+
+// Where laser_emulator --endpoint PORT serves a model, and so where the driver finds it: by
+// the entry's link, so a launch file passes the port alone and no caller compares names. A
+// serial-only model gets a pseudo-terminal linked at /tmp/amigobot_laser_MODEL_PORT (PORT
+// keeps two emulators apart), any other TCP on localhost:PORT.
+struct LaserEndpoint {
+  int tcp_port = -1;  // -1: none
+  std::string pty;    // empty: none
+  std::string address() const;  // what the driver opens: the pty, or localhost:PORT
+};
+// Throws std::invalid_argument for an unknown model (as laserModelEntry) or a port outside 1..65535.
+LaserEndpoint laserEmulatorEndpoint(const std::string& model, int port);
+// The driver's `port` parameter may name that endpoint as "laser_emulator:PORT" (no host
+// name holds '_', so no real host:port reads so); anything else is returned as it is.
+std::string resolveLaserPort(const std::string& model, const std::string& port);
 
 // The driver's settings, described once (bounds, units, the model's choices from the list
 // above): LaserDriverConfig::validate and the Laser nodelet's parameters both walk it.
