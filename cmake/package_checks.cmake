@@ -62,7 +62,7 @@ if(CATKIN_ENABLE_TESTING)
               trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
   # Again with the serial-only laser: laser_emulator --endpoint gives it a pty, the driver's
   # laser_emulator:PORT finds it there (the registry's endpoint rule, no name in the launch).
-  add_rostest(test/rostest/sim_launch.test ARGS laser:=rplidar
+  add_rostest(test/rostest/sim_launch.test ARGS laser:=rplidar status_port:=28773 laser_port:=28774
               DEPENDENCIES amigobot_emulator laser_emulator ground_truth_localization trail_publisher
               reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
 
