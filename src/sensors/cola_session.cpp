@@ -20,7 +20,7 @@ constexpr const char* kClientPassword = "F4724744";  // SICK's default for "auth
 class ColaSession : public LaserSession {
  public:
   ColaSession(LaserModel model, std::string serial)
-      : model_(std::move(model)), serial_(std::move(serial)), lms_(model_.name == "sick_lms1xx"),
+      : model_(std::move(model)), serial_(std::move(serial)), lms_(model_.cola.measures_on_command),
         measuring_(!lms_) {}
 
   std::string receive(const std::string& bytes, const EmulatedScan& latest) override {

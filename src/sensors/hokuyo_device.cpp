@@ -70,7 +70,7 @@ class Urg : public mrpt::hwdrivers::CHokuyoURG {
 
 class HokuyoDevice : public LaserDevice {
  public:
-  explicit HokuyoDevice(const std::string& port) : port_(port) {
+  HokuyoDevice(const std::string& model, const std::string& port) : port_(port), where_(model + " " + port) {
     urg_.setMinLoggingLevel(mrpt::system::LVL_ERROR);
     urg_.useReceptionTime();
     bool ok = false;
@@ -83,11 +83,11 @@ class HokuyoDevice : public LaserDevice {
       }
       ok = urg_.turnOn();
     } catch (const std::exception& e) {
-      throw std::runtime_error("hokuyo_urg " + port + ": cannot open: " + std::string(e.what()).substr(0, 200));
+      throw std::runtime_error(where_ + ": cannot open: " + std::string(e.what()).substr(0, 200));
     }
     const auto& i = urg_.info();
     if (!ok || i.scans_per_360deg <= 0 || i.scan_last < i.scan_first) {
-      throw std::runtime_error("hokuyo_urg " + port + ": no SCIP 2.0 answer (PP) from the device");
+      throw std::runtime_error(where_ + ": no SCIP 2.0 answer (PP) from the device");
     }
     const double step = 2.0 * M_PI / i.scans_per_360deg;
     geometry_.angle_min = (i.scan_first - i.scan_front) * step;
@@ -107,15 +107,15 @@ class HokuyoDevice : public LaserDevice {
     urg_.doProcessSimple(have, obs, error);
     if (sums_.badLines() > bad_lines_) {
       bad_lines_ = sums_.badLines();
-      throw ScanError("hokuyo_urg " + port_ + ": SCIP checksum wrong in line '" + sums_.lastBad().substr(0, 70) + "'");
+      throw ScanError(where_ + ": SCIP checksum wrong in line '" + sums_.lastBad().substr(0, 70) + "'");
     }
     // MRPT does not tell a damaged reply from a lost link: the driver reopens after a stall.
-    if (error && !have) throw ScanError("hokuyo_urg " + port_ + ": damaged reply, device error or link lost");
+    if (error && !have) throw ScanError(where_ + ": damaged reply, device error or link lost");
     if (!have) return false;
     const double received = systemSeconds();
     const std::size_t n = obs.getScanSize();
     const std::size_t expected = static_cast<std::size_t>(urg_.info().scan_last - urg_.info().scan_first + 1);
-    if (n != expected) throw ScanError("hokuyo_urg " + port_ + ": scan of " + std::to_string(n) + " beams");
+    if (n != expected) throw ScanError(where_ + ": scan of " + std::to_string(n) + " beams");
     LaserScanData out = geometry_;
     out.ranges.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
@@ -137,7 +137,7 @@ class HokuyoDevice : public LaserDevice {
   std::string identity() const override { return identity_; }
 
  private:
-  std::string port_, identity_;
+  std::string port_, where_, identity_;  // where_: "MODEL PORT", for errors
   scip::ReplySumCheck sums_;  // before urg_: the streams bound to it point here
   std::uint64_t bad_lines_ = 0;
   Urg urg_;
@@ -146,7 +146,9 @@ class HokuyoDevice : public LaserDevice {
 
 }  // namespace
 
-std::unique_ptr<LaserDevice> openHokuyo(const std::string& port) { return std::make_unique<HokuyoDevice>(port); }
+std::unique_ptr<LaserDevice> openHokuyo(const std::string& model, const std::string& port) {
+  return std::make_unique<HokuyoDevice>(model, port);
+}
 
 }  // namespace sensors
 }  // namespace amigobot_tracking

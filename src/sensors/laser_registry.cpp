@@ -37,6 +37,7 @@ LaserModel sickLms1xx() {
   // range_min 0.01: dropping them would lose what the device measured.
   m.range_min = 0.01;
   m.range_max = 20.0;
+  m.cola.measures_on_command = true;
   setLms1xxScanConfig(&m, 25.0, 0.5);  // the factory scan, as the entry's scan_setting says
   return m;
 }
@@ -57,7 +58,7 @@ LaserModel rplidarA1() {
 const std::vector<LaserModelEntry>& registry() {
   static const std::vector<LaserModelEntry> models{
       {"hokuyo_urg", "Hokuyo URG-04LX, SCIP 2.0: 240 deg, 0.352 deg, 10 Hz, 0.02 .. 4 m", LaserLink::kSerialOrTcp, {},
-       hokuyoUrg, [](const std::string& port, int) { return openHokuyo(port); }, makeScipSession, std::nullopt},
+       hokuyoUrg, [](const std::string& port, int) { return openHokuyo("hokuyo_urg", port); }, makeScipSession, std::nullopt},
       {"sick_tim5xx", "SICK TiM5xx, CoLa-A over TCP: 270 deg, 0.333 deg, 15 Hz, 0.05 .. 10 m", LaserLink::kTcp, {},
        sickTim5xx, [](const std::string& port, int) { return openCola("sick_tim5xx", port); }, makeColaSession, std::nullopt},
       {"sick_lms1xx", "SICK LMS111, CoLa-A over TCP: 270 deg, 0.5 deg, 25 Hz, 0.01 .. 20 m", LaserLink::kTcp, {},

@@ -27,6 +27,9 @@ struct ColaGeometry {
   int angular_step = 3333;    // [1/10000 deg]
   int beams = 811;
   int scan_frequency = 1500;  // [1/100 Hz]
+  // The LMS1xx family: a client logs in, may set the scan (mLMPsetscancfg) and starts the
+  // measurement (LMCstartmeas); a TiM5xx measures from power-up and has none of that.
+  bool measures_on_command = false;
 };
 
 // A RPLIDAR turns clockwise seen from above and samples at its own clock, so the angles of
