@@ -17,13 +17,7 @@ namespace amigobot_tracking {
 namespace sensors {
 namespace {
 
-std::runtime_error failure(const std::string& what) {
-  return std::runtime_error("laser_emulator: " + what + ": " + std::strerror(errno));
-}
-
-double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+std::runtime_error failure(const std::string& what) { return link::systemError("laser_emulator: " + what); }
 
 void sendAll(int fd, const std::string& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
 
@@ -110,7 +104,7 @@ void LaserEmulatorServer::open() {
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("laser_emulator: ") + e.what());
   }
-  next_scan_ = steadySeconds();
+  next_scan_ = link::steadySeconds();
 }
 
 void LaserEmulatorServer::accept() {
@@ -161,7 +155,7 @@ std::string LaserEmulatorServer::damage(std::string telegram) {
 }
 
 void LaserEmulatorServer::tick() {
-  const double now = steadySeconds();
+  const double now = link::steadySeconds();
   // A scan leaves the device once its last beam is measured: cast at the first beam, sent
   // one sweep of the measured beams later.
   if (has_pending_ && now >= pending_due_) {
@@ -235,8 +229,8 @@ void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
       }
     }
     tick();
-    drain(tcp_, steadySeconds());
-    drain(pty_, steadySeconds());
+    drain(tcp_, link::steadySeconds());
+    drain(pty_, link::steadySeconds());
   }
 }
 
