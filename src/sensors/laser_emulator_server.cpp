@@ -17,7 +17,13 @@ namespace amigobot_tracking {
 namespace sensors {
 namespace {
 
-std::runtime_error failure(const std::string& what) { return link::systemError("laser_emulator: " + what); }
+std::runtime_error failure(const std::string& what) {
+  return std::runtime_error("laser_emulator: " + what + ": " + std::strerror(errno));
+}
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 void sendAll(int fd, const std::string& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
 
@@ -104,7 +110,7 @@ void LaserEmulatorServer::open() {
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("laser_emulator: ") + e.what());
   }
-  next_scan_ = link::steadySeconds();
+  next_scan_ = steadySeconds();
 }
 
 void LaserEmulatorServer::accept() {
@@ -155,7 +161,7 @@ std::string LaserEmulatorServer::damage(std::string telegram) {
 }
 
 void LaserEmulatorServer::tick() {
-  const double now = link::steadySeconds();
+  const double now = steadySeconds();
   // A scan leaves the device once its last beam is measured: cast at the first beam, sent
   // one sweep of the measured beams later.
   if (has_pending_ && now >= pending_due_) {
@@ -229,8 +235,8 @@ void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
       }
     }
     tick();
-    drain(tcp_, link::steadySeconds());
-    drain(pty_, link::steadySeconds());
+    drain(tcp_, steadySeconds());
+    drain(pty_, steadySeconds());
   }
 }
 

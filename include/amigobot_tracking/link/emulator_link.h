@@ -7,16 +7,10 @@
 #pragma once
 
 #include <cstddef>
-#include <stdexcept>
 #include <string>
 
 namespace amigobot_tracking {
 namespace link {
-
-// [s] a monotonic clock, for the emulators' pacing and line timing.
-double steadySeconds();
-// std::runtime_error "WHAT: strerror(errno)", for a failed system call.
-std::runtime_error systemError(const std::string& what);
 
 // A listening IPv4 TCP socket.
 class TcpListener {
