@@ -141,16 +141,20 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
   const size_t barrier_end = qp.a.size();
   SmallQp boxed;                 // the rate box's QP, when it has one
   const SmallQp* used = &qp;     // the QP whose rows `solution` is judged against
-  if (std::isfinite(in.max_change.v) && std::isfinite(in.max_change.omega) && in.previous.isFinite()) {
+  // A command held from a larger diamond (reconfigure) is first brought inside this one.
+  Twist2 previous = in.previous;
+  if (const auto inside = diamond.saturate(previous)) previous = *inside;
+  // Where the box-free minimiser needs no slack and already lies in the box, it is the boxed
+  // QP's minimiser too (that QP only adds rows it meets): the second solve is skipped.
+  const bool in_box = slack == 0.0 && std::abs(solution.x(0) - previous.v) <= in.max_change.v &&
+                      std::abs(solution.x(1) - previous.omega) <= in.max_change.omega;
+  if (!in_box && std::isfinite(in.max_change.v) && std::isfinite(in.max_change.omega) && in.previous.isFinite()) {
     // The rate box, |v - v_prev| <= dv + K s and |w - w_prev| <= dw + K (w_bar / v_bar) s, over
     // the barrier rows loosened by the slack s0 they need without it (0 unless they conflict
     // inside the diamond): the box holds while the barriers hold as well as they can, and gives
     // way K times faster than a barrier row would be short. Safety comes first, and u is
     // continuous (s0 is the slack of a strictly convex QP); without s0 a conflict's slack
     // opened the box, and u jumped between the diamond's vertices in one step.
-    // A command held from a larger diamond (reconfigure) is first brought inside this one.
-    Twist2 previous = in.previous;
-    if (const auto inside = diamond.saturate(previous)) previous = *inside;
     boxed = qp;
     for (size_t i = 5; i < barrier_end; ++i) boxed.b[i] += slack;
     const double give_v = kRateBoxGiveWay, give_w = kRateBoxGiveWay * diamond.wMax() / diamond.vMax();
