@@ -32,7 +32,7 @@ target_link_libraries(aria_command_study amigobot_tracking_aria)
 
 if(CATKIN_ENABLE_TESTING)
   # Codec, parameters, quantisation, odometry, emulator.
-  foreach(unit packet sip robot_params wheel_command odometry emulator emulator_line emulator_firmware client_config)
+  foreach(unit packet sip robot_params wheel_command odometry emulator emulator_line emulator_firmware client_config connect_error_text)
     amigobot_add_unit_test(test_aria_${unit} test/unit/test_aria_${unit}.cpp)
     target_link_libraries(test_aria_${unit} amigobot_tracking_aria)
     target_compile_definitions(test_aria_${unit} PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

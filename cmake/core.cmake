@@ -14,6 +14,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/controller_config.cpp
   src/core/field_table.cpp
   src/core/input_file.cpp
+  src/core/error_text.cpp
   src/core/unicycle.cpp
   src/core/reference.cpp
   src/core/obstacle_tracker.cpp

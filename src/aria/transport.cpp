@@ -6,6 +6,7 @@
 
 #include <mrpt/comms/CClientTCPSocket.h>
 
+#include "amigobot_tracking/core/error_text.h"
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/link/serial_port.h"
 
@@ -29,7 +30,7 @@ class TcpTransport : public Transport {
       socket_->connect(address_.host, static_cast<unsigned short>(address_.port), kConnectTimeoutMs);
     } catch (const std::exception& e) {
       socket_.reset();
-      throw std::runtime_error(describe() + ": cannot connect: " + firstLine(e.what()));
+      throw std::runtime_error(describe() + ": cannot connect: " + core::libraryMessage(e.what()));
     }
     socket_->setTCPNoDelay(1);
   }
@@ -52,10 +53,6 @@ class TcpTransport : public Transport {
   std::string describe() const override { return "tcp " + link::formatTcpAddress(address_); }
 
  private:
-  static std::string firstLine(const std::string& s) {
-    const auto pos = s.find_last_of('\n', s.size() > 1 ? s.size() - 2 : 0);
-    return pos == std::string::npos ? s : s.substr(pos + 1);
-  }
   link::TcpAddress address_;
   std::unique_ptr<mrpt::comms::CClientTCPSocket> socket_;
 };

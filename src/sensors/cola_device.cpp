@@ -15,6 +15,7 @@
 
 #include <mrpt/comms/CClientTCPSocket.h>
 
+#include "amigobot_tracking/core/error_text.h"
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/sensors/cola_a.h"
 #include "amigobot_tracking/sensors/laser_device.h"
@@ -44,7 +45,7 @@ class ColaDevice : public LaserDevice {
       socket_.connect(tcp->host, static_cast<unsigned short>(tcp->port), 2000);
       socket_.setTCPNoDelay(1);
     } catch (const std::exception& e) {
-      throw std::runtime_error(model + " " + port + ": cannot connect");
+      throw std::runtime_error(model + " " + port + ": cannot connect: " + core::libraryMessage(e.what()));
     }
     const std::string ident = request("sRN DeviceIdent"), serial = request("sRN SerialNumber");
     identity_ = "SICK " + ident.substr(std::min(ident.size(), std::size_t{4})) + ", " + serial.substr(std::min(serial.size(), std::size_t{4}));

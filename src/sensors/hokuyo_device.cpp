@@ -14,6 +14,7 @@
 #include <mrpt/hwdrivers/CHokuyoURG.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include "amigobot_tracking/core/error_text.h"
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/scip.h"
@@ -83,7 +84,7 @@ class HokuyoDevice : public LaserDevice {
       }
       ok = urg_.turnOn();
     } catch (const std::exception& e) {
-      throw std::runtime_error(where_ + ": cannot open: " + std::string(e.what()).substr(0, 200));
+      throw std::runtime_error(where_ + ": cannot open: " + core::libraryMessage(e.what()));
     }
     const auto& i = urg_.info();
     if (!ok || i.scans_per_360deg <= 0 || i.scan_last < i.scan_first) {

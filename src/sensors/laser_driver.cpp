@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "amigobot_tracking/core/error_text.h"
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
 
@@ -71,7 +72,7 @@ bool LaserDriver::poll(LaserScanData* scan, double timeout) {
       const LaserModelEntry& entry = laserModelEntry(config_.model);
       device_ = entry.open(config_.port, config_.baud == 0 && !entry.bauds.empty() ? entry.bauds.front() : config_.baud);
     } catch (const std::exception& e) {
-      fail(e.what());
+      fail(core::libraryMessage(e.what()));
       return false;
     }
     ++counters_.opens;
@@ -97,7 +98,7 @@ bool LaserDriver::poll(LaserScanData* scan, double timeout) {
     return false;
   } catch (const std::exception& e) {
     ++counters_.link_failures;
-    fail(e.what());
+    fail(core::libraryMessage(e.what()));
     return false;
   }
   last_scan_ = systemSeconds();

@@ -1,13 +1,18 @@
 // Test helper: an executable as a child process that prints one READY line on stdout once
-// it serves; killed (SIGTERM, then SIGKILL) on scope exit.
+// it serves; killed (SIGTERM, then SIGKILL) on scope exit. Also a free TCP port and a shell
+// command run to its end with its output.
 #pragma once
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -73,5 +78,28 @@ class ChildProcess {
  private:
   pid_t pid_ = -1;
 };
+
+// A TCP port that was free a moment ago (bind to 0, read it back, release it).
+inline int freePort() {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr));
+  socklen_t len = sizeof(addr);
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
+  ::close(fd);
+  return ntohs(addr.sin_port);
+}
+
+// Runs a shell command to its end: its exit status (as from pclose, 0 on success), with
+// what it printed on stdout and stderr appended to *output.
+inline int runCommand(const std::string& command, std::string* output) {
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return -1;
+  char chunk[512];
+  for (std::size_t n; (n = std::fread(chunk, 1, sizeof(chunk), pipe)) > 0;) output->append(chunk, n);
+  return ::pclose(pipe);
+}
 
 }  // namespace amigobot_test
