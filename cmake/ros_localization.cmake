@@ -22,4 +22,7 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(test_localization_${behaviour} amigobot_tracking_localization amigobot_tracking_world)
     add_dependencies(test_localization_${behaviour} amigobot_tracking_ros_localization)
   endforeach()
+  # The standalone node run with a missing map, 20 times.
+  target_compile_definitions(test_localization_bad_param PRIVATE AMIGOBOT_LOCALIZATION_NODE="$<TARGET_FILE:localization_node>")
+  add_dependencies(test_localization_bad_param localization_node)
 endif()

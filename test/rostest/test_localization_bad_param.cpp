@@ -1,15 +1,20 @@
 // rostest: with a bad parameter (tf_rate 10 Hz, below 20) the nodelet logs a FATAL naming
 // ~tf_rate and starts nothing: no map -> odom, no services, even with scans and odometry
-// arriving; the manager survives and unloads it.
+// arriving; the manager survives and unloads it. The standalone localization_node with a
+// missing map exits 1 after its FATAL, every time, never aborting.
 #include <gtest/gtest.h>
+
+#include <sys/wait.h>
 
 #include <atomic>
 #include <mutex>
+#include <string>
 
 #include <nodelet/loader.h>
 #include <rosgraph_msgs/Log.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include "child_process.h"
 #include "synthetic_robot.h"
 
 TEST(LocalizationBadParam, NamesTheParameterAndStartsNothing) {
@@ -49,6 +54,25 @@ TEST(LocalizationBadParam, NamesTheParameterAndStartsNothing) {
   EXPECT_FALSE(ros::service::exists("localization/save_map", false));
   EXPECT_FALSE(ros::service::exists("localization/global_localization", false));
   EXPECT_TRUE(loader.unload("/localization"));
+}
+
+// Before: SIGABRT (boost::lock_error) after the FATAL in 3 of 20 runs.
+TEST(LocalizationBadParam, StandaloneNodeWithAMissingMapExitsCleanlyEveryTime) {
+  const std::string map = "/nonexistent_amigobot_maps/lab.yaml";
+  int clean = 0;
+  for (int run = 0; run < 20; ++run) {
+    std::string printed;
+    const int status = amigobot_test::runCommand(std::string(AMIGOBOT_LOCALIZATION_NODE) + " __name:=missing_map_" +
+                                                     std::to_string(run) + " _mode:=localization _map_file:=" + map,
+                                                 &printed);
+    const bool signalled = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) > 128);
+    EXPECT_FALSE(signalled) << "run " << run << " died by a signal:\n" << printed;
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << "run " << run << ": status " << status << "\n" << printed;
+    EXPECT_EQ(printed.find("terminate called"), std::string::npos) << "run " << run << ":\n" << printed;
+    EXPECT_NE(printed.find(map), std::string::npos) << "the FATAL must name the map, run " << run << ":\n" << printed;
+    clean += !signalled && WIFEXITED(status) && WEXITSTATUS(status) == 1;
+  }
+  std::printf("localization_node with a missing map: %d of 20 runs exited 1 cleanly\n", clean);
 }
 
 int main(int argc, char** argv) {
