@@ -39,6 +39,7 @@ void LaserNode::loop() {
       last_error_ = driver.lastError();
       counters_ = driver.counters();
       connected_ = driver.connected();
+      reportLink(got);
       if (got) {
         // A scan is published once and never older than the last one: after a reconnect the
         // device clock restarts, but the stamps come from the host clock.
@@ -54,6 +55,22 @@ void LaserNode::loop() {
     if (publish) scan_pub_.publish(msg);
   }
   driver.close();
+}
+
+// Diagnostics alone are easy to miss (a laser on a wrong port was silent on the console for
+// 15 s): a laser that cannot be opened or is lost is an ERROR naming its model, port and the
+// reason, at once when the reason changes, then every kLinkLogPeriod while it lasts; an INFO
+// when scans flow again.
+void LaserNode::reportLink(bool got_scan) {
+  const std::string device = "laser " + params_.driver.model + " on " + params_.driver.port;
+  if (!connected_ && !last_error_.empty()) {
+    if (link_log_.due(last_error_)) {
+      ROS_ERROR_STREAM_NAMED("laser", device << " not connected: " << last_error_ << " (reopening with back-off; no scans)");
+    }
+  } else if (got_scan && !link_log_.last().empty()) {
+    ROS_INFO_STREAM_NAMED("laser", device << ": scans again (" << identity_ << ")");
+    link_log_.clear();
+  }
 }
 
 void LaserNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

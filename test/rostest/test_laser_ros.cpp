@@ -16,6 +16,7 @@
 
 #include "amigobot_tracking/sensors/scan_source.h"
 #include "child_process.h"
+#include "rosout_log.h"
 
 using namespace amigobot_tracking;
 using namespace amigobot_tracking::sensors;
@@ -155,6 +156,42 @@ TEST(LaserRos, BadParameterStartsNothing) {
   ros::master::getTopics(topics);
   for (const auto& t : topics) EXPECT_NE(t.name, "/scan") << "a laser with a bad model must not advertise";
   EXPECT_TRUE(loader.unload("/bad_laser"));
+}
+
+// A laser that cannot be opened is an ERROR on the console naming its port and why, within
+// seconds (before: diagnostics only, nothing on the console for 15 s), and not once per retry.
+void expectLoudFailure(const std::string& model, const std::string& port, const std::string& reason) {
+  ros::NodeHandle nh;
+  e2e::RosoutLog errors(nh, rosgraph_msgs::Log::ERROR);
+  ASSERT_TRUE(errors.connected(1, 5.0)) << "not connected to /rosout";
+  const std::string name = "/missing_" + model;
+  ros::param::set(name + "/model", model);
+  ros::param::set(name + "/port", port);
+  nodelet::Loader loader(false);
+  const ros::WallTime start = ros::WallTime::now();
+  ASSERT_TRUE(loader.load(name, "amigobot_tracking/Laser", {}, {}));
+  std::string line;
+  EXPECT_TRUE(errors.waitForMentionOfAll({model, port, reason}, 3.0, 0, &line))
+      << "no ERROR on /rosout naming " << port << " and '" << reason << "'";
+  std::printf("%s: first ERROR after %.2f s: %s\n", model.c_str(), (ros::WallTime::now() - start).toSec(), line.c_str());
+  // The diagnostics say it too, and a user can read them from the shell (python3-diagnostic-msgs).
+  std::string echoed;
+  EXPECT_EQ(amigobot_test::runCommand("timeout 30 rostopic echo -n1 /diagnostics", &echoed), 0) << echoed;
+  EXPECT_NE(echoed.find(port), std::string::npos) << echoed;
+  // Reopened after 1, 2 and 4 s (back-off) with the same reason: one line, not one per try.
+  ros::WallDuration(std::max(0.0, 7.5 - (ros::WallTime::now() - start).toSec())).sleep();
+  EXPECT_EQ(errors.count(), 1u) << "the same failure must be throttled, not logged on every retry";
+  EXPECT_TRUE(loader.unload(name));
+}
+
+TEST(LaserRos, AMissingSerialDeviceIsAnErrorNamingIt) {
+  expectLoudFailure("rplidar", "/dev/ttyUSB_amigobot_missing_" + std::to_string(::getpid()), "No such file or directory");
+}
+
+TEST(LaserRos, AClosedTcpPortIsAnErrorNamingIt) {
+  // A port that was just free: nobody listens (the reason is the library's message, not a frame).
+  const std::string port = "127.0.0.1:" + std::to_string(amigobot_test::freePort());
+  expectLoudFailure("sick_tim5xx", port, "Connection refused");
 }
 
 int main(int argc, char** argv) {

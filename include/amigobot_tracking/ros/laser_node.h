@@ -16,12 +16,15 @@
 
 #include "amigobot_tracking/ros/laser_scan.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
+#include "amigobot_tracking/ros/refusal_log.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
 class LaserNode {
  public:
+  static constexpr double kLinkLogPeriod = 10.0;  // [s] the same failure again on the console
+
   // Throws std::runtime_error naming a bad parameter; then nothing is started.
   LaserNode(ros::NodeHandle nh, ros::NodeHandle pnh);
   ~LaserNode();
@@ -31,6 +34,7 @@ class LaserNode {
  private:
   void loop();  // I/O thread
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void reportLink(bool got_scan);  // the console's lines about the device (mutex_ held)
 
   LaserParams params_;
   ros::NodeHandle nh_, pnh_;
@@ -42,6 +46,7 @@ class LaserNode {
   std::string identity_, last_error_;
   sensors::LaserDriverCounters counters_;
   bool connected_ = false;
+  RefusalLog link_log_{kLinkLogPeriod};  // the reason last logged, "" while streaming
   std::uint64_t skipped_ = 0;  // scans the crop emptied
   std::atomic<bool> stop_{false};
   std::thread io_;
