@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/aria/commands.h"
+#include "amigobot_tracking/core/error_text.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -132,7 +133,7 @@ void AriaClient::run() {
       }
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(mutex_);
-      status_.last_error = e.what();
+      status_.last_error = core::libraryMessage(e.what());
     }
     if (transport_) transport_->close();
     if (stop_requested_) break;
@@ -145,7 +146,11 @@ void AriaClient::run() {
     }
     char delay[32];
     std::snprintf(delay, sizeof(delay), "%.1f", backoff);
-    log(LogLevel::kWarn, "link to the robot down (" + error + "); reconnecting in " + delay + " s");
+    // An ERROR naming the port and the reason on every failed attempt: the back-off (at most
+    // reconnect_delay_max apart) is its throttle.
+    const std::string where = transport_ ? transport_->describe() : "(no port)";
+    if (error.rfind(where + ": ", 0) == 0) error.erase(0, where.size() + 2);
+    log(LogLevel::kError, "robot link " + where + " down: " + error + "; reconnecting in " + delay + " s");
     sleepUnlessStopped(backoff);
     backoff = std::min(2.0 * backoff, config_.reconnect_delay_max);
   }

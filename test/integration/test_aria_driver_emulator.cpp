@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
 
 #include "amigobot_tracking/aria/client.h"
 #include "emulator_process.h"
@@ -299,13 +302,32 @@ TEST(AriaDriverEmulator, BareOpenAlsoOpensTheRobot) {
   EXPECT_GT(client->status().sips, 0u);
 }
 
+// The error names the port and MRPT's message (not a backtrace frame), and reaches the log as
+// an ERROR (before: a WARN ending in "[6 ]  0x7f53...").
 TEST(AriaDriverEmulator, GivesUpOnASilentPortWithAReadableError) {
   const int port = freePort();  // nobody listens here
   ClientConfig config = clientConfig("127.0.0.1:" + std::to_string(port));
-  AriaClient client(config, [](LogLevel, const std::string&) {});
+  std::mutex mutex;
+  std::vector<std::string> errors;
+  AriaClient client(config, [&](LogLevel level, const std::string& text) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (level == LogLevel::kError) errors.push_back(text);
+  });
   client.start();
   EXPECT_TRUE(waitFor([&] { return !client.status().last_error.empty(); }, 10.0));
   EXPECT_NE(client.status().last_error.find(std::to_string(port)), std::string::npos) << client.status().last_error;
+  EXPECT_NE(client.status().last_error.find("Connection refused"), std::string::npos) << client.status().last_error;
+  EXPECT_EQ(client.status().last_error.find("0x"), std::string::npos) << client.status().last_error;
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return !errors.empty();
+  }, 5.0)) << "no ERROR about the robot link";
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_NE(errors[0].find("robot link tcp 127.0.0.1:" + std::to_string(port) + " down: cannot connect: "), std::string::npos)
+        << errors[0];
+  }
   EXPECT_NE(client.status().link, LinkState::kConnected);
   client.stop();
   EXPECT_EQ(client.status().link, LinkState::kStopped);
