@@ -122,19 +122,18 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.sip_cycle), [this](const ros::TimerEvent&) { checkLink(); });
   cmd_vel_lock_ = std::make_unique<core::CommandLock>(params_.cmd_vel_source, kCommandLockRelease);
   cmd_vel_sub_ = nh_.subscribe("cmd_vel", 1, &AmigobotDriver::onCmdVel, this);
-  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>>(pnh_);
-  reconfigure_->setCallback([this](amigobot_tracking::DriverConfig& config, std::uint32_t level) {
-    onReconfigure(config, level);
-  });
+  amigobot_tracking::DriverConfig in_force;
+  fillReconfigure(aria::clientFields(), client_->motionLimits(), &in_force);
+  reconfigure_ = std::make_unique<CheckedReconfigure<amigobot_tracking::DriverConfig>>(
+      pnh_, in_force, [this](const amigobot_tracking::DriverConfig& requested) { return onReconfigure(requested); });
 }
 
-void AmigobotDriver::onReconfigure(amigobot_tracking::DriverConfig& config, std::uint32_t /*level*/) {
+std::string AmigobotDriver::onReconfigure(const amigobot_tracking::DriverConfig& requested) {
   aria::ClientConfig limits = client_->motionLimits();
-  std::string error = applyReconfigure(config, aria::clientFields(), &limits);
+  std::string error = applyReconfigure(requested, aria::clientFields(), &limits);
   if (error.empty()) error = client_->setMotionLimits(limits);
-  if (error.empty()) return;
-  ROS_WARN_STREAM("dynamic_reconfigure: " << error << "; keeping the limits in force");
-  fillReconfigure(aria::clientFields(), client_->motionLimits(), &config);
+  if (!error.empty()) ROS_ERROR_STREAM("reconfigure refused, keeping the limits in force: " << error);
+  return error;
 }
 
 AmigobotDriver::~AmigobotDriver() {

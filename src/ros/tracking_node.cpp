@@ -86,12 +86,11 @@ void TrackingNode::start() {
   enable_srv_ = pnh_.advertiseService("enable", &TrackingNode::onEnable, this);
   disable_srv_ = pnh_.advertiseService("disable", &TrackingNode::onDisable, this);
 
-  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TrackingConfig>>(reconfigure_mutex_, pnh_);
   TrackingConfig initial_gains;
   const std::string unmapped = fillReconfigure(core::controllerFields(), loop_.controller().config(), &initial_gains);
   if (!unmapped.empty()) ROS_ERROR_STREAM_NAMED("tracking", unmapped);
-  reconfigure_->updateConfig(initial_gains);
-  reconfigure_->setCallback([this](TrackingConfig& config, uint32_t level) { onReconfigure(config, level); });
+  reconfigure_ = std::make_unique<CheckedReconfigure<TrackingConfig>>(
+      pnh_, initial_gains, [this](const TrackingConfig& requested) { return onReconfigure(requested); });
 
   diagnostics_ = std::make_unique<diagnostic_updater::Updater>(nh_, pnh_, pnh_.getNamespace());
   diagnostics_->setHardwareID("amigobot_tracking");
@@ -249,22 +248,24 @@ bool TrackingNode::onDisable(std_srvs::Trigger::Request&, std_srvs::Trigger::Res
   return true;
 }
 
-void TrackingNode::onReconfigure(TrackingConfig& config, uint32_t) {
+// The same rules as at start-up. A diamond beyond the robot's is refused, not capped: /cmd_vel
+// outside the driver's clamp jumps when the driver cuts it, and capping v_max alone while the
+// rest of the set is taken would run a shape and gains the user never asked for. The whole set
+// is refused; the reconfigure client is told (checked_reconfigure.h).
+std::string TrackingNode::onReconfigure(const TrackingConfig& requested) {
   std::lock_guard<std::mutex> lock(state_mutex_);
   core::ControllerConfig candidate = loop_.nextConfig();
-  // The robot's limits cap the diamond; the capped value is shown back in the GUI.
-  config.v_max = std::min(config.v_max, node_config_.robot_v_max);
-  config.w_max = std::min(config.w_max, node_config_.robot_w_max);
-  std::string invalid = applyReconfigure(config, core::controllerFields(), &candidate);
+  std::string invalid = applyReconfigure(requested, core::controllerFields(), &candidate);
+  if (invalid.empty()) invalid = robotLimitError(node_config_, candidate);
   if (invalid.empty()) invalid = candidate.validate();
   if (invalid.empty()) invalid = core::bandReachError(candidate, 1.0 / node_config_.control_rate);
   if (!invalid.empty()) {
-    ROS_ERROR_STREAM_NAMED("tracking", "reconfigure rejected, gains unchanged: " << invalid);
-    fillReconfigure(core::controllerFields(), loop_.nextConfig(), &config);
-    return;
+    ROS_ERROR_STREAM_NAMED("tracking", "reconfigure refused, gains and limits unchanged: " << invalid);
+    return invalid;
   }
   loop_.setPendingConfig(candidate);
   ROS_INFO_STREAM_NAMED("tracking", "reconfigure: " << core::describeLiveFields(core::controllerFields(), candidate));
+  return "";
 }
 
 }  // namespace ros_layer

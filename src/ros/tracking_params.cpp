@@ -145,13 +145,22 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
   const std::string error = readParams(pnh, core::controllerFields(), c);
   if (!error.empty()) return error;
   std::ostringstream err;
-  if (c->v_max > node.robot_v_max) {
-    err << "parameter ~v_max must be <= ~robot_v_max = " << node.robot_v_max << ", got " << c->v_max;
-  } else if (c->w_max > node.robot_w_max) {
-    err << "parameter ~w_max must be <= ~robot_w_max = " << node.robot_w_max << ", got " << c->w_max;
+  const std::string outside = robotLimitError(node, *c);
+  if (!outside.empty()) {
+    err << "parameter ~" << outside;
   } else {
     const std::string band = core::bandReachError(*c, 1.0 / node.control_rate);
     if (!band.empty()) err << "parameter ~" << band << " (~control_rate = " << node.control_rate << " Hz)";
+  }
+  return err.str();
+}
+
+std::string robotLimitError(const TrackingNodeConfig& node, const core::ControllerConfig& c) {
+  std::ostringstream err;
+  if (c.v_max > node.robot_v_max) {
+    err << "v_max must be <= robot_v_max = " << node.robot_v_max << " m/s, got " << c.v_max;
+  } else if (c.w_max > node.robot_w_max) {
+    err << "w_max must be <= robot_w_max = " << node.robot_w_max << " rad/s, got " << c.w_max;
   }
   return err.str();
 }

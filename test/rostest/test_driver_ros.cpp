@@ -34,14 +34,15 @@ using namespace amigobot_test;
 
 namespace {
 
-// Sets one double of the driver's dynamic_reconfigure; returns the value now in force.
+// Sets one double of the driver's dynamic_reconfigure; returns the value now in force, NaN
+// when the driver refused the set (the call fails).
 double reconfigureDriver(const std::string& name, double value) {
   dynamic_reconfigure::Reconfigure srv;
   dynamic_reconfigure::DoubleParameter p;
   p.name = name;
   p.value = value;
   srv.request.config.doubles.push_back(p);
-  EXPECT_TRUE(ros::service::call("/driver/set_parameters", srv));
+  if (!ros::service::call("/driver/set_parameters", srv)) return std::nan("");
   for (const auto& d : srv.response.config.doubles) {
     if (d.name == name) return d.value;
   }
@@ -218,7 +219,11 @@ TEST(DriverRos, NodeletDrivesTheEmulatorAndReportsEverything) {
 
   // dynamic_reconfigure: a smaller diamond holds at once; one beyond the robot is refused.
   EXPECT_DOUBLE_EQ(reconfigureDriver("v_max", 0.1), 0.1);
-  EXPECT_DOUBLE_EQ(reconfigureDriver("v_max", 1.5), 0.1);  // above the robot's max_velocity 1.0
+  // Above the robot's max_velocity 1.0: the call fails and the limit in force stays.
+  EXPECT_TRUE(std::isnan(reconfigureDriver("v_max", 1.5))) << "a refused set must fail the reconfigure call";
+  double in_force = 0.0;
+  EXPECT_TRUE(ros::param::get("/driver/v_max", in_force));
+  EXPECT_DOUBLE_EQ(in_force, 0.1);
   cmd.linear.x = 0.3;
   double fastest = 0.0;
   for (int i = 0; i < 20; ++i) {

@@ -1,7 +1,7 @@
 // rostest: the tracking nodelet in a nodelet manager (tracking_nodelet.test), in the
 // scripted world of tracking_world.h. Checks: zero while disabled, inside the diamond when
 // enabled, one zero on disable, zero when the target tf stops and a gentle restart when it
-// comes back, virtual obstacle topic/services, reconfigure capping, markers, diagnostics.
+// comes back, virtual obstacle topic/services, reconfigure refusals, markers, diagnostics.
 // The parameter loaders' refusals: test_tracking_param_loading.cpp (same executable).
 #include <gtest/gtest.h>
 
@@ -18,6 +18,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "amigobot_tracking/RemoveVirtualObstacle.h"
+#include "child_process.h"
 #include "tracking_world.h"
 
 using namespace amigobot_tracking;
@@ -56,27 +57,60 @@ TEST(TrackingNodelet, EnabledCommandsStayInsideTheDiamond) {
   EXPECT_LT(states.back().e_norm, states.back().rho);
 }
 
-TEST(TrackingNodelet, ReconfigureIsCappedByTheRobotLimit) {
-  ASSERT_TRUE(ros::service::waitForService("tracking/set_parameters", ros::Duration(kTimeout)));
+namespace {
+
+// One set of doubles through tracking/set_parameters: true when taken, *in_force = the
+// values the node answered with.
+bool reconfigureTracking(const std::vector<std::pair<std::string, double>>& values,
+                         dynamic_reconfigure::Config* in_force = nullptr) {
   dynamic_reconfigure::Reconfigure srv;
-  dynamic_reconfigure::DoubleParameter v;
-  v.name = "v_max";
-  v.value = 2.0;  // above robot_v_max = 0.5
-  srv.request.config.doubles.push_back(v);
-  ASSERT_TRUE(ros::service::call("tracking/set_parameters", srv));
-  double applied = 0.0;
-  for (const auto& d : srv.response.config.doubles) {
-    if (d.name == "v_max") applied = d.value;
+  for (const auto& [name, value] : values) {
+    dynamic_reconfigure::DoubleParameter p;
+    p.name = name;
+    p.value = value;
+    srv.request.config.doubles.push_back(p);
   }
-  EXPECT_DOUBLE_EQ(applied, param("tracking/robot_v_max"));
+  const bool taken = ros::service::call("tracking/set_parameters", srv);
+  if (in_force) *in_force = srv.response.config;
+  return taken;
+}
+
+double entry(const dynamic_reconfigure::Config& config, const std::string& name) {
+  for (const auto& d : config.doubles) {
+    if (d.name == name) return d.value;
+  }
+  return std::nan("");
+}
+
+}  // namespace
+
+// The case: v_max 2, w_max 10 against a robot limit of 0.5 m/s. Before, v_max was
+// capped to robot_v_max without a word, w_max taken, and the call answered success.
+TEST(TrackingNodelet, ReconfigureBeyondTheRobotLimitIsRefusedAndFails) {
+  ASSERT_TRUE(ros::service::waitForService("tracking/set_parameters", ros::Duration(kTimeout)));
+  const double v_max = param("tracking/v_max"), w_max = param("tracking/w_max");
+  EXPECT_FALSE(reconfigureTracking({{"v_max", 2.0}, {"w_max", 10.0}})) << "a refused set must fail the call";
+  EXPECT_DOUBLE_EQ(param("tracking/v_max"), v_max) << "the refused set changed the parameter server";
+  EXPECT_DOUBLE_EQ(param("tracking/w_max"), w_max);
   const ros::WallTime since = ros::WallTime::now();
   ASSERT_TRUE(waitFor([&] { return world->commandsSince(since).size() >= 20; }));
   for (const auto& c : world->commandsSince(since)) {
-    EXPECT_LE(diamondNorm(c.twist, applied, param("tracking/w_max")), 1.0 + 1e-9) << c.twist;
+    EXPECT_LE(diamondNorm(c.twist, v_max, w_max), 1.0 + 1e-9) << c.twist;
   }
-  // Back to the launch value for the following tests.
-  srv.request.config.doubles[0].value = 0.3;
-  ASSERT_TRUE(ros::service::call("tracking/set_parameters", srv));
+  // A value outside the .cfg's range is refused naming the range, not clamped.
+  EXPECT_FALSE(reconfigureTracking({{"k_d", 50.0}}));
+  // What a user sees: `dynparam set` fails, naming the limit (Debian's python3 first: a
+  // python3 of pyenv or a venv on PATH has no roslib).
+  std::string printed;
+  const int status = amigobot_test::runCommand("PATH=/usr/bin:$PATH rosrun dynamic_reconfigure dynparam set /tracking \"{v_max: 2.0, w_max: 10.0}\"", &printed);
+  EXPECT_NE(status, 0) << printed;
+  EXPECT_NE(printed.find("robot_v_max"), std::string::npos) << printed;
+  // A set inside the limits is taken and answered with the values in force.
+  dynamic_reconfigure::Config answer;
+  ASSERT_TRUE(reconfigureTracking({{"v_max", 0.25}}, &answer));
+  EXPECT_DOUBLE_EQ(entry(answer, "v_max"), 0.25);
+  EXPECT_DOUBLE_EQ(param("tracking/v_max"), 0.25);
+  ASSERT_TRUE(reconfigureTracking({{"v_max", v_max}}));  // back to the launch value for the following tests
 }
 
 TEST(TrackingNodelet, DisableSendsOneZeroThenNothingMoves) {

@@ -12,7 +12,6 @@
 
 #include <amigobot_tracking/DriverConfig.h>
 #include <diagnostic_updater/diagnostic_updater.h>
-#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
@@ -21,6 +20,7 @@
 
 #include "amigobot_tracking/aria/client.h"
 #include "amigobot_tracking/core/command_lock.h"
+#include "amigobot_tracking/ros/checked_reconfigure.h"
 #include "amigobot_tracking/ros/driver_state_topics.h"
 #include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
@@ -77,8 +77,9 @@ class AmigobotDriver {
   bool resetOdometry(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   void publishSonarTransforms();
-  // dynamic_reconfigure: a set the client refuses is answered with the limits in force.
-  void onReconfigure(amigobot_tracking::DriverConfig& config, std::uint32_t level);
+  // dynamic_reconfigure: "" when the client took the set, else why it refused it (then the
+  // limits in force stay and the reconfigure call fails with the reason).
+  std::string onReconfigure(const amigobot_tracking::DriverConfig& requested);
   // motors_state, latched, published on change only; publish_mutex_ held.
   void publishMotorsStateLocked(bool enabled);
   // Without a link the motors are not enabled, whatever the last SIP said (SIP period).
@@ -100,7 +101,7 @@ class AmigobotDriver {
   std::unique_ptr<DriverStateTopics> state_topics_;  // battery_voltage, battery, stall, bumper, estop
   std::unique_ptr<aria::AriaClient> client_;
   std::unique_ptr<core::CommandLock> cmd_vel_lock_;  // one source drives (cmd_vel callback only)
-  std::unique_ptr<dynamic_reconfigure::Server<amigobot_tracking::DriverConfig>> reconfigure_;
+  std::unique_ptr<CheckedReconfigure<amigobot_tracking::DriverConfig>> reconfigure_;
 };
 
 }  // namespace ros_layer

@@ -15,7 +15,6 @@
 #include <vector>
 
 #include <diagnostic_updater/diagnostic_updater.h>
-#include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_srvs/Trigger.h>
@@ -26,6 +25,7 @@
 #include "amigobot_tracking/TrackingConfig.h"
 #include "amigobot_tracking/core/input_age.h"
 #include "amigobot_tracking/core/tracking_loop.h"
+#include "amigobot_tracking/ros/checked_reconfigure.h"
 #include "amigobot_tracking/ros/laser_obstacles.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 #include "amigobot_tracking/ros/tracking_params.h"
@@ -68,7 +68,8 @@ class TrackingNode {
   void onLocalizationStatus(const amigobot_tracking::LocalizationStatus::ConstPtr& msg);
   bool onEnable(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool onDisable(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
-  void onReconfigure(TrackingConfig& config, uint32_t level);
+  // A live set of gains and limits: "" when taken (between two steps), else why refused.
+  std::string onReconfigure(const TrackingConfig& requested);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   // With state_mutex_ held:
@@ -112,8 +113,7 @@ class TrackingNode {
   // ROS wiring (created by start()).
   ros::Publisher cmd_pub_, state_pub_, markers_pub_;
   ros::ServiceServer enable_srv_, disable_srv_;
-  boost::recursive_mutex reconfigure_mutex_;
-  std::unique_ptr<dynamic_reconfigure::Server<TrackingConfig>> reconfigure_;
+  std::unique_ptr<CheckedReconfigure<TrackingConfig>> reconfigure_;
   std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
   ros::Timer timer_;
 };

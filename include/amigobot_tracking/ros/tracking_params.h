@@ -68,6 +68,10 @@ std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* confi
 // the log says which.
 std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeConfig& node,
                                  core::ControllerConfig* config);
+// "" when the diamond (v_max, w_max) lies inside the robot's (robot_v_max, robot_w_max: the
+// launch files give the driver's clamp), else "v_max must be <= robot_v_max = ..., got ...".
+// The one rule for the start-up parameters and a live reconfigure.
+std::string robotLimitError(const TrackingNodeConfig& node, const core::ControllerConfig& config);
 std::string loadScanObstacleConfig(const ros::NodeHandle& pnh, core::ScanObstacleConfig* config);
 std::string loadObstacleTrackerConfig(const ros::NodeHandle& pnh, core::ObstacleTrackerConfig* config);
 // ~virtual_obstacles: a list of {id: str, center: [x, y], radius: r} in global_frame.
