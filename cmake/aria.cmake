@@ -13,6 +13,8 @@ amigobot_add_library(amigobot_tracking_aria
   src/aria/client_handshake.cpp
   src/aria/client_firmware.cpp
   src/aria/client_limits.cpp
+  src/aria/client_acknowledgement.cpp
+  src/aria/acknowledgement_watch.cpp
   src/aria/emulator.cpp
   src/aria/emulator_options.cpp
   src/aria/emulator_sip.cpp
@@ -32,7 +34,8 @@ target_link_libraries(aria_command_study amigobot_tracking_aria)
 
 if(CATKIN_ENABLE_TESTING)
   # Codec, parameters, quantisation, odometry, emulator.
-  foreach(unit packet sip robot_params wheel_command odometry emulator emulator_line emulator_firmware client_config connect_error_text)
+  foreach(unit packet sip robot_params wheel_command odometry emulator emulator_line emulator_firmware client_config connect_error_text
+               acknowledgement_watch)
     amigobot_add_unit_test(test_aria_${unit} test/unit/test_aria_${unit}.cpp)
     target_link_libraries(test_aria_${unit} amigobot_tracking_aria)
     target_compile_definitions(test_aria_${unit} PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -60,3 +60,8 @@ amigobot_add_e2e_test(test/e2e/rates.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/external_laser.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/two_robots.test target_tcp_port target_status_port tracker_tcp_port tracker_status_port
                       target_laser_port tracker_laser_port)
+# The ROS master killed while tracking and restarted on the same port (its own roscore, so not
+# a rostest): the driver stops, everything registers with the new master, services and
+# cmd_vel work again. Judged from the emulator's ground truth and journal (Python).
+amigobot_add_check(e2e_master_restart ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/master_restart.py
+                   --logs ${CMAKE_BINARY_DIR}/master_restart)

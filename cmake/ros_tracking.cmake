@@ -1,7 +1,8 @@
 # Layer 3, ros: the one ROS parameter reader (every ROS library and node reads its field
 # tables through it) and the one dynamic_reconfigure mapping over any field table, the tracking nodelet amigobot_tracking/Tracking and tracking_node over
 # the core, and the reference publisher (a target for simulation and the demo).
-amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp src/ros/reconfigure_mapping.cpp)
+amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp src/ros/reconfigure_mapping.cpp
+  src/ros/xmlrpc_call.cpp src/ros/master_watch.cpp)
 target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core ${catkin_LIBRARIES})
 
 amigobot_add_library(amigobot_tracking_ros
@@ -25,7 +26,7 @@ amigobot_add_tool(reference_publisher src/ros/programs/reference_publisher.cpp)
 target_link_libraries(reference_publisher amigobot_tracking_ros)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit tracking_params conversions markers rate_monitor)
+  foreach(unit tracking_params conversions markers rate_monitor master_presence)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_ros)
   endforeach()

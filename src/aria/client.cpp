@@ -17,6 +17,7 @@ constexpr double kInterByteTimeout = 0.1;  // [s] ARIA drops a partial packet af
 constexpr double kEnableRetry = 1.0;       // [s] ENABLE re-sent while the SIP disagrees
 
 double seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
+double seconds(std::chrono::steady_clock::time_point t) { return seconds(t.time_since_epoch()); }
 
 void defaultLog(LogLevel level, const std::string& text) {
   static const char* names[] = {"debug", "info", "warn", "error"};
@@ -41,7 +42,8 @@ AriaClient::AriaClient(ClientConfig config, LogFunction log)
       log_(log ? std::move(log) : LogFunction(defaultLog)),
       diamond_(1.0, 1.0),
       parser_(static_cast<std::size_t>(std::clamp(config_.max_packet_count, 3, 255))),
-      odometry_(config_.robot) {
+      odometry_(config_.robot),
+      ack_watch_(kAckProbePeriod, config_.command_ack_timeout, kAckProbeSupportWait) {
   const std::string error = config_.validate();
   if (!error.empty()) throw std::invalid_argument("AriaClient: " + error);
   diamond_ = core::DiamondSet(config_.v_max, config_.w_max);
@@ -217,6 +219,7 @@ bool AriaClient::connect() {
   sent_.reset();
   sip_times_.clear();
   last_sip_ = last_rx_ = Clock::now();
+  ack_watch_.connected(seconds(last_sip_));
   last_motion_sent_ = last_enable_sent_ = Clock::time_point{};
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -243,6 +246,7 @@ void AriaClient::serve() {
       throw std::runtime_error("no SIP for " + std::to_string(seconds(now - last_sip_)).substr(0, 4) + " s");
     }
     updateCommand(now);
+    probeAcknowledgement(now);
   }
   shutdownRobot();
 }
@@ -260,12 +264,18 @@ void AriaClient::handlePacket(const Packet& packet) {
     std::optional<ConfigPac> config = decodeConfigPac(packet);
     std::lock_guard<std::mutex> lock(mutex_);
     if (config) status_.config = std::move(config);
+  } else if (packet.type == kEncoderPacType) {
+    ack_watch_.answered(seconds(Clock::now()));
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++status_.probes_answered;
   }
 }
+
 
 void AriaClient::handleSip(const Sip& sip) {
   const auto now = Clock::now();
   last_sip_ = now;
+  ack_watch_.sipArrived(seconds(now));
   sip_times_.push_back(now);
   sip_times_.erase(sip_times_.begin(),
                    std::find_if(sip_times_.begin(), sip_times_.end(),

@@ -76,6 +76,10 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
   // Kinematics only: a SIP falling due now is left to the next advance() (the server calls
   // it right after the packets it read), not made here and lost with the reply.
   stepTo(now);
+  if (deaf_) {
+    ++counters_.unheard_packets;
+    return {};
+  }
   const std::optional<int> arg = intArgument(packet);
   const int value = arg.value_or(0);
   if (!open_) {
@@ -207,6 +211,17 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
         baud_ = kHostBauds[value];
       }
       break;
+    case Command::kEncoder: {
+      // ENCODER 1: one encoder packet now (int32 left, int32 right, LE). 2 (continuous) and
+      // 0 (stop) are not emulated: nothing streams.
+      if (value != 1) break;
+      std::vector<std::uint8_t> payload;
+      for (const double ticks : {left_ticks_, right_ticks_}) {
+        const auto t = static_cast<std::uint32_t>(static_cast<std::int32_t>(std::fmod(std::round(ticks), 2147483648.0)));
+        for (int k = 0; k < 4; ++k) payload.push_back(static_cast<std::uint8_t>(t >> (8 * k)));
+      }
+      return encodePacket(kEncoderPacType, payload);
+    }
     case Command::kConfig: {
       ConfigPac c;
       c.robot_type = "Pioneer";
@@ -287,6 +302,8 @@ void RobotEmulator::stepPhysics(double dt) {
                                                   {0.5 * (left + right) * distance_scale,
                                                    0.5 * (right - left) / b * turn_scale},
                                                   dt);
+  left_ticks_ += left * dt * 1e3 * options_.ticks_mm;
+  right_ticks_ += right * dt * 1e3 * options_.ticks_mm;
   odo_x_mm_ = odo.x * 1e3;
   odo_y_mm_ = odo.y * 1e3;
   odo_th_ = odo.theta;
@@ -300,6 +317,7 @@ void RobotEmulator::teleport(const core::Pose2& pose) {
 void RobotEmulator::stepTo(double now) {
   if (teleports_) {
     if (const std::optional<core::Pose2> pose = teleports_->take()) teleport(*pose);
+    deaf_ = teleports_->deaf();
   }
   if (last_time_ < 0.0) last_time_ = now;
   // The watchdog is checked every physics step, so a long advance() stops the robot at the

@@ -119,7 +119,7 @@ std::string parseControlLine(const std::string& line, core::Pose2* pose) {
   std::string command, extra;
   core::Pose2 p;
   if (!(in >> command) || command != "teleport") {
-    return "control line '" + line + "': unknown command (known: teleport x y theta)";
+    return "control line '" + line + "': unknown command (known: teleport x y theta, deaf on|off)";
   }
   if (!(in >> p.x >> p.y >> p.theta)) return "control line '" + line + "' is not 'teleport x y theta'";
   if (in >> extra) return "control line '" + line + "' has extra fields";
@@ -127,6 +127,16 @@ std::string parseControlLine(const std::string& line, core::Pose2* pose) {
     return "control line '" + line + "': x and y must be finite within 1e4 m, theta finite";
   }
   *pose = p;
+  return "";
+}
+
+std::string parseDeafLine(const std::string& line, bool* deaf) {
+  std::istringstream in(line);
+  std::string command, state, extra;
+  if (!(in >> command >> state) || command != "deaf" || (state != "on" && state != "off") || (in >> extra)) {
+    return "control line '" + line + "' is not 'deaf on' or 'deaf off'";
+  }
+  *deaf = state == "on";
   return "";
 }
 
@@ -186,10 +196,18 @@ bool ControlServer::serve(int fd, std::string& pending) {
   pending.append(buffer, static_cast<std::size_t>(n));
   std::size_t eol;
   while ((eol = pending.find('\n')) != std::string::npos) {
-    core::Pose2 pose;
-    const std::string error = parseControlLine(pending.substr(0, eol), &pose);
+    const std::string line = pending.substr(0, eol);
     pending.erase(0, eol + 1);
-    if (error.empty()) mailbox_.post(pose);
+    std::string error;
+    if (line.rfind("deaf", 0) == 0) {
+      bool deaf = false;
+      error = parseDeafLine(line, &deaf);
+      if (error.empty()) mailbox_.setDeaf(deaf);
+    } else {
+      core::Pose2 pose;
+      error = parseControlLine(line, &pose);
+      if (error.empty()) mailbox_.post(pose);
+    }
     const std::string reply = error.empty() ? "ok\n" : "error: " + error + "\n";
     if (::send(fd, reply.data(), reply.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(reply.size())) return false;
   }
@@ -218,11 +236,15 @@ void ControlServer::run() {
 }
 
 std::string requestTeleport(const std::string& host, int port, const core::Pose2& pose, double timeout) {
+  return requestControl(host, port, formatTeleportLine(pose), timeout);
+}
+
+std::string requestControl(const std::string& host, int port, const std::string& request, double timeout) {
   const std::string where = "emulator control socket " + host + ":" + std::to_string(port);
   try {
     std::unique_ptr<Transport> link = makeTransport(host + ":" + std::to_string(port), 0);
     link->open();
-    const std::string line = formatTeleportLine(pose) + "\n";
+    const std::string line = request + "\n";
     link->write(std::vector<std::uint8_t>(line.begin(), line.end()));
     std::string reply;
     const double deadline = steadySeconds() + timeout;

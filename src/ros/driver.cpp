@@ -50,6 +50,8 @@ const core::FieldTable<DriverParams>& driverFields() {
         field("sonar_min_range", &D::sonar_min_range, "m", "sensor_msgs/Range min_range", core::nonNegative()),
         field("cmd_vel_source", &D::cmd_vel_source, "-",
               "node whose cmd_vel is driven; empty: the first publisher until silent 1 s"),
+        field("master_timeout", &D::master_timeout, "s",
+              "ROS master unreachable this long: stop, motors disabled until enable_motors", core::boundedTimeout()),
     };
     core::include(&t, "", &D::client, aria::clientFields());
     return t;
@@ -120,6 +122,8 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   client_->setSipCallback([this](const aria::RobotState& state) { onSip(state); });
   client_->start();
   link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.sip_cycle), [this](const ros::TimerEvent&) { checkLink(); });
+  master_ = MasterWatch::shared();
+  master_timer_ = nh_.createWallTimer(ros::WallDuration(MasterWatch::kPollPeriod), [this](const ros::WallTimerEvent&) { checkMaster(); });
   cmd_vel_lock_ = std::make_unique<core::CommandLock>(params_.cmd_vel_source, kCommandLockRelease);
   cmd_vel_sub_ = nh_.subscribe("cmd_vel", 1, &AmigobotDriver::onCmdVel, this);
   amigobot_tracking::DriverConfig in_force;
@@ -141,10 +145,12 @@ AmigobotDriver::~AmigobotDriver() {
   cmd_vel_sub_.shutdown();
   diagnostics_timer_.stop();
   link_timer_.stop();
+  master_timer_.stop();
   client_->stop();
 }
 
 void AmigobotDriver::onCmdVel(const ros::MessageEvent<const geometry_msgs::Twist>& event) {
+  if (master_stop_) return;  // a peer still connected must not drive past a lost master
   const std::string& publisher = event.getPublisherName();
   // Wall time: a paused simulation clock must not hand the lock over.
   if (!cmd_vel_lock_->accept(publisher, ros::WallTime::now().toSec())) {
@@ -226,7 +232,9 @@ void AmigobotDriver::publishMotorsStateLocked(bool enabled) {
 }
 
 void AmigobotDriver::checkLink() {
-  if (client_->status().link == aria::LinkState::kConnected) return;
+  const aria::ClientStatus status = client_->status();
+  reportOneWayLink(status);
+  if (status.link == aria::LinkState::kConnected) return;
   std::lock_guard<std::mutex> lock(publish_mutex_);
   publishMotorsStateLocked(false);
 }
@@ -266,9 +274,15 @@ void AmigobotDriver::diagnose(diagnostic_updater::DiagnosticStatusWrapper& d) {
   const aria::ClientStatus s = client_->status();
   using diagnostic_msgs::DiagnosticStatus;
   const bool connected = s.link == aria::LinkState::kConnected;
+  const MasterWatch::State master = master_->state();
   if (!connected) {
     d.summaryf(DiagnosticStatus::ERROR, "not connected (%s)%s%s", aria::linkStateName(s.link).c_str(),
                s.last_error.empty() ? "" : ": ", s.last_error.c_str());
+  } else if (s.acknowledgement == aria::AcknowledgementState::kUnacknowledged) {
+    d.summaryf(DiagnosticStatus::ERROR, "one-way link: the robot has not answered for %.2f s while its SIPs arrive",
+               s.unanswered_for);
+  } else if (master_stop_) {
+    d.summaryf(DiagnosticStatus::ERROR, "stopped: ROS master unreachable for %.1f s", master.unreachable_for);
   } else if (s.robot && s.robot->battery_voltage < params_.battery_low_voltage) {
     d.summaryf(DiagnosticStatus::WARN, "battery low: %.1f V", s.robot->battery_voltage);
   } else {
@@ -294,6 +308,10 @@ void AmigobotDriver::diagnose(diagnostic_updater::DiagnosticStatusWrapper& d) {
   d.add("non-finite cmd_vel refused", s.non_finite_requests);
   d.add("command mode", aria::commandModeName(params_.client.command_mode));
   d.add("motors requested", s.motors_requested);
+  d.add("robot hears the driver", aria::acknowledgementStateName(s.acknowledgement));
+  d.add("probes sent / answered", std::to_string(s.probes_sent) + " / " + std::to_string(s.probes_answered));
+  d.add("ROS master", master.reachable ? "reachable" : "unreachable");
+  d.add("registrations with a new master", master.registrations);
   if (s.robot) {
     d.add("motors enabled", s.robot->motors_enabled);
     d.add("battery [V]", s.robot->battery_voltage);

@@ -41,6 +41,7 @@ TrackingNode::TrackingNode(ros::NodeHandle nh, ros::NodeHandle pnh, std::shared_
 
 TrackingNode::~TrackingNode() {
   timer_.stop();
+  master_timer_.stop();
   {
     std::lock_guard<std::mutex> lock(state_mutex_);
     // Leave the robot standing.
@@ -106,6 +107,9 @@ void TrackingNode::start() {
     onEnable(req, res);
   }
   timer_ = nh_.createTimer(ros::Duration(1.0 / node_config_.control_rate), &TrackingNode::onTimer, this);
+  master_ = MasterWatch::shared();
+  master_timer_ = nh_.createWallTimer(ros::WallDuration(MasterWatch::kPollPeriod),
+                                      [this](const ros::WallTimerEvent&) { checkMaster(); });
   ROS_INFO_STREAM_NAMED("tracking", "tracking " << node_config_.base_frame << " -> " << node_config_.target_frame
                                                 << " in " << node_config_.global_frame << " at "
                                                 << node_config_.control_rate << " Hz, "
@@ -246,6 +250,21 @@ bool TrackingNode::onDisable(std_srvs::Trigger::Request&, std_srvs::Trigger::Res
   res.message = "tracking disabled";
   ROS_INFO_NAMED("tracking", "tracking disabled");
   return true;
+}
+
+void TrackingNode::checkMaster() {
+  const MasterWatch::State master = master_->state();
+  if (master.registrations != master_registrations_) {
+    master_registrations_ = master.registrations;
+    ROS_INFO_STREAM_NAMED("tracking", "a new ROS master answers: registered again (" << master.last_registration
+                                                                                     << "); ~enable to track");
+  }
+  if (master.unreachable_for <= node_config_.pose_timeout) return;
+  std::lock_guard<std::mutex> lock(state_mutex_);
+  if (!started_ || !loop_.supervisor().enabled()) return;
+  publishLocked(loop_.disable(sinceEpoch(ros::Time::now())));
+  ROS_ERROR_STREAM_NAMED("tracking", "ROS master unreachable for " << master.unreachable_for
+                                                                   << " s: tracking disabled (~enable once it is back)");
 }
 
 // The same rules as at start-up. A diamond beyond the robot's is refused, not capped: /cmd_vel

@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--control-port", control_port,
                  "fault injection (0 = any free port; -1 = none): a line 'teleport x y theta' moves the true pose "
-                 "there, the odometry carries on (a kidnap); answered 'ok' or 'error: why'")
+                 "there, the odometry carries on (a kidnap); 'deaf on' loses every packet from the client (SIPs "
+                 "still flow), 'deaf off' heals it; answered 'ok' or 'error: why'")
       ->capture_default_str();
   app.add_option("--model", model, "amigo | amigo-sh (built-in parameters)")->capture_default_str();
   app.add_option("--robot-params", params_file, "robot parameter YAML instead of the built-in set");

@@ -95,6 +95,8 @@ class EmulatorProcess {
       kill(SIGKILL);
       throw std::runtime_error("amigobot_emulator did not start: '" + line + "'");
     }
+    const std::size_t control = line.find(" control=");
+    if (control != std::string::npos) control_port_ = std::atoi(line.c_str() + control + 9);
   }
 
   // Sends `signal` and returns at once (SIGSTOP / SIGCONT freeze and thaw the robot).
@@ -106,6 +108,7 @@ class EmulatorProcess {
 
   int tcpPort() const { return tcp_port_; }
   int statusPort() const { return status_port_; }
+  int controlPort() const { return control_port_; }  // -1 without --control-port
   std::string address() const { return "127.0.0.1:" + std::to_string(tcp_port_); }
 
   // Ground truth from the status socket; throws when it does not answer.
@@ -119,7 +122,7 @@ class EmulatorProcess {
 
  private:
   ChildProcess process_;
-  int tcp_port_ = -1, status_port_ = -1;
+  int tcp_port_ = -1, status_port_ = -1, control_port_ = -1;
   std::unique_ptr<StatusClient> status_;
 };
 

@@ -281,3 +281,43 @@ TEST(AriaEmulator, ATeleportMovesTheTruthButNotTheOdometry) {
   EXPECT_FALSE(mailbox.take()) << "the teleport was not taken";
   EXPECT_THROW(kidnapped.teleport({std::nan(""), 0.0, 0.0}), std::invalid_argument);
 }
+
+TEST(AriaEmulator, EncoderRequestIsAnsweredUnlessDeaf) {
+  RobotEmulator robot({});
+  TeleportMailbox control;
+  robot.setTeleportMailbox(&control);
+  openRobot(robot, 0.0);
+  robot.handle(packetOf(commandPacket(Command::kEnable, 1)), 0.1);
+  robot.handle(packetOf(commandPacket(Command::kVel, 200)), 0.1);
+  for (double t = 0.1; t < 1.0; t += 0.01) robot.advance(t);
+  const auto answer = robot.handle(packetOf(commandPacket(Command::kEncoder, 1)), 1.0);
+  ASSERT_FALSE(answer.empty());
+  const Packet p = packetOf(answer);
+  EXPECT_EQ(p.type, kEncoderPacType);
+  ASSERT_EQ(p.payload.size(), 8u);
+  const auto left = static_cast<std::int32_t>(p.payload[0] | p.payload[1] << 8 | p.payload[2] << 16 | p.payload[3] << 24);
+  EXPECT_GT(left, 0) << "the wheels turned forward";
+  // Deaf: the packet is lost (no answer, no effect), SIPs still flow, the watchdog trips.
+  control.setDeaf(true);
+  EXPECT_TRUE(robot.handle(packetOf(commandPacket(Command::kEncoder, 1)), 1.05).empty());
+  robot.handle(packetOf(commandPacket(Command::kVel, 0)), 1.05);
+  int sips = 0;
+  for (double t = 1.06; t < 3.5; t += 0.01) sips += !robot.advance(t).empty();
+  EXPECT_GT(sips, 20);
+  EXPECT_TRUE(robot.watchdogTripped());
+  EXPECT_EQ(robot.counters().unheard_packets, 2u);
+  EXPECT_NEAR(robot.trueTwist().v, 0.0, 1e-9) << "stopped by the watchdog, not by the unheard VEL 0";
+  control.setDeaf(false);
+  EXPECT_FALSE(robot.handle(packetOf(commandPacket(Command::kEncoder, 1)), 3.6).empty());
+}
+
+TEST(AriaEmulator, DeafControlLinesAreParsed) {
+  bool deaf = false;
+  EXPECT_EQ(parseDeafLine("deaf on", &deaf), "");
+  EXPECT_TRUE(deaf);
+  EXPECT_EQ(parseDeafLine("deaf off", &deaf), "");
+  EXPECT_FALSE(deaf);
+  EXPECT_NE(parseDeafLine("deaf", &deaf), "");
+  EXPECT_NE(parseDeafLine("deaf maybe", &deaf), "");
+  EXPECT_NE(parseDeafLine("deaf on now", &deaf), "");
+}

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "amigobot_tracking/aria/acknowledgement_watch.h"
 #include "amigobot_tracking/aria/odometry.h"
 #include "amigobot_tracking/aria/packet.h"
 #include "amigobot_tracking/aria/robot_params.h"
@@ -41,6 +42,8 @@ struct ClientConfig {
   double sync_timeout = 1.0;          // [s] wait for each SYNC reply (ARIA: 1000 ms)
   int max_sync_tries = 20;            // SYNC packets sent per connection attempt
   double config_timeout = 1.0;        // [s] wait for CONFIGpac; 0 = do not request it
+  double command_ack_timeout = 0.3;   // [s] ENCODER probes unanswered this long while SIPs arrive:
+                                      // the robot does not hear us (one-way link); 0 = no probes
   double link_timeout = 2.0;          // [s] without a SIP -> link lost (ARIA: 8 s). A false
                                       // alarm costs a re-handshake, which CLOSEs the robot
   double reconnect_delay_min = 0.5;   // [s] first back-off after a failure
@@ -100,6 +103,9 @@ struct ClientStatus {
   std::string last_error;
   bool motors_requested = false;
   std::optional<QuantizedCommand> last_command;
+  AcknowledgementState acknowledgement = AcknowledgementState::kOff;  // does the robot hear us?
+  double unanswered_for = 0.0;  // [s] the oldest unanswered probe's age
+  std::uint64_t probes_sent = 0, probes_answered = 0;
   std::optional<RobotState> robot;  // latest SIP
 };
 
@@ -109,6 +115,13 @@ using SipCallback = std::function<void(const RobotState&)>;
 
 class AriaClient {
  public:
+  // ENCODER 1 every 0.1 s: 9 bytes out and a 14-byte answer (90 + 140 B/s) beside 10 SIPs of
+  // up to 65 bytes (650 B/s) fits 9600 baud (960 B/s) and leaves 38400 nearly idle. With
+  // probes and SIPs every 0.1 s, a lost direction is named within period +
+  // command_ack_timeout + one SIP cycle (0.5 s with the default 0.3 s).
+  static constexpr double kAckProbePeriod = 0.1;       // [s]
+  static constexpr double kAckProbeSupportWait = 2.0;  // [s] no answer at all by then: no ENCODER in the firmware
+
   // Throws std::invalid_argument if config.validate() fails.
   explicit AriaClient(ClientConfig config, LogFunction log = {});
   ~AriaClient();
@@ -166,6 +179,8 @@ class AriaClient {
   void handlePacket(const Packet& packet);
   void handleSip(const Sip& sip);
   void updateCommand(Clock::time_point now);
+  // ENCODER 1 every kProbePeriod; the state and its changes (logged) into status_.
+  void probeAcknowledgement(Clock::time_point now);
   void applyPendingLimits();      // I/O thread
   void sendAccelerations();       // SETA/SETRA for config_'s positive accelerations
   void setLink(LinkState state);
@@ -198,6 +213,7 @@ class AriaClient {
   std::optional<QuantizedCommand> sent_;
   std::vector<Clock::time_point> sip_times_;
   std::vector<double> sonar_ranges_;
+  AcknowledgementWatch ack_watch_;
 };
 
 }  // namespace aria

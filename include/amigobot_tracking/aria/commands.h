@@ -68,6 +68,7 @@ constexpr std::uint8_t kSync2 = 2;
 constexpr std::uint8_t kSipStopped = 0x32;
 constexpr std::uint8_t kSipMoving = 0x33;
 constexpr std::uint8_t kConfigPacType = 0x20;
+constexpr std::uint8_t kEncoderPacType = 0x90;  // answer to ENCODER: int32 left, int32 right ticks
 
 inline bool isSipType(std::uint8_t type) { return type == kSipStopped || type == kSipMoving; }
 

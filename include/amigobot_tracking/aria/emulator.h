@@ -54,6 +54,7 @@ struct EmulatorCounters {
   std::uint64_t opens = 0;
   std::uint64_t closes = 0;
   std::uint64_t unknown_commands = 0;
+  std::uint64_t unheard_packets = 0;  // arrived while deaf (the driver -> robot direction cut)
   std::uint64_t commands_while_closed = 0;
 };
 
@@ -94,8 +95,10 @@ class RobotEmulator {
   // the setpoints carry on as they were (the robot was lifted and put down, its encoders saw
   // nothing). Throws std::invalid_argument for a non-finite pose.
   void teleport(const core::Pose2& pose);
-  // Teleports posted from another thread (the control socket, aria/emulator_status.h), taken
-  // at the start of every handle() and advance(); null: none.
+  // Teleports and deafness posted from another thread (the control socket,
+  // aria/emulator_status.h), taken at the start of every handle() and advance(); null: none.
+  // While deaf, handle() drops every packet unheard (no answer, the watchdog not fed) while
+  // SIPs still flow: a link whose driver -> robot direction is cut.
   void setTeleportMailbox(TeleportMailbox* mailbox) { teleports_ = mailbox; }
 
  private:
@@ -125,6 +128,8 @@ class RobotEmulator {
   double v_ = 0.0, w_ = 0.0;  // actual
   core::Pose2 pose_;          // ground truth
   double odo_x_mm_ = 0.0, odo_y_mm_ = 0.0, odo_th_ = 0.0;  // firmware odometry
+  double left_ticks_ = 0.0, right_ticks_ = 0.0;  // encoder counts (ENCODER answers them)
+  bool deaf_ = false;  // the control socket's "deaf on": every client packet is lost on the way
   double last_time_ = -1.0, last_command_ = 0.0, next_sip_ = 0.0;
   bool watchdog_tripped_ = false;
   std::size_t next_sonar_ = 0;       // position in the firing order

@@ -6,7 +6,9 @@
 // Its control socket (amigobot_emulator --control-port) injects faults into the world: a
 // line "teleport x y theta" (SI units, world frame) moves the true pose there, answered "ok"
 // or "error: <why>". Only the truth jumps: the firmware's odometry and the wheels carry on,
-// as when a robot is lifted and put down elsewhere (a kidnap). A port of its own because the
+// as when a robot is lifted and put down elsewhere (a kidnap). A line "deaf on" cuts the
+// driver -> robot direction (every client packet is lost, SIPs still flow), "deaf off" heals it.
+// A port of its own because the
 // status socket's readers (localisation, laser emulator, judges) must never be able to move
 // the robot by a stray line.
 #pragma once
@@ -71,21 +73,31 @@ class StatusClient {
 // Empty when `line` is "teleport x y theta" with finite values within 1e4 m (then *pose holds
 // it), else what is wrong.
 std::string parseControlLine(const std::string& line, core::Pose2* pose);
+// Empty when `line` is "deaf on" or "deaf off" (then *deaf holds it), else what is wrong.
+std::string parseDeafLine(const std::string& line, bool* deaf);
 // The line parseControlLine reads back exactly (%.17g), without the line break.
 std::string formatTeleportLine(const core::Pose2& pose);
 
-// Teleports posted by the control socket's thread and taken by the emulator's own loop,
-// which alone touches the RobotEmulator.
+// Teleports (and the deaf switch) posted by the control socket's thread and taken by the
+// emulator's own loop, which alone touches the RobotEmulator.
 class TeleportMailbox {
  public:
   void post(const core::Pose2& pose);
   // The latest pose posted since the last take, once.
   std::optional<core::Pose2> take();
+  void setDeaf(bool deaf) { deaf_ = deaf; }
+  bool deaf() const { return deaf_; }
 
  private:
   std::mutex mutex_;
   std::optional<core::Pose2> pending_;
+  std::atomic<bool> deaf_{false};
 };
+
+// Sends one control line (formatTeleportLine, "deaf on", ...) to the control socket at
+// host:port; empty once it said "ok", else why not (naming the socket). Waits at most
+// `timeout` [s] for the answer.
+std::string requestControl(const std::string& host, int port, const std::string& line, double timeout);
 
 // The control socket on a thread of its own (the emulator's poll loop is not ours to extend).
 class ControlServer {

@@ -5,6 +5,7 @@
 // stores the latest request.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -22,6 +23,7 @@
 #include "amigobot_tracking/core/command_lock.h"
 #include "amigobot_tracking/ros/checked_reconfigure.h"
 #include "amigobot_tracking/ros/driver_state_topics.h"
+#include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 
@@ -45,6 +47,8 @@ struct DriverParams {
   // The node whose cmd_vel is driven (its caller id, e.g. "/amigobot_manager"); "": the first
   // publisher, until it has been silent for kCommandLockRelease (core/command_lock.h).
   std::string cmd_vel_source;
+  // [s] ROS master unreachable this long: stop, motors disabled until enable_motors.
+  double master_timeout = 0.5;
 
   // "" or "key: reason": the table's bounds, non-empty frames, then client.validate() (with
   // client.robot and client.command_mode already chosen from robot_model/robot_params/command_mode).
@@ -84,6 +88,11 @@ class AmigobotDriver {
   void publishMotorsStateLocked(bool enabled);
   // Without a link the motors are not enabled, whatever the last SIP said (SIP period).
   void checkLink();
+  // ROS master gone longer than master_timeout: zero, ENABLE 0, cmd_vel ignored until a master
+  // answers again (the watch registers everything with a new one); the motors stay off.
+  void checkMaster();
+  // Commands unanswered while SIPs arrive (aria/acknowledgement_watch.h): ERROR, diagnostics.
+  void reportOneWayLink(const aria::ClientStatus& status);
 
   DriverParams params_;
   ros::NodeHandle nh_, pnh_;
@@ -96,6 +105,11 @@ class AmigobotDriver {
   diagnostic_updater::Updater updater_;
   std::unique_ptr<RateMonitor> sip_rate_;  // ticked per SIP; warns below half the robot's SIP rate
   ros::Timer diagnostics_timer_, link_timer_;
+  ros::WallTimer master_timer_;  // wall clock: a paused /clock must not hide a dead master
+  std::shared_ptr<MasterWatch> master_;
+  std::atomic<bool> master_stop_{false};  // set by checkMaster, read by onCmdVel
+  std::uint64_t master_registrations_ = 0;
+  bool one_way_reported_ = false;
   std::mutex publish_mutex_;
   int last_motors_state_ = -1;  // -1: not yet published
   std::unique_ptr<DriverStateTopics> state_topics_;  // battery_voltage, battery, stall, bumper, estop

@@ -28,6 +28,7 @@
 #include "amigobot_tracking/ros/checked_reconfigure.h"
 #include "amigobot_tracking/ros/laser_obstacles.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
+#include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/tracking_params.h"
 #include "amigobot_tracking/ros/tracking_statistics.h"
 #include "amigobot_tracking/ros/virtual_obstacle_interface.h"
@@ -70,6 +71,9 @@ class TrackingNode {
   bool onDisable(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   // A live set of gains and limits: "" when taken (between two steps), else why refused.
   std::string onReconfigure(const TrackingConfig& requested);
+  // ROS master unreachable longer than pose_timeout: tracking disabled (one zero command),
+  // ~enable needed once a master answers (the watch registers everything with a new one).
+  void checkMaster();
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   // With state_mutex_ held:
@@ -116,6 +120,9 @@ class TrackingNode {
   std::unique_ptr<CheckedReconfigure<TrackingConfig>> reconfigure_;
   std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
   ros::Timer timer_;
+  ros::WallTimer master_timer_;
+  std::shared_ptr<MasterWatch> master_;
+  std::uint64_t master_registrations_ = 0;
 };
 
 }  // namespace ros_layer

@@ -1,0 +1,54 @@
+// What a process knows about its ROS master from polling it, without ROS: reachable or not
+// (and for how long not), and whether the master that answers is a new one (another pid),
+// which has never heard of this process's topics and services. Fed by ros/master_watch.h.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace amigobot_tracking {
+namespace ros_layer {
+
+class MasterPresence {
+ public:
+  enum class Change { kNone, kLost, kBack, kNewMaster };
+
+  // One poll at `now` [s]: the master's identity (its pid) when it answered, nullopt when
+  // it did not. Returns what changed: kLost at the first failed poll after an answer,
+  // kNewMaster when an identity other than the last known answers (restarted), kBack when
+  // the same one answers again after polls failed (a network hiccup: nothing to redo).
+  Change observe(double now, const std::optional<std::string>& identity) {
+    if (!identity) {
+      const bool was_reachable = reachable_;
+      reachable_ = false;
+      return was_reachable ? Change::kLost : Change::kNone;
+    }
+    const bool was_reachable = reachable_;
+    reachable_ = true;
+    last_answer_ = now;
+    if (!identity_) {
+      identity_ = identity;
+      return Change::kNone;  // the master the process started with
+    }
+    if (*identity_ != *identity) {
+      identity_ = identity;
+      return Change::kNewMaster;
+    }
+    return was_reachable ? Change::kNone : Change::kBack;
+  }
+
+  bool everReached() const { return identity_.has_value(); }
+  bool reachable() const { return reachable_; }
+  // [s] since the last answer; 0 while reachable or before the first answer (a process
+  // that never reached its master has other problems, and ROS itself waits for it).
+  double unreachableFor(double now) const { return reachable_ || !identity_ ? 0.0 : now - last_answer_; }
+  const std::optional<std::string>& identity() const { return identity_; }
+
+ private:
+  std::optional<std::string> identity_;
+  bool reachable_ = false;
+  double last_answer_ = 0.0;
+};
+
+}  // namespace ros_layer
+}  // namespace amigobot_tracking

@@ -1,0 +1,41 @@
+// MasterPresence: what polls of the ROS master say (lost, back, a new master).
+#include <gtest/gtest.h>
+
+#include "amigobot_tracking/ros/master_presence.h"
+
+using amigobot_tracking::ros_layer::MasterPresence;
+using Change = MasterPresence::Change;
+
+TEST(MasterPresence, RestartedMasterIsANewOne) {
+  MasterPresence p;
+  EXPECT_EQ(p.observe(0.0, std::string("100")), Change::kNone);  // the master we started with
+  EXPECT_EQ(p.observe(0.1, std::string("100")), Change::kNone);
+  EXPECT_DOUBLE_EQ(p.unreachableFor(0.2), 0.0);
+  EXPECT_EQ(p.observe(0.2, std::nullopt), Change::kLost);
+  EXPECT_EQ(p.observe(0.3, std::nullopt), Change::kNone);
+  EXPECT_FALSE(p.reachable());
+  EXPECT_NEAR(p.unreachableFor(0.9), 0.8, 1e-12);  // since the last answer
+  EXPECT_EQ(p.observe(1.0, std::string("200")), Change::kNewMaster);
+  EXPECT_TRUE(p.reachable());
+  EXPECT_DOUBLE_EQ(p.unreachableFor(1.0), 0.0);
+}
+
+TEST(MasterPresence, SameMasterAfterAHiccupIsBackNotNew) {
+  MasterPresence p;
+  p.observe(0.0, std::string("100"));
+  EXPECT_EQ(p.observe(0.1, std::nullopt), Change::kLost);
+  EXPECT_EQ(p.observe(0.2, std::string("100")), Change::kBack);
+}
+
+TEST(MasterPresence, RestartBetweenTwoPollsIsStillSeen) {
+  MasterPresence p;
+  p.observe(0.0, std::string("100"));
+  EXPECT_EQ(p.observe(0.1, std::string("300")), Change::kNewMaster);
+}
+
+TEST(MasterPresence, NeverReachedIsNotUnreachableForLong) {
+  MasterPresence p;
+  EXPECT_EQ(p.observe(0.0, std::nullopt), Change::kNone);
+  EXPECT_DOUBLE_EQ(p.unreachableFor(100.0), 0.0);
+  EXPECT_FALSE(p.everReached());
+}
