@@ -15,12 +15,13 @@ amigobot_add_library(amigobot_tracking_localization
   src/localization/log_replay.cpp
   src/localization/localization_verdict.cpp
   src/localization/engine.cpp
+  src/localization/initial_pose.cpp
 )
 target_include_directories(amigobot_tracking_localization PUBLIC include)
 target_link_libraries(amigobot_tracking_localization PUBLIC amigobot_tracking_core amigobot_tracking_world mrpt::slam mrpt::maps yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit map_file localizer mapper pose_graph real_log verdict engine)
+  foreach(unit map_file localizer mapper pose_graph real_log verdict engine initial_pose)
     amigobot_add_unit_test(test_localization_${unit} test/unit/test_localization_${unit}.cpp)
     target_link_libraries(test_localization_${unit} amigobot_tracking_localization)
   endforeach()

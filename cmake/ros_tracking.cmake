@@ -15,6 +15,7 @@ amigobot_add_library(amigobot_tracking_ros
   src/ros/laser_obstacles.cpp
   src/ros/tracking_statistics.cpp
   src/ros/tracking_nodelet.cpp
+  src/ros/guarded_tf_listener.cpp
 )
 target_include_directories(amigobot_tracking_ros SYSTEM PRIVATE ${urdfdom_INCLUDE_DIRS})
 target_link_libraries(amigobot_tracking_ros amigobot_tracking_core amigobot_tracking_ros_params ${catkin_LIBRARIES} ${urdfdom_LIBRARIES})

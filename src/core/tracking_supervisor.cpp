@@ -30,10 +30,10 @@ Twist2 TrackingSupervisor::disable(double t) {
 
 std::string TrackingSupervisor::staleReason(double t, const SupervisorInputs& in) const {
   if (!std::isfinite(t)) return "time is not finite";
-  if (!in.have_pose) return "no robot pose " + config_.pose_link;
+  if (!in.have_pose) return "no robot pose " + config_.pose_link + (in.pose_problem.empty() ? "" : ": " + in.pose_problem);
   if (!in.pose_problem.empty()) return "robot pose " + config_.pose_link + ": " + in.pose_problem;
   if (!fresh(in.pose_age, config_.pose_timeout)) return "robot pose is stale (" + std::to_string(in.pose_age) + " s)";
-  if (!in.have_target) return "no target " + config_.target_link;
+  if (!in.have_target) return "no target " + config_.target_link + (in.target_problem.empty() ? "" : ": " + in.target_problem);
   if (!in.target_problem.empty()) return "target " + config_.target_link + ": " + in.target_problem;
   if (!fresh(in.target_age, config_.pose_timeout)) return "target is stale (" + std::to_string(in.target_age) + " s)";
   if (config_.require_scan && !in.scan_problem.empty()) return "scan: " + in.scan_problem;

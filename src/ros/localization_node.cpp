@@ -8,6 +8,7 @@
 #include "amigobot_tracking/LocalizationStatus.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 
+#include "amigobot_tracking/localization/initial_pose.h"
 #include "amigobot_tracking/localization/poses.h"
 #include "amigobot_tracking/ros/localization_messages.h"
 #include "amigobot_tracking/ros/param_reader.h"
@@ -152,6 +153,11 @@ void LocalizationNode::tfLoop() {
 }
 
 void LocalizationNode::publishTransform(const core::Pose2& map_to_odom) {
+  if (!map_to_odom.isFinite()) {  // never published as NaN: tf readers keep the last good one and age it
+    ROS_ERROR_STREAM_THROTTLE_NAMED(2.0, "localization", "map -> odom not published: not finite (" << map_to_odom.x << ", "
+                                                              << map_to_odom.y << ", " << map_to_odom.theta << ")");
+    return;
+  }
   geometry_msgs::TransformStamped t;
   t.header.stamp = ros::Time::now() + ros::Duration(config_.transform_tolerance);
   if (!tf_gate_.pass(t.header.stamp)) return;  // the same stamp again: tf2 would warn TF_REPEATED_DATA
@@ -167,6 +173,10 @@ void LocalizationNode::publishPose(const ros::Time& stamp) {
   msg.header.frame_id = config_.global_frame;
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    if (!output_.estimate.pose.isFinite() || !output_.estimate.covariance.allFinite()) {
+      ROS_ERROR_STREAM_THROTTLE_NAMED(2.0, "localization", "~pose not published: the estimate is not finite");
+      return;
+    }
     msg.pose = toPoseWithCovariance(output_.estimate.pose, output_.estimate.covariance);
   }
   pose_pub_.publish(msg);
@@ -207,14 +217,29 @@ void LocalizationNode::publishMap(const localization::OccupancyMap& map) {
 }
 
 void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
-  if (!msg->header.frame_id.empty() && msg->header.frame_id != config_.global_frame) {
-    ROS_WARN_STREAM_NAMED("localization", "/initialpose ignored: frame '" << msg->header.frame_id << "' is not '"
-                                                                          << config_.global_frame << "'");
+  const auto& p = msg->pose.pose.position;
+  const auto& o = msg->pose.pose.orientation;
+  const core::Translation3 position{p.x, p.y, p.z};
+  const core::Quaternion4 orientation{o.x, o.y, o.z, o.w};
+  localization::OccupancyMap map;
+  {
+    std::lock_guard<std::mutex> engine(engine_mutex_);
+    if (!engine_->mapGrows()) map = engine_->map();  // the bounds (a growing map has none yet)
+  }
+  const std::string bad = localization::initialPoseProblem(msg->header.frame_id, config_.global_frame, position, orientation, map);
+  if (!bad.empty()) {
+    ROS_WARN_STREAM_NAMED("localization", "/initialpose ignored, the pose is unchanged: " << bad);
     return;
   }
   core::Pose2 odom_base;
   if (!lookup(config_.odom_frame, config_.base_frame, ros::Time(0), &odom_base)) return;
-  const core::Pose2 pose = toPose2(msg->pose.pose);
+  geometry_msgs::Pose unit = msg->pose.pose;
+  const core::Quaternion4 q = core::normalised(orientation);
+  unit.orientation.x = q.x;
+  unit.orientation.y = q.y;
+  unit.orientation.z = q.z;
+  unit.orientation.w = q.w;
+  const core::Pose2 pose = toPose2(unit);
   localization::PoseEstimate estimate;
   {
     std::lock_guard<std::mutex> engine(engine_mutex_);

@@ -33,10 +33,8 @@ core::SupervisorConfig supervisorConfigOf(const TrackingNodeConfig& node) {
 
 TrackingNode::TrackingNode(ros::NodeHandle nh, ros::NodeHandle pnh, std::shared_ptr<tf2_ros::Buffer> tf)
     : nh_(nh), pnh_(pnh), tf_(std::move(tf)) {
-  if (!tf_) {
-    tf_ = std::make_shared<tf2_ros::Buffer>();
-    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_, nh_, true);
-  }
+  own_tf_ = !tf_;
+  if (own_tf_) tf_ = std::make_shared<tf2_ros::Buffer>();
 }
 
 TrackingNode::~TrackingNode() {
@@ -67,6 +65,7 @@ void TrackingNode::start() {
   loop_config.pose_jump_limit_is_rho_inf = true;  // a localisation jump larger than the tracking bound stops
   loop_config.target_exclusion_radius = node_config_.target_exclusion_radius;
   loop_ = core::TrackingLoop(loop_config);
+  if (own_tf_) tf_listener_ = std::make_unique<GuardedTfListener>(*tf_, nh_, node_config_.future_stamp_tolerance);
   epoch_ = ros::Time::now();
   pose_age_ = core::InputAgeTracker(node_config_.future_stamp_tolerance);
   target_age_ = core::InputAgeTracker(node_config_.future_stamp_tolerance);
@@ -144,6 +143,17 @@ TrackingNode::Lookup TrackingNode::lookup(const std::string& frame, const ros::T
   } catch (const tf2::TransformException& ex) {
     result.error = ex.what();
   }
+  if (!tf_listener_) return result;
+  // Skewed clocks are named as such: samples arriving at a healthy rate but stamped old (or
+  // dropped as stamped ahead) read as "clock ... behind/ahead", not as a dead publisher. The
+  // robot still stops once the age passes pose_timeout: the stamps cannot be trusted.
+  const core::FrameClock clock =
+      tf_listener_->clockOf(result.ok ? tf_listener_->chain(node_config_.global_frame, frame) : std::vector<std::string>{frame}, now);
+  result.clock = clock.problem;
+  const bool alive = clock.since_arrival >= 0.0 && clock.since_arrival <= node_config_.pose_timeout;
+  if (!clock.problem.empty() && alive && (!result.ok || !result.problem.empty() || !(result.age <= node_config_.pose_timeout))) {
+    result.problem = clock.problem;
+  }
   return result;
 }
 
@@ -200,6 +210,7 @@ void TrackingNode::controlCycle(const ros::Time& now) {
     scan_age_ = laser_->update(now);
     last_pose_age_ = pose.ok ? pose.age : -1.0;
     last_target_age_ = target.ok ? target.age : -1.0;
+    noteClocksLocked(pose, target);
     const core::TrackingLoopResult r = loop_.step(loopInputsLocked(now, pose, target));
     virtual_count_ = r.virtual_disks;
     if (r.publish) {
@@ -214,6 +225,14 @@ void TrackingNode::controlCycle(const ros::Time& now) {
     stats_.endCycle(sinceEpoch(now), wall_start);
   }
   if (diagnostics_) diagnostics_->update();  // rate-limited by the updater; takes the lock itself
+}
+
+void TrackingNode::noteClocksLocked(const Lookup& pose, const Lookup& target) {
+  clock_warning_ = !target.clock.empty() ? target.clock : pose.clock;
+  // Off but not (yet) past pose_timeout: tracking goes on with less margin; say so. (Past it,
+  // the clock is the stop's reason and logStopLocked says it.)
+  const bool stop_reason = clock_warning_ == target.problem || clock_warning_ == pose.problem;
+  if (!clock_warning_.empty() && !stop_reason) ROS_WARN_STREAM_THROTTLE_NAMED(10.0, "tracking", "tracking: " << clock_warning_);
 }
 
 void TrackingNode::publishLocked(const core::Twist2& u) {

@@ -54,7 +54,11 @@ void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status)
   if (!enabled) {
     status.summary(DiagnosticStatus::OK, "disabled");
   } else if (loop_.supervisor().state() == core::TrackingSupervisor::State::kTracking) {
-    status.summary(DiagnosticStatus::OK, "tracking");
+    if (clock_warning_.empty()) {
+      status.summary(DiagnosticStatus::OK, "tracking");
+    } else {
+      status.summary(DiagnosticStatus::WARN, "tracking; " + clock_warning_);
+    }
   } else {
     status.summary(DiagnosticStatus::WARN, "zero command: " + loop_.supervisor().status());
   }
@@ -65,6 +69,7 @@ void TrackingNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status)
   cmd_vel_rate_->report(status, enabled);  // silent while disabled, by design
   status.add("robot pose age [s]", last_pose_age_);
   status.add("target age [s]", last_target_age_);
+  status.add("clocks", clock_warning_.empty() ? std::string("no offset beyond future_stamp_tolerance") : clock_warning_);
   status.add("scan age [s]", scan_age_);
   status.add("last scan refused", laser_ ? laser_->refusal() : std::string());
   status.add("saturation ratio", stats_.saturationRatio());

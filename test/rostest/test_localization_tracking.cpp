@@ -1,13 +1,15 @@
 // rostest: the Localization nodelet on a known map (the synthetic room, scans and odometry
 // from the test): map -> odom at >= 20 Hz stamped ahead, the pose converges from a wrong
 // initial pose, /initialpose moves the estimate, ~global_localization finds a kidnapped robot,
-// ~pose and /diagnostics report it.
+// ~pose and /diagnostics report it; bad /initialpose messages are refused.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
@@ -155,6 +157,74 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
     EXPECT_EQ(diagnostics.rfind("localized|", 0), 0u) << diagnostics;  // not "not localized: ..."
     EXPECT_NE(diagnostics.find("relocalisations=2"), std::string::npos) << diagnostics;
   }
+  EXPECT_TRUE(loader.unload("/localization"));
+  std::filesystem::remove(map_file);
+  std::filesystem::remove(map_file.substr(0, map_file.size() - 5) + ".pgm");
+}
+
+// /initialpose is checked where it enters: NaN x, a NaN quaternion, the all-zero quaternion of
+// a hand-written message, another frame, a pose far outside the map are each refused; the
+// estimate stays where the scans put it and nothing is published as NaN (the old node took
+// the NaN ones and published map -> odom as NaN).
+TEST(LocalizationNodelet, BadInitialPosesAreRefused) {
+  const std::string map_file = "/tmp/amigobot_localization_rostest_bad_" + std::to_string(::getpid()) + ".yaml";
+  loc::saveMap(map_file, roomMap());
+  ros::NodeHandle nh;
+  std::atomic<int> nan_transforms{0}, nan_poses{0};
+  ros::Subscriber tf_sub = nh.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr& msg) {
+    for (const auto& t : msg->transforms) {
+      const auto& p = t.transform.translation;
+      const auto& q = t.transform.rotation;
+      nan_transforms += !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(q.z) && std::isfinite(q.w));
+    }
+  });
+  ros::Subscriber pose_sub = nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+      "/localization/pose", 10, [&](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+        nan_poses += !(std::isfinite(m->pose.pose.position.x) && std::isfinite(m->pose.pose.orientation.w));
+      });
+  ros::param::set("/localization/mode", "localization");
+  ros::param::set("/localization/map_file", map_file);
+  ros::param::set("/localization/initial_pose/x", kTruth.x);
+  ros::param::set("/localization/initial_pose/y", kTruth.y);
+  ros::param::set("/localization/initial_pose/yaw", kTruth.theta);
+  SyntheticRobot robot(kTruth, kMapToOdom);
+  Fixture f;
+  nodelet::Loader loader(false);
+  ASSERT_TRUE(loader.load("/localization", "amigobot_tracking/Localization", {}, {}));
+  ASSERT_TRUE(f.near(kTruth, 0.05, 0.03, 10.0)) << "not localised before the bad poses";
+  robot.scans(false);  // an accepted pose would stay: no scan pulls it back
+  ros::WallDuration(0.3).sleep();
+  const std::optional<Pose2> held = f.estimate();
+  ASSERT_TRUE(held.has_value());
+
+  ros::Publisher initial = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("/initialpose", 1, true);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  struct Bad {
+    const char* what;
+    std::string frame;
+    double x, qz, qw;
+  };
+  const Bad bad[] = {{"NaN x", "map", nan, 0.0, 1.0},
+                     {"NaN quaternion", "map", 1.0, nan, nan},
+                     {"all-zero quaternion", "map", 1.5, 0.0, 0.0},
+                     {"another frame", "odom", 1.5, 0.0, 1.0},
+                     {"far outside the map", "map", 60.0, 0.0, 1.0}};
+  for (const Bad& b : bad) {
+    geometry_msgs::PoseWithCovarianceStamped msg;
+    msg.header.frame_id = b.frame;
+    msg.header.stamp = ros::Time::now();
+    msg.pose.pose.position.x = b.x;
+    msg.pose.pose.position.y = kTruth.y;
+    msg.pose.pose.orientation.x = b.what == std::string("NaN quaternion") ? nan : 0.0;
+    msg.pose.pose.orientation.z = b.qz;
+    msg.pose.pose.orientation.w = b.qw;
+    initial.publish(msg);
+    ros::WallDuration(0.5).sleep();
+    EXPECT_TRUE(f.near(*held, 0.01, 0.01, 0.5)) << b.what << " moved the estimate";
+  }
+  EXPECT_EQ(nan_transforms.load(), 0) << "tf published as NaN";
+  EXPECT_EQ(nan_poses.load(), 0) << "~pose published as NaN";
+  robot.scans(true);
   EXPECT_TRUE(loader.unload("/localization"));
   std::filesystem::remove(map_file);
   std::filesystem::remove(map_file.substr(0, map_file.size() - 5) + ".pgm");

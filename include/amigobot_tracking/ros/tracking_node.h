@@ -19,13 +19,13 @@
 #include <sensor_msgs/LaserScan.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 
 #include "amigobot_tracking/LocalizationStatus.h"
 #include "amigobot_tracking/TrackingConfig.h"
 #include "amigobot_tracking/core/input_age.h"
 #include "amigobot_tracking/core/tracking_loop.h"
 #include "amigobot_tracking/ros/checked_reconfigure.h"
+#include "amigobot_tracking/ros/guarded_tf_listener.h"
 #include "amigobot_tracking/ros/laser_obstacles.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 #include "amigobot_tracking/ros/master_watch.h"
@@ -38,7 +38,8 @@ namespace ros_layer {
 
 class TrackingNode {
  public:
-  // `tf` may be shared with the host; null creates a buffer and a listener.
+  // `tf` may be shared with the host (then the host feeds it and no clock is judged); null
+  // creates a buffer and a GuardedTfListener (start(): it needs future_stamp_tolerance).
   TrackingNode(ros::NodeHandle nh, ros::NodeHandle pnh, std::shared_ptr<tf2_ros::Buffer> tf = nullptr);
   ~TrackingNode();
   TrackingNode(const TrackingNode&) = delete;
@@ -58,6 +59,7 @@ class TrackingNode {
     geometry_msgs::TransformStamped transform;
     double age = 0.0;     // [s] on this node's clock (core/input_age.h)
     std::string problem;  // why the stamp is not trusted, or ""
+    std::string clock;    // the publisher's clock is off (core/clock_offset.h), or ""
     std::string error;
   };
   // `age` tracks the stream's arrivals (a frozen transform ages even when stamped ahead).
@@ -80,6 +82,7 @@ class TrackingNode {
   core::TrackingLoopInputs loopInputsLocked(const ros::Time& now, const Lookup& pose, const Lookup& target);
   void publishLocked(const core::Twist2& u);  // cmd_vel
   void logStopLocked() const;                 // why the supervisor sent zero (throttled)
+  void noteClocksLocked(const Lookup& pose, const Lookup& target);  // clock_warning_, WARN (throttled)
   void publishStateLocked(const ros::Time& now, const Lookup& pose, bool have_output,
                           const core::ControllerOutput& out);
   void publishMarkersLocked(const ros::Time& now, const Lookup& pose, bool have_output,
@@ -88,7 +91,8 @@ class TrackingNode {
 
   ros::NodeHandle nh_, pnh_;
   std::shared_ptr<tf2_ros::Buffer> tf_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  bool own_tf_ = false;                             // tf_ was created here: start() makes tf_listener_
+  std::unique_ptr<GuardedTfListener> tf_listener_;  // null when the host feeds tf_
 
   TrackingNodeConfig node_config_;
   core::ScanObstacleConfig scan_config_;
@@ -105,6 +109,7 @@ class TrackingNode {
   ros::Time epoch_;
   core::ControllerOutput last_output_;
   double last_pose_age_ = -1.0, last_target_age_ = -1.0, scan_age_ = -1.0;  // [s], -1: none
+  std::string clock_warning_;  // a pose or target publisher's clock is off (core/clock_offset.h), or ""
   core::InputAgeTracker pose_age_, target_age_;
   TrackingStatistics stats_;
   std::unique_ptr<RateMonitor> control_rate_, cmd_vel_rate_;
