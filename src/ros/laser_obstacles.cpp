@@ -9,12 +9,14 @@ namespace ros_layer {
 
 LaserObstacles::LaserObstacles(tf2_ros::Buffer& tf, std::string global_frame, const core::ScanObstacleConfig& scan,
                                const core::ObstacleTrackerConfig& tracker, ros::Time epoch,
-                               double future_stamp_tolerance)
+                               double future_stamp_tolerance, const LaserHealthConfig& health)
     : tf_(tf),
       global_frame_(std::move(global_frame)),
       config_(scan),
       epoch_(epoch),
       tracker_(tracker),
+      rate_(health.rate),
+      open_space_(health.open_space),
       age_(future_stamp_tolerance) {}
 
 LaserObstacles::~LaserObstacles() {
@@ -40,20 +42,25 @@ void LaserObstacles::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
   std::lock_guard<std::mutex> lock(latest_mutex_);
   latest_ = scan;
   latest_arrival_ = ros::Time::now();
+  rate_.arrived(latest_arrival_.toSec(), scan->scan_time);
 }
 
 double LaserObstacles::update(const ros::Time& now) {
   sensor_msgs::LaserScan::ConstPtr scan;
   ros::Time arrival;
+  std::string rate_problem;
   {
     std::lock_guard<std::mutex> lock(latest_mutex_);
     scan = latest_;
     arrival = latest_arrival_;
+    rate_problem = rate_.problem();
   }
   if (scan && scan != processed_) {
     processed_ = scan;
-    const std::string refusal = core::scanBeamsProblem(toScanGeometry(*scan), scan->angle_max, scan->ranges.data(),
-                                                       scan->ranges.size());
+    std::string refusal = core::scanBeamsProblem(toScanGeometry(*scan), scan->angle_max, scan->ranges.data(),
+                                                 scan->ranges.size());
+    if (refusal.empty() && !open_space_)
+      refusal = core::blindScanProblem(toScanGeometry(*scan), scan->ranges.data(), scan->ranges.size());
     if (!refusal.empty()) {
       refuse(refusal, scan->header.frame_id);
     } else {
@@ -74,14 +81,22 @@ double LaserObstacles::update(const ros::Time& now) {
     }
   }
   const core::InputAge age = age_.at(now.toSec());
-  scan_problem_ = age.problem;
+  if (rate_problem.empty()) {
+    rate_log_.clear();
+  } else if (rate_log_.due(rate_problem, "scan rate")) {  // the measured figure changes every scan
+    ROS_ERROR("tracking: %s", rate_problem.c_str());
+  }
+  scan_problem_ = age.problem.empty() ? rate_problem : age.problem;
   return age.have ? age.age : -1.0;
 }
 
 void LaserObstacles::refuse(const std::string& why, const std::string& frame) {
   // A refused scan does not refresh the scan's age, so with require_scan the robot stops
   // after scan_timeout.
-  if (refusal_.due(why)) ROS_ERROR("tracking: scan refused (frame '%s'): %s", frame.c_str(), why.c_str());
+  // A blind laser's beam counts change with every scan: one kind, logged once per period.
+  static const std::string blind = "laser sees nothing";
+  if (refusal_.due(why, why.compare(0, blind.size(), blind) == 0 ? blind : why))
+    ROS_ERROR("tracking: scan refused (frame '%s'): %s", frame.c_str(), why.c_str());
 }
 
 void LaserObstacles::obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const {

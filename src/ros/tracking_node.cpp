@@ -78,8 +78,12 @@ void TrackingNode::start() {
   markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
   virtual_obstacles_ = std::make_unique<VirtualObstacleInterface>(nh_, pnh_, *tf_, node_config_.global_frame,
                                                                   node_config_.clicked_point_radius, initial);
+  LaserHealthConfig health;
+  health.open_space = node_config_.open_space;
+  health.rate.min_fraction = node_config_.min_scan_rate_fraction;
+  health.rate.expected_rate = node_config_.expected_scan_rate;
   laser_ = std::make_unique<LaserObstacles>(*tf_, node_config_.global_frame, scan_config_, tracker_config_, epoch_,
-                                            node_config_.future_stamp_tolerance);
+                                            node_config_.future_stamp_tolerance, health);
   laser_->subscribe(nh_);
   localization_sub_ = nh_.subscribe("localization_status", 5, &TrackingNode::onLocalizationStatus, this);
 

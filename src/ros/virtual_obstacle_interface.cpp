@@ -13,6 +13,11 @@ namespace ros_layer {
 namespace {
 
 constexpr uint8_t kDeleteMenuEntry = 1;
+// ~virtual_obstacle's subscriber queue: a script may publish a whole course of obstacles in
+// one burst, and a queue of 10 kept 72 of 2000. The callback only edits the set (the array
+// and the markers go out at most every kPublishPeriod), so a burst this long is held.
+constexpr uint32_t kObstacleQueue = 10000;
+constexpr double kPublishPeriod = 0.1;  // [s]
 
 visualization_msgs::InteractiveMarker interactiveMarkerOf(const core::VirtualObstacle& o, const std::string& frame) {
   visualization_msgs::InteractiveMarker im;
@@ -69,7 +74,14 @@ VirtualObstacleInterface::VirtualObstacleInterface(ros::NodeHandle nh, ros::Node
     std::lock_guard<std::mutex> lock(mutex_);
     publishLocked();
   }
-  obstacle_sub_ = pnh.subscribe("virtual_obstacle", 10, &VirtualObstacleInterface::onObstacle, this);
+  obstacle_sub_ = pnh.subscribe("virtual_obstacle", kObstacleQueue, &VirtualObstacleInterface::onObstacle, this);
+  // Re-publishing the whole set per message made a burst quadratic (2000 arrays of up to 2000).
+  publish_timer_ = pnh.createWallTimer(ros::WallDuration(kPublishPeriod), [this](const ros::WallTimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!changed_) return;
+    changed_ = false;
+    publishLocked();
+  });
   clicked_sub_ = nh.subscribe("clicked_point", 10, &VirtualObstacleInterface::onClickedPoint, this);
   remove_srv_ = pnh.advertiseService("remove_virtual_obstacle", &VirtualObstacleInterface::onRemove, this);
   clear_srv_ = pnh.advertiseService("clear_virtual_obstacles", &VirtualObstacleInterface::onClear, this);
@@ -86,6 +98,7 @@ core::VirtualObstacleSet VirtualObstacleInterface::snapshot() const {
 }
 
 void VirtualObstacleInterface::publishLocked(bool refresh_interactive) {
+  changed_ = false;
   VirtualObstacleArray array;
   array.header.stamp = ros::Time::now();
   array.header.frame_id = global_frame_;
@@ -118,7 +131,7 @@ void VirtualObstacleInterface::onObstacle(const VirtualObstacle::ConstPtr& msg) 
   }
   ROS_INFO_STREAM_NAMED("tracking", "virtual obstacle '" << o.id << "' "
                                                          << (change == core::VirtualObstacleSet::Change::kAdded ? "added" : "updated"));
-  publishLocked();
+  changed_ = true;  // published by publish_timer_
 }
 
 void VirtualObstacleInterface::onClickedPoint(const geometry_msgs::PointStamped::ConstPtr& msg) {

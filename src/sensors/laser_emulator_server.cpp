@@ -176,6 +176,9 @@ void LaserEmulatorServer::tick() {
   double t = 0.0;
   if (!pose_(&base, &t)) return;
   pending_ = source_.cast(base, t);
+  if (blind_ && *blind_) pending_.ranges.assign(pending_.ranges.size(), std::numeric_limits<float>::infinity());
+  // Half the rate: this scan is measured (the device's clock goes on) but never leaves.
+  if (halve_ && *halve_ && cast_++ % 2 == 1) return;
   // A RPLIDAR streams each node as it is measured: its revolution leaves at once, paced.
   pending_due_ = model_.protocol == Protocol::kRplidar ? now : now + model_.timeIncrement() * (model_.beams() - 1);
   has_pending_ = true;

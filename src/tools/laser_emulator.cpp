@@ -28,6 +28,12 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 void onSignal(int) { g_stop = true; }
+// Live faults for the e2e tests (lock-free atomics: safe in a signal handler).
+std::atomic<bool> g_blind{false}, g_halve{false};
+void onToggle(int signal) {
+  std::atomic<bool>& fault = signal == SIGUSR1 ? g_blind : g_halve;
+  fault.store(!fault.load());
+}
 
 }  // namespace
 
@@ -72,7 +78,9 @@ int main(int argc, char** argv) {
   app.add_option("--fault", fault, "none | malformed | truncated | checksum | stall | disconnect")->capture_default_str();
   app.add_option("--fault-every", server.fault_every, "apply the fault to every n-th streamed scan")->capture_default_str();
   app.add_option("--stall-time", server.stall_time, "silence of one stall [s]")->capture_default_str();
-  app.footer("Prints 'READY tcp=PORT pty=PATH' on stdout once it listens.");
+  app.footer("Prints 'READY tcp=PORT pty=PATH' on stdout once it listens. Live faults: SIGUSR1 switches a blind "
+             "laser on or off (every beam reports no return), SIGUSR2 half the scan rate (every other scan "
+             "not sent).");
   try {
     app.parse(core::ownArguments(argc, argv));
   } catch (const CLI::ParseError& e) {
@@ -112,6 +120,9 @@ int main(int argc, char** argv) {
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
     std::signal(SIGPIPE, SIG_IGN);
+    io.setLiveFaults(&g_blind, &g_halve);
+    std::signal(SIGUSR1, onToggle);
+    std::signal(SIGUSR2, onToggle);
     std::printf("READY tcp=%d pty=%s\n", io.tcpPort(), io.ptyName().empty() ? "-" : io.ptyName().c_str());
     std::fflush(stdout);
     io.run(g_stop);

@@ -138,3 +138,41 @@ TEST(E2E, BadVirtualObstaclesAreRefusedByNameAndNothingStops) {
               "%.0f ms, driving again %.0f ms after the clear\n", slowest, 1e3 * (zero_at - before.t),
               1e3 * (stopped.t - before.t), 1e3 * (resumed.t - cleared.t));
 }
+
+// Issue 36 item 7: a burst of 2000 virtual obstacles (a script laying out a course) on
+// ~virtual_obstacle: a queue of 10 kept 72 and dropped the rest without a word. All 2000 must
+// reach the published set, and the robot keeps tracking (they lie far from the course).
+TEST(E2E, ABurstOfVirtualObstaclesIsHeld) {
+  constexpr std::size_t kBurst = 2000;
+  ros::NodeHandle nh;
+  e2e::GroundTruth truth(requiredParam<int>("status_port"));
+  CircleTarget target;
+  // The publisher holds the whole burst: any loss is the subscriber's.
+  ros::Publisher obstacles = nh.advertise<VirtualObstacle>("/tracking/virtual_obstacle", kBurst);
+  std::atomic<std::size_t> published_count{0};
+  ros::Subscriber published = nh.subscribe<VirtualObstacleArray>(
+      "/tracking/virtual_obstacles", 10, [&](const VirtualObstacleArray::ConstPtr& a) { published_count = a->obstacles.size(); });
+  ASSERT_TRUE(truth.waitForRobotReady(60.0));
+  ASSERT_TRUE(e2e::waitFor([&] { return truth.truth().v > 0.1; }, 60.0)) << "the robot never drove";
+  ASSERT_TRUE(e2e::waitFor([&] { return obstacles.getNumSubscribers() > 0; }, 10.0));
+  ros::Duration(1.0).sleep();
+
+  const ros::WallTime start = ros::WallTime::now();
+  for (std::size_t i = 0; i < kBurst; ++i) {  // a 20 m x 8 m grid 30 m from the course
+    obstacles.publish(bad("burst_" + std::to_string(i), 30.0 + 0.4 * (i % 50), 0.4 * (i / 50), 0.1, "").msg);
+  }
+  const bool all = e2e::waitFor([&] { return published_count.load() >= kBurst; }, 20.0);
+  const double took = (ros::WallTime::now() - start).toSec();
+  EXPECT_TRUE(all) << "the published set holds " << published_count.load() << " of the " << kBurst << " obstacles";
+  EXPECT_EQ(published_count.load(), kBurst);
+  double slowest = 1e9;
+  e2e::waitFor([&] {
+    slowest = std::min(slowest, truth.truth().v);
+    return false;
+  }, 2.0);
+  EXPECT_GT(slowest, 0.05) << "the robot slowed down or stopped with the burst's obstacles far away";
+  RecordProperty("burst_held", static_cast<int>(published_count.load()));
+  RecordProperty("burst_ms", static_cast<int>(1e3 * took));
+  std::printf("burst of %zu virtual obstacles: %zu in the published set after %.2f s; slowest true speed after it "
+              "%.3f m/s\n", kBurst, published_count.load(), took, slowest);
+}

@@ -17,17 +17,25 @@
 
 #include "amigobot_tracking/core/input_age.h"
 #include "amigobot_tracking/core/obstacle_tracker.h"
+#include "amigobot_tracking/core/scan_health.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 #include "amigobot_tracking/ros/refusal_log.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
+// Is the laser still seeing (core/scan_health.h)?
+struct LaserHealthConfig {
+  bool open_space = false;  // a scan with no return is an empty room, not a blind laser
+  core::ScanRateConfig rate;
+};
+
 class LaserObstacles {
  public:
   // Times [s] given to the tracker count from `epoch`.
   LaserObstacles(tf2_ros::Buffer& tf, std::string global_frame, const core::ScanObstacleConfig& scan,
-                 const core::ObstacleTrackerConfig& tracker, ros::Time epoch, double future_stamp_tolerance = 0.1);
+                 const core::ObstacleTrackerConfig& tracker, ros::Time epoch, double future_stamp_tolerance = 0.1,
+                 const LaserHealthConfig& health = LaserHealthConfig());
   LaserObstacles(const LaserObstacles&) = delete;
   LaserObstacles& operator=(const LaserObstacles&) = delete;
   ~LaserObstacles();
@@ -39,10 +47,12 @@ class LaserObstacles {
 
   // In the control cycle: turns a new scan into disks; returns the age [s] at `now` of the
   // last scan turned into disks, -1 when none was yet. A bad scan keeps the previous disks
-  // and does not count as fresh: it must not hide a blind laser. The age is taken on this
-  // node's clock (core/input_age.h): +inf for a scan stamped 0 or in the future.
+  // and does not count as fresh: it must not hide a blind laser; a scan that sees nothing
+  // is refused so too, unless open_space. The age is taken on this node's clock
+  // (core/input_age.h): +inf for a scan stamped 0 or in the future.
   double update(const ros::Time& now);
-  const std::string& scanProblem() const { return scan_problem_; }  // why its stamp is untrusted, or ""
+  // Why the scans cannot be trusted now (their stamp, or too few of them: the rate), or "".
+  const std::string& scanProblem() const { return scan_problem_; }
   // Why the last scan looked at was refused, naming the field (core::scanBeamsProblem), or
   // "" when it was used.
   const std::string& refusal() const { return refusal_.last(); }
@@ -61,6 +71,8 @@ class LaserObstacles {
   std::mutex latest_mutex_;
   sensor_msgs::LaserScan::ConstPtr latest_;  // written by onScan only
   ros::Time latest_arrival_;                 // when it arrived, on this node's clock
+  core::ScanRateJudge rate_;                 // every arrival counts, also those update() skips
+  const bool open_space_;
 
   // The control cycle's (the caller serialises update and obstacles).
   sensor_msgs::LaserScan::ConstPtr processed_;  // last scan looked at
@@ -68,7 +80,7 @@ class LaserObstacles {
   std::vector<core::Disk> disks_, disks_next_;  // disks_next_: scratch for the next scan
   core::InputAgeTracker age_;
   std::string scan_problem_;
-  RefusalLog refusal_;
+  RefusalLog refusal_, rate_log_;
 
   void refuse(const std::string& why, const std::string& frame);
 

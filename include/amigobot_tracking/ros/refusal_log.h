@@ -14,19 +14,23 @@ class RefusalLog {
  public:
   explicit RefusalLog(double period = 5.0) : period_(period) {}
   // Records `why`; true when it should be logged now.
-  bool due(const std::string& why) {
+  bool due(const std::string& why) { return due(why, why); }
+  // The same, throttled by `kind`: reasons of one kind whose figures change from one input
+  // to the next (beam counts, a measured rate) are logged once per period.
+  bool due(const std::string& why, const std::string& kind) {
     const ros::WallTime now = ros::WallTime::now();
-    const bool log = why != last_ || (now - logged_).toSec() >= period_;
+    const bool log = kind != kind_ || (now - logged_).toSec() >= period_;
     if (log) logged_ = now;
     last_ = why;
+    kind_ = kind;
     return log;
   }
-  void clear() { last_.clear(); }              // the input was used
+  void clear() { last_.clear(), kind_.clear(); }  // the input was used
   const std::string& last() const { return last_; }  // the current refusal, or ""
 
  private:
   const double period_;
-  std::string last_;
+  std::string last_, kind_;
   ros::WallTime logged_;
 };
 

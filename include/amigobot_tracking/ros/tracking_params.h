@@ -29,6 +29,10 @@ struct TrackingNodeConfig {
   double scan_timeout = 0.5;
   double future_stamp_tolerance = 0.1;  // [s] a stamp further ahead of the receiver's clock is stale
   bool require_scan = true;
+  // A laser that sees nothing, or fewer scans than it promises (core/scan_health.h).
+  bool open_space = false;              // true: a scan without any return is an empty room, not a blind laser
+  double min_scan_rate_fraction = 0.7;  // [-] measured / promised scan rate below this stops (0 = off)
+  double expected_scan_rate = 0.0;      // [Hz] > 0: the laser's rate, instead of each scan's scan_time
   bool autostart = false;
   double clicked_point_radius = 0.2;
   double robot_v_max = 1.0;

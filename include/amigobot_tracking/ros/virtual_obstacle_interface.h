@@ -3,6 +3,7 @@
 // (drag to move, right click -> Delete), the `~remove_virtual_obstacle` and
 // `~clear_virtual_obstacles` services, and the latched `~virtual_obstacles` array.
 // Callbacks edit the set under this class's own mutex; the control cycle takes a snapshot.
+// `~virtual_obstacle` holds a burst of 10,000 messages; what it adds is published every 0.1 s.
 #pragma once
 
 #include <memory>
@@ -53,6 +54,8 @@ class VirtualObstacleInterface {
   core::VirtualObstacleSet set_;
   ros::Publisher array_pub_;
   std::unique_ptr<interactive_markers::InteractiveMarkerServer> marker_server_;
+  bool changed_ = false;  // ~virtual_obstacle edited the set since the last publishLocked
+  ros::WallTimer publish_timer_;
   ros::Subscriber obstacle_sub_, clicked_sub_;
   ros::ServiceServer remove_srv_, clear_srv_;
 };

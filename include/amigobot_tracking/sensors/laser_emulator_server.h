@@ -62,6 +62,14 @@ class LaserEmulatorServer {
   int tcpPort() const { return listener_.port(); }
   const std::string& ptyName() const { return pty_terminal_.name(); }
   void run(const std::atomic<bool>& stop);  // checks `stop` at least every 10 ms
+  // Faults switched on and off while it runs (laser_emulator: SIGUSR1, SIGUSR2), read at each
+  // scan; null: never. `blind`: every beam reports no return (each protocol's own "nothing
+  // within range", as in an empty world): a laser that lost its echo. `halve`: every other
+  // scan is not sent (a saturated link or an overloaded device): half the promised rate.
+  void setLiveFaults(const std::atomic<bool>* blind, const std::atomic<bool>* halve) {
+    blind_ = blind;
+    halve_ = halve;
+  }
 
  private:
   struct Link {
@@ -89,7 +97,9 @@ class LaserEmulatorServer {
   EmulatedScan latest_, pending_;  // last sent; cast but not yet sent
   bool has_pending_ = false;
   double next_scan_ = 0.0, stall_until_ = 0.0, pending_due_ = 0.0;
-  std::uint64_t streamed_ = 0;
+  std::uint64_t streamed_ = 0, cast_ = 0;
+  const std::atomic<bool>* blind_ = nullptr;
+  const std::atomic<bool>* halve_ = nullptr;
 };
 
 }  // namespace sensors
