@@ -30,6 +30,9 @@ if(CATKIN_ENABLE_TESTING)
                      ${PROJECT_SOURCE_DIR}/config/udev/99-amigobot.rules)
   amigobot_add_check(check_udev_rules_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_udev_rules.py
                      ${PROJECT_SOURCE_DIR}/scripts/test/check_udev_rules.py)
+  # install_deps.sh waits for another package manager's lock, naming it and its holder.
+  amigobot_add_check(install_deps_lock_wait ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_install_deps.py
+                     ${PROJECT_SOURCE_DIR}/scripts/setup/install_deps.sh)
   # Every Makefile target has its one-line `make help` entry (help fails naming one without).
   amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 
@@ -43,7 +46,7 @@ if(CATKIN_ENABLE_TESTING)
                      laser_port:=/dev/laser localization:=map map_file:=${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
   amigobot_add_check(launch_namespace_target ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_launch_namespace.py
                      ${PROJECT_SOURCE_DIR}/launch/amigobot.launch target tracking:=false laser:=sick_tim5xx
-                     laser_port:=192.168.0.2:2112 localization:=map map_file:=${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
+                     laser_port:=192.168.0.2:2111 localization:=map map_file:=${PROJECT_SOURCE_DIR}/config/maps/lab.yaml)
   # Maps: the e2e room's map is world_map's drawing of its world (never stale); the shipped
   # lab map, built by SLAM (`make map`), agrees with the lab world (>= 90 % of its occupied
   # cells within 0.1 m of a wall, table or pole).
@@ -65,6 +68,10 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/rostest/sim_launch.test ARGS laser:=rplidar status_port:=28773 laser_port:=28774
               DEPENDENCIES amigobot_emulator laser_emulator ground_truth_localization trail_publisher
               reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
+  # The README's and docs' launch commands, services and topics, read from their text, against the
+  # launch files and the quick start's running stack (test/rostest/test_docs_commands.py).
+  add_rostest(test/rostest/docs_commands.test DEPENDENCIES amigobot_emulator laser_emulator ground_truth_localization
+              trail_publisher reference_publisher tracking_node amigobot_tracking_ros amigobot_tracking_ros_driver)
 
   # rosrun finds every executable once (no build or install tree inside the package).
   amigobot_add_check(rosrun_finds_each_once ${PROJECT_SOURCE_DIR}/test/install/check_rosrun_unique.sh

@@ -110,15 +110,19 @@ def fig3_xy(d, meta, out_dir, dpi, title):
 
 
 def fig4_xy_time(d, out_dir, dpi, title):
+    # The controller steers the offset point p_r (r ahead of the centre) onto the target: plotted
+    # against the target it shows the tracking; the centre, r behind, would read as lag.
+    p_r_x, p_r_y, p_r_label = offset_point(d)
     fig, axes = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
-    for ax, axis in zip(axes, "xy"):
-        ax.plot(d["t"], d[f"p_d_{axis}"], "g-", label=f"${axis}_d$")
-        ax.plot(d["t"], d[axis], "r-", lw=0.9, label=f"${axis}$ (centre)")
+    for ax, axis, p_r in zip(axes, "xy", (p_r_x, p_r_y)):
+        ax.plot(d["t"], d[f"p_d_{axis}"], "g-", label=f"${axis}_d$ target")
+        ax.plot(d["t"], p_r, "b-", lw=0.9, label=f"${axis}$ of the {p_r_label}")
+        ax.plot(d["t"], d[axis], color="0.55", ls=":", lw=0.9, label=f"${axis}$ of the robot's centre (r behind $p_r$)")
         ax.set_ylabel(f"position {axis} [m]")
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("t [s]")
-    titled(axes[0], f"Fig. 4: position against time — {title}")
+    titled(axes[0], f"Fig. 4: target and offset point against time — {title}")
     save(fig, out_dir, "fig4_xy_time.png", dpi)
 
 
@@ -142,19 +146,25 @@ def fig5_error(d, meta, out_dir, dpi, title):
     save(fig, out_dir, "fig5_error_rho.png", dpi)
 
 
-def fig6_commands(d, out_dir, dpi, title):
+def fig6_commands(d, meta, out_dir, dpi, title):
+    # v_d, omega_d are the law's output before the diamond scales it: they may lie far outside
+    # U; the applied v, omega are inside. The dashed lines are the diamond's vertices (the
+    # largest |v| with omega = 0 and the largest |omega| with v = 0).
+    limits = (meta.get("v_max"), meta.get("w_max"))
     fig, axes = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
-    axes[0].plot(d["t"], d["v_d"], "c-", lw=0.7, label="$v_d$ desired")
-    axes[0].plot(d["t"], d["v"], "b-", lw=0.9, label="$v$ applied")
-    axes[0].set_ylabel("forward speed v [m/s]")
-    axes[1].plot(d["t"], d["omega_d"], "c-", lw=0.7, label=r"$\omega_d$ desired")
-    axes[1].plot(d["t"], d["omega"], "b-", lw=0.9, label=r"$\omega$ applied")
-    axes[1].set_ylabel(r"turn rate $\omega$ [rad/s]")
-    for ax in axes:
+    for ax, (desired, applied, symbol, unit_label), limit in zip(
+            axes, (("v_d", "v", "v", "forward speed v [m/s]"), ("omega_d", "omega", r"\omega", r"turn rate $\omega$ [rad/s]")),
+            limits):
+        ax.plot(d["t"], d[desired], "c-", lw=0.7, label=f"${symbol}_d$ desired (before saturation)")
+        ax.plot(d["t"], d[applied], "b-", lw=0.9, label=f"${symbol}$ applied (inside the diamond)")
+        if limit:
+            ax.axhline(limit, color="k", ls="--", lw=0.8, label=f"diamond vertex $\\pm${limit:g}")
+            ax.axhline(-limit, color="k", ls="--", lw=0.8)
+        ax.set_ylabel(unit_label)
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("t [s]")
-    titled(axes[0], f"Fig. 6: commands — {title}")
+    titled(axes[0], f"Fig. 6: desired (before saturation) and applied commands — {title}")
     save(fig, out_dir, "fig6_commands.png", dpi)
 
 
@@ -209,7 +219,7 @@ def main():
     fig3_xy(d, meta, out_dir, args.dpi, title)
     fig4_xy_time(d, out_dir, args.dpi, title)
     fig5_error(d, meta, out_dir, args.dpi, title)
-    fig6_commands(d, out_dir, args.dpi, title)
+    fig6_commands(d, meta, out_dir, args.dpi, title)
     fig7_diamond(d, meta, out_dir, args.dpi, title)
     fig8_estimator(d, meta, out_dir, args.dpi, title)
     print(f"plot_run.py: 6 figures in {out_dir}")

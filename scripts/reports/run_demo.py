@@ -4,7 +4,7 @@
 Starts a private ROS master on a free port and Xvfb, runs sim.launch (emulator, driver,
 simulated laser, ground-truth localisation, target on the Section 5.3-like course,
 tracking, rviz with the shipped display), enables tracking through its service, drops one
-virtual obstacle (the paper's square, as a disk) through the topic, records a rosbag,
+virtual obstacle (a disk of radius 0.25 m where the paper has its square) through the topic, records a rosbag,
 screenshots rviz, stops everything it started, and writes REPORT/: run.bag, trajectory.csv,
 metrics.json, the paper's Figs 3-8 (scripts/reports/plot_run.py), rviz_*.png, summary.md, logs/.
 Exit 0: safe run that tracked; 3: collision or a command outside the diamond; 4: the run did
@@ -33,8 +33,9 @@ WORLD = os.path.join(ROOT, "config", "worlds", "lab.yaml")  # default room of th
 REFERENCE = os.path.join(ROOT, "config", "references", "experiment_5_3.yaml")  # sim.launch's default course
 START_DELAY_S = 10.0  # the target waits this long after the launch (startup on a loaded machine)
 SETTLE_S = 6.0        # after the course ends: the robot closes the last gap (the final error is judged)
-FIRST_PASS = 0.22     # share of the course at which the target crosses the virtual square first (screenshot)
-VIRTUAL = "{id: square, center: {x: 2.0, y: 1.0, z: 0.0}, radius: 0.25}"  # the paper's square, as a disk
+PROGRESS_PERIOD_S = 5.0  # a line on the console this often during the run (demo_progress.py)
+FIRST_PASS = 0.22     # share of the course at which the target crosses the virtual disk first (screenshot)
+VIRTUAL = "{id: virtual_disk, center: {x: 2.0, y: 1.0, z: 0.0}, radius: 0.25}"  # a disk where the paper has its square
 DEMO_PARAMS = os.path.join(ROOT, "config", "demo_tracking.yaml")
 PAPER_PARAMS = os.path.join(ROOT, "config", "paper_law.yaml")
 LAW_TEXT = {"recommended": "the recommended law, config/demo_tracking.yaml",
@@ -121,6 +122,11 @@ def main():
         t_end = t_start + course_s + SETTLE_S
         log(f"target moving from about {max(0.0, t_start - time.time()):.0f} s from now; run ends in "
             f"{t_end - time.time():.0f} s")
+        offset = params.get("offset", 0.3)
+        procs.start("progress", ["/usr/bin/python3", os.path.join(ROOT, "scripts", "reports", "demo_progress.py"),
+                                 "--end", str(t_end), "--period", str(PROGRESS_PERIOD_S),
+                                 "--offset", str(offset if isinstance(offset, (int, float)) else 0.3)],
+                    env, console=True)
         for name, at in (("rviz_avoiding.png", t_start + FIRST_PASS * course_s + 4.0), ("rviz_end.png", t_end - 1.0)):
             time.sleep(max(0.0, at - time.time()))
             if launch.poll() is not None:
@@ -182,6 +188,47 @@ def num(value, digits=3):
     return f"{value:.{digits}g}" if isinstance(value, float) else value
 
 
+# The unit of each metrics.json figure (keys ending in _s, _m, _deg carry theirs); "-" for a
+# ratio, "steps" / "count" for the counters. A key missing here is shown with "?" (add it).
+METRIC_UNITS = {
+    "ase": "m²", "aae": "m", "ise": "m² s", "iae": "m s", "tec": "-", "max_e_over_rho": "-", "max_rho": "m",
+    "min_clearance_offset": "m", "min_clearance_body": "m", "min_clearance_world": "m", "min_clearance_virtual": "m",
+    "body_collisions": "count", "offset_collisions": "count", "diamond_violations": "steps",
+    "command_diamond_violations": "commands", "max_command_diamond_norm": "- (1 = on the diamond)",
+    "saturated_steps": "steps", "saturated_fraction": "share of steps", "envelope_widenings": "steps",
+    "estimator_rms_error": "m/s", "estimator_max_error_settled": "m/s", "steps": "steps", "nan_count": "steps",
+    "invalid_steps": "steps", "true_ase": "m²", "true_aae": "m", "true_ise": "m² s", "true_iae": "m s",
+    "max_true_error": "m", "final_error": "m", "conflict_steps": "steps", "escape_steps": "steps", "side_flips": "steps",
+    "max_orbit_turns": "turns", "escape_toggles": "steps", "avoidance_toggles": "steps", "max_delta_v": "m/s",
+    "max_delta_omega": "rad/s", "within_rho_fraction": "share of steps", "commands": "count",
+    "path_length": "m", "virtual_obstacles": "count", "truth_samples": "count", "safe": "-", "ran": "-",
+    "law": "-", "variant": "-", "samples": "count", "missed": "count", "frames": "-", "realtime_factor": "-",
+}
+# Two "final" errors are easily confused: the controller's |e| at its last step (its believed
+# pose) and the verdict's true |e*| at the end. Each row says which it is.
+METRIC_NAMES = {"final_error": "final_error: ‖e‖ at the last step, as the controller saw it (believed pose)"}
+
+
+def metric_unit(key):
+    for suffix, unit in (("_s", "s"), ("_m", "m"), ("_deg", "deg")):
+        if key.endswith(suffix):
+            return unit
+    return METRIC_UNITS.get(key.rsplit(".", 1)[-1], "?")
+
+
+def metric_rows(metrics):
+    """| metric | value | unit | rows of metrics.json (nested tables flattened as a.b)."""
+    rows = []
+    for key, value in metrics.items():
+        if key in ("scenario", "tracking"):
+            continue
+        if isinstance(value, dict):
+            rows += [(f"{key}.{k}", v) for k, v in value.items()]
+        else:
+            rows.append((key, value))
+    return [f"| {METRIC_NAMES.get(k, k)} | {num(v, 4)} | {metric_unit(k)} |" for k, v in rows]
+
+
 def write_summary(out, report, shots, wall, law):
     metrics = {}
     path = os.path.join(out, "metrics.json")
@@ -199,7 +246,8 @@ def write_summary(out, report, shots, wall, law):
                   f"{tracking['recovery_time_s']:g} s after the start and after each obstacle episode (a true "
                   f"clearance of the effective disk around p_r or around the target inside δ = {tracking['band']:g} m), "
                   f"and at the end. Judged {100 * (tracking['judged_fraction'] or 0):.0f} % of the run: max "
-                  f"{num(tracking['max_judged_true_error'])} m; final {num(tracking['final_true_error'])} m. "
+                  f"{num(tracking['max_judged_true_error'])} m; final true ‖e*‖ (at the end, judged) "
+                  f"{num(tracking['final_true_error'])} m. "
                   + (tracking["reason"] or "Passed."), "",
                   "| obstacle episode [s] | peak ‖e*‖ [m] | back under the bound after [s] |", "|---|---|---|"]
         lines += [f"| {e['start_s']:.1f}–{e['end_s']:.1f} | {e['peak_true_error']:.3f} | "
@@ -208,8 +256,7 @@ def write_summary(out, report, shots, wall, law):
         lines.append("")
     lines += ["```", report.stdout.strip(), report.stderr.strip(), "```", ""]
     if metrics:
-        lines += ["| metric | value |", "|---|---|"]
-        lines += [f"| {k} | {num(v, 4)} |" for k, v in metrics.items() if k not in ("scenario", "tracking")]
+        lines += ["| metric | value | unit |", "|---|---|---|"] + metric_rows(metrics)
         lines.append("")
     lines += [f"![{os.path.basename(s)}]({os.path.basename(s)})" for s in shots]
     lines += [f"![{f}]({f})" for f in sorted(os.listdir(out)) if f.startswith("fig") and f.endswith(".png")]

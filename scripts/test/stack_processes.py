@@ -59,9 +59,11 @@ class Processes:
         self.log_dir = log_dir
         self.children = []  # (name, Popen, log file)
 
-    def start(self, name, args, env, **kwargs):
+    def start(self, name, args, env, console=False, **kwargs):
+        """console: the child prints on this terminal (its stderr too) instead of logs/NAME.log."""
         log = open(os.path.join(self.log_dir, name + ".log"), "w")
-        p = subprocess.Popen(args, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True, **kwargs)
+        p = subprocess.Popen(args, env=env, stdout=None if console else log, stderr=None if console else subprocess.STDOUT,
+                             start_new_session=True, **kwargs)
         self.children.append((name, p, log))
         return p
 

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The shipped rviz display shows the tracking markers: under Xvfb with a private master,
-sim.launch runs with rviz:=true; a screenshot with tracking disabled and no virtual obstacle
+sim.launch runs and rviz.launch opens the shipped display (its map display off: see
+display_without_map); a screenshot with tracking disabled and no virtual obstacle
 (baseline), then tracking is enabled and a virtual obstacle is published on the topic, and a
 second screenshot must show, by colour (src/ros/markers.cpp), the rho circle (r + g = 1,
 b = 0), the offset point (cyan 0, 1, 1) and the virtual obstacle (purple / magenta), none
@@ -22,6 +23,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "scripts", "test"))
 import stack_processes as sp  # noqa: E402
 
+SHIPPED_DISPLAY = os.path.join(ROOT, "config", "amigobot_tracking.rviz")
 VIRTUAL = "{id: rviz_test, center: {x: 2.0, y: 1.0, z: 0.0}, radius: 0.3}"
 # Pixel counts: a 0.3 m disk at the view's 130 px/m is ~4800 px, the 0.04 m offset point ~80
 # px, the rho circle (>= 0.1 m radius, 2 px line) >= ~100 px.
@@ -50,6 +52,19 @@ def classes(png):
         # CYLINDER (0.6, 0.2, 0.8) or (0.9, 0.1, 0.9) and the interactive disk: purple / magenta.
         "virtual obstacle": int(np.sum((r >= 90) & (b >= 120) & (g * 2 < np.minimum(r, b)))),
     }
+
+
+def display_without_map(out):
+    """The shipped rviz display with its Map display off, written into out: the map drawn over
+    the view would hide the background colour by which classes() finds the view."""
+    with open(SHIPPED_DISPLAY) as f:
+        text = f.read()
+    start = text.index("Class: rviz/Map")
+    enabled = text.index("Enabled: true", start)
+    path = os.path.join(out, "display_without_map.rviz")
+    with open(path, "w") as f:
+        f.write(text[:enabled] + "Enabled: false" + text[enabled + len("Enabled: true"):])
+    return path
 
 
 def shoot_until(display, png, done, timeout):
@@ -81,8 +96,9 @@ def run(args):
         sp.start_master(procs, env, master)
         launch = procs.start("sim_launch", ["roslaunch", "amigobot_tracking", "sim.launch",
                                             f"pty:={out}/pty", "tcp_port:=-1", f"status_port:={sp.free_port()}",
-                                            f"laser_port:={sp.free_port()}",
-                                            "start_delay:=0", "rviz:=true"], env)
+                                            f"laser_port:={sp.free_port()}", "start_delay:=0"], env)
+        # rviz.launch (what sim.launch rviz:=true includes) on the shipped display without its map.
+        procs.start("rviz", ["roslaunch", "amigobot_tracking", "rviz.launch", f"config:={display_without_map(out)}"], env)
 
         def call(cmd):
             return subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=60)
