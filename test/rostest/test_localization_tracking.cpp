@@ -178,7 +178,7 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
 TEST(LocalizationNodelet, LocalisesOnTheMapOfTheMapTopic) {
   ros::NodeHandle nh;
   ros::param::set("/localization_on_topic/use_map_topic", true);
-  setStart("/localization_on_topic", Pose2{0.2, -0.2, 0.2});
+  setStart("/localization_on_topic", Pose2{0.3, -0.25, 0.3});  // as on the file above
   SyntheticRobot robot(kTruth, kMapToOdom);
   Fixture f;
   nodelet::Loader loader(false);
