@@ -2,6 +2,7 @@
 # localization_node over the localization library.
 amigobot_add_library(amigobot_tracking_ros_localization
   src/ros/localization_messages.cpp
+  src/ros/localization_map_io.cpp
   src/ros/localization_node.cpp
   src/ros/localization_nodelet.cpp
 )

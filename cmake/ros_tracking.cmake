@@ -1,7 +1,7 @@
 # Layer 3, ros: the one ROS parameter reader (every ROS library and node reads its field
 # tables through it) and the one dynamic_reconfigure mapping over any field table, the tracking nodelet amigobot_tracking/Tracking and tracking_node over
 # the core, and the reference publisher (a target for simulation and the demo).
-amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp src/ros/reconfigure_mapping.cpp
+amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp src/ros/param_aliases.cpp src/ros/reconfigure_mapping.cpp
   src/ros/xmlrpc_call.cpp src/ros/master_watch.cpp)
 target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core ${catkin_LIBRARIES})
 
@@ -40,7 +40,8 @@ if(CATKIN_ENABLE_TESTING)
   add_dependencies(test_tracking_bad_param ${PROJECT_NAME}_generate_messages_cpp)
   # The reader: types checked, ints for reals, errors naming the parameter.
   amigobot_add_rostest_gtest(test_param_reader test/rostest/param_reader.test test/rostest/test_param_reader.cpp)
-  target_link_libraries(test_param_reader amigobot_tracking_ros amigobot_tracking_ros_driver)
+  target_link_libraries(test_param_reader amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser
+                        amigobot_tracking_ros_localization)
   # Every table field in config/*.yaml (with its comment), the README's tables and cfg/*.cfg.
   amigobot_add_unit_test(test_param_coverage test/unit/test_param_coverage.cpp)
   target_link_libraries(test_param_coverage amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser amigobot_tracking_localization)

@@ -44,7 +44,8 @@ class MapEngine : public Engine {
   OccupancyMap map() const override { return localizer_.map(); }
   bool mapGrows() const override { return false; }
   std::string mapToSave(OccupancyMap*) const override {
-    return "nothing to save: mode is localization (the map is " + config_.map_file + ")";
+    return "nothing to save: mode is localization (the map is " +
+           (config_.use_map_topic ? std::string("the map topic's") : config_.map_file) + ")";
   }
   bool measuresMatch() const override { return true; }
 
@@ -83,7 +84,6 @@ class MappingEngine : public Engine {
   OccupancyMap map() const override { return mapper_.map(); }
   bool mapGrows() const override { return true; }
   std::string mapToSave(OccupancyMap* map) const override {
-    if (config_.map_file.empty()) return "~map_file is empty: no path to save the map to";
     *map = mapper_.map();
     return "";
   }
@@ -104,6 +104,11 @@ std::unique_ptr<Engine> makeEngine(const LocalizationConfig& config) {
   } catch (const std::exception& e) {
     throw std::runtime_error("parameter ~map_file: " + std::string(e.what()));
   }
+}
+
+std::unique_ptr<Engine> makeEngine(const LocalizationConfig& config, const OccupancyMap& map) {
+  if (map.empty()) throw std::runtime_error("the map is empty (0 cells)");
+  return std::make_unique<MapEngine>(config, map);
 }
 
 }  // namespace localization

@@ -15,6 +15,7 @@ const core::FieldTable<LocalizationConfig>& localizationFields() {
     t.push_back(field("mapping_method", &C::mapping_method, "-", "mapping: icp (MRPT's ICP-SLAM) or graph (pose graph, closes loops)",
                       core::oneOf({"icp", "graph"})));
     t.push_back(field("map_file", &C::map_file, "-", "map YAML (map_server format) to load; mapping: ~save_map's default"));
+    t.push_back(field("use_map_topic", &C::use_map_topic, "-", "localization: the map from the map topic (map_server), as amcl"));
     core::include(&t, "initial_pose/", &C::initial_pose,
                   core::FieldTable<core::Pose2>{
                       field("x", &core::Pose2::x, "m", "initial map -> base x", core::anyValue()),
@@ -82,7 +83,9 @@ const core::FieldTable<LocalizationConfig>& localizationFields() {
 std::string LocalizationConfig::validate() const {
   const std::string bounds = core::checkFields(localizationFields(), *this);
   if (!bounds.empty()) return bounds;
-  if (mode == "localization" && map_file.empty()) return "map_file: required in localization mode";
+  if (use_map_topic && mode != "localization") return "use_map_topic: only in mode localization (mode is " + mode + ")";
+  if (mode == "localization" && map_file.empty() && !use_map_topic)
+    return "map_file: required in localization mode (or use_map_topic: true)";
   if (!initial_pose.isFinite()) return "initial_pose: must be finite";
   if (global_frame.empty()) return "global_frame: must not be empty";
   if (odom_frame.empty()) return "odom_frame: must not be empty";

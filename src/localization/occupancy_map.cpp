@@ -213,6 +213,11 @@ OccupancyMap loadMap(const std::string& yaml_path) {
 
 void saveMap(const std::string& yaml_path, const OccupancyMap& map) {
   if (map.empty()) fail(yaml_path, "the map is empty (no scan has been inserted yet)");
+  // The folder is created when missing (a recipe's ~/maps/lab.yaml on a fresh account).
+  std::error_code created;
+  const std::filesystem::path folder = std::filesystem::absolute(yaml_path, created).parent_path();
+  if (!created) std::filesystem::create_directories(folder, created);
+  if (created) fail(yaml_path, "cannot create the folder " + folder.string() + ": " + created.message());
   std::string stem = yaml_path;
   const std::size_t dot = stem.rfind('.');
   if (dot != std::string::npos && dot > stem.rfind('/') + 1) stem = stem.substr(0, dot);

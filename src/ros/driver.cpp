@@ -1,5 +1,6 @@
 #include "amigobot_tracking/ros/driver.h"
 
+#include "amigobot_tracking/ros/param_aliases.h"
 #include "amigobot_tracking/ros/sonar_cloud.h"
 
 #include <cmath>
@@ -65,16 +66,6 @@ std::string DriverParams::validate() const {
   if (odom_frame.empty()) return "odom_frame: must not be empty";
   if (base_frame.empty()) return "base_frame: must not be empty";
   return client.validate();
-}
-
-const std::vector<ParamAlias>& rosAriaAliases() {
-  // RosAria's private parameter names (odom_frame is the same name): a RosAria config keeps
-  // working, the driver's own names are canonical (docs/ros_api.md).
-  static const std::vector<ParamAlias> aliases = {{"TicksMM", "ticks_mm", "RosAria"},
-                                                  {"DriftFactor", "drift_factor", "RosAria"},
-                                                  {"RevCount", "rev_count", "RosAria"},
-                                                  {"base_link_frame", "base_frame", "RosAria"}};
-  return aliases;
 }
 
 DriverParams loadDriverParams(const ros::NodeHandle& pnh) {

@@ -16,6 +16,13 @@ LaserNode::LaserNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID(params_.driver.model + " at " + params_.driver.port);
   updater_.add("Laser " + params_.driver.model, this, &LaserNode::diagnose);
   diagnostics_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
+  if (sensors::laserModel(params_.driver.model).protocol == sensors::Protocol::kRplidar) {
+    using Empty = std_srvs::Empty;
+    start_motor_srv_ = nh_.advertiseService<Empty::Request, Empty::Response>(
+        "start_motor", [this](Empty::Request&, Empty::Response&) { return onMotor(true); });
+    stop_motor_srv_ = nh_.advertiseService<Empty::Request, Empty::Response>(
+        "stop_motor", [this](Empty::Request&, Empty::Response&) { return onMotor(false); });
+  }
   io_ = std::thread([this] { loop(); });
 }
 
@@ -31,6 +38,7 @@ void LaserNode::loop() {
   sensor_msgs::LaserScan msg;
   double last_stamp = 0.0;
   while (!stop_ && ros::ok()) {
+    driver.requestMotor(motor_wanted_);
     const bool got = driver.poll(&scan, 0.1);
     bool publish = false;
     {
@@ -73,14 +81,23 @@ void LaserNode::reportLink(bool got_scan) {
   }
 }
 
+bool LaserNode::onMotor(bool on) {
+  motor_wanted_ = on;  // the I/O thread tells the device
+  ROS_INFO_STREAM_NAMED("laser", params_.driver.model << " at " << params_.driver.port << ": motor "
+                                                      << (on ? "started (start_motor)" : "stopped (stop_motor)"));
+  return true;
+}
+
 void LaserNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (connected_) {
+  if (connected_ && !motor_wanted_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "motor stopped (stop_motor): no scans until start_motor");
+  } else if (connected_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "streaming");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "not connected: " + last_error_);
   }
-  rate_->report(status, connected_);
+  rate_->report(status, connected_ && motor_wanted_);
   status.add("device", identity_.empty() ? "unknown (never connected)" : identity_);
   status.add("port", params_.driver.port);
   status.add("scans", counters_.scans);

@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "amigobot_tracking/ros/param_reader.h"
+#include "amigobot_tracking/ros/param_aliases.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
 
 namespace amigobot_tracking {
@@ -52,8 +52,11 @@ std::string LaserParams::validate() const {
 
 LaserParams loadLaserParams(const ros::NodeHandle& pnh) {
   LaserParams p;
-  const std::string error = readParams(pnh, laserFields(), &p);
+  std::string error = readFields(pnh, laserFields(), &p, "", laserAliases());
+  if (error.empty()) error = readSplitLaserAddress(pnh, &p.driver.port);
   if (!error.empty()) throw std::runtime_error("parameter " + error);
+  const std::string invalid = p.validate();
+  if (!invalid.empty()) throw std::runtime_error("parameter ~" + invalid);
   return p;
 }
 

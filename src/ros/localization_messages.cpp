@@ -64,6 +64,24 @@ void toOccupancyGrid(const localization::OccupancyMap& map, nav_msgs::OccupancyG
   out->data.assign(map.cells.begin(), map.cells.end());
 }
 
+std::string fromOccupancyGrid(const nav_msgs::OccupancyGrid& grid, localization::OccupancyMap* out) {
+  const nav_msgs::MapMetaData& info = grid.info;
+  if (info.width == 0 || info.height == 0) return "empty map (" + std::to_string(info.width) + " x " + std::to_string(info.height) + " cells)";
+  if (grid.data.size() != static_cast<std::size_t>(info.width) * info.height)
+    return std::to_string(grid.data.size()) + " cells for " + std::to_string(info.width) + " x " + std::to_string(info.height);
+  if (!(info.resolution > 0.0f) || !std::isfinite(info.resolution)) return "resolution must be > 0 m, got " + std::to_string(info.resolution);
+  const geometry_msgs::Pose& origin = info.origin;
+  if (!std::isfinite(origin.position.x) || !std::isfinite(origin.position.y)) return "origin must be finite";
+  const double yaw = yawOf(origin.orientation.x, origin.orientation.y, origin.orientation.z, origin.orientation.w);
+  if (!std::isfinite(yaw) || std::abs(yaw) > 1e-6) return "a rotated map (origin yaw " + std::to_string(yaw) + " rad) is not supported";
+  for (std::int8_t v : grid.data)
+    if (v < -1 || v > 100) return "cell value " + std::to_string(v) + " outside -1 .. 100";
+  *out = localization::makeMap(info.resolution, origin.position.x, origin.position.y, static_cast<int>(info.width),
+                               static_cast<int>(info.height));
+  out->cells.assign(grid.data.begin(), grid.data.end());
+  return "";
+}
+
 geometry_msgs::PoseWithCovariance toPoseWithCovariance(const core::Pose2& pose, const Eigen::Matrix3d& covariance) {
   geometry_msgs::PoseWithCovariance out;
   out.pose.position.x = pose.x;

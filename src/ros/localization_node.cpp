@@ -1,7 +1,6 @@
 #include "amigobot_tracking/ros/localization_node.h"
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
-#include <nav_msgs/OccupancyGrid.h>
 
 #include <cstdio>
 
@@ -11,7 +10,7 @@
 #include "amigobot_tracking/localization/initial_pose.h"
 #include "amigobot_tracking/localization/poses.h"
 #include "amigobot_tracking/ros/localization_messages.h"
-#include "amigobot_tracking/ros/param_reader.h"
+#include "amigobot_tracking/ros/param_aliases.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -20,25 +19,37 @@ using localization::LocalizationConfig;
 
 LocalizationConfig loadLocalizationConfig(const ros::NodeHandle& pnh) {
   LocalizationConfig config;
-  const std::string error = readParams(pnh, localization::localizationFields(), &config);
+  const std::string error = readParams(pnh, localization::localizationFields(), &config, "", localizationAliases());
   if (!error.empty()) throw std::runtime_error("parameter " + error);
   return config;
 }
 
 LocalizationNode::LocalizationNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : config_(loadLocalizationConfig(pnh)), nh_(nh), pnh_(pnh), listener_(buffer_), updater_(nh, pnh),
-      engine_(localization::makeEngine(config_)) {
+      engine_(config_.use_map_topic ? nullptr : localization::makeEngine(config_)) {
+  if (engine_ && engine_->mapGrows() && !config_.map_file.empty()) {
+    // Refused now, not after a whole mapping drive: ~save_map writes there.
+    const std::string problem = mapFolderProblem(config_.map_file);
+    if (!problem.empty()) throw std::runtime_error("parameter ~map_file: " + config_.map_file + ": " + problem);
+  }
+  measures_match_ = engine_ && engine_->measuresMatch();
   // Any laser's rate: the window only shows a stall (0 Hz) or a worker that falls behind.
   rate_ = std::make_unique<RateMonitor>("scans", "scans processed [Hz]", 1.0, 100.0, 0.1, 10);
-  map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+  if (config_.use_map_topic) {
+    map_sub_ = nh_.subscribe("map", 1, &LocalizationNode::onMap, this);  // latched by map_server
+  } else {
+    map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+    map_metadata_pub_ = nh_.advertise<nav_msgs::MapMetaData>("map_metadata", 1, true);
+  }
   pose_pub_ = pnh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("pose", 5);
   status_pub_ = nh_.advertise<amigobot_tracking::LocalizationStatus>("localization_status", 5);
   amcl_pose_pub_ = nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("amcl_pose", 5);
-  if (!engine_->mapGrows()) publishMap(engine_->map());
+  if (engine_ && !engine_->mapGrows()) publishMap(engine_->map());
   worker_ = std::thread([this] { workLoop(); });
   tf_thread_ = std::thread([this] { tfLoop(); });
   initial_pose_sub_ = nh_.subscribe("initialpose", 2, &LocalizationNode::onInitialPose, this);
   save_map_srv_ = pnh_.advertiseService("save_map", &LocalizationNode::onSaveMap, this);
+  save_map_to_srv_ = pnh_.advertiseService("save_map_to", &LocalizationNode::onSaveMapTo, this);
   global_srv_ = pnh_.advertiseService("global_localization", &LocalizationNode::onGlobalLocalization, this);
   amcl_global_srv_ = nh_.advertiseService("global_localization", &LocalizationNode::onAmclGlobalLocalization, this);
   updater_.setHardwareID("none");
@@ -117,6 +128,10 @@ void LocalizationNode::process(const Work& work) {
   localization::PoseEstimate update;
   {
     std::lock_guard<std::mutex> engine(engine_mutex_);
+    if (!engine_) {  // use_map_topic, no map yet: the scan is kept for ~global_localization only
+      last_work_ = work;
+      return;
+    }
     update = engine_->update(work.scan, work.odom_base);
     const double now = ros::WallTime::now().toSec();
     if (engine_->mapGrows() && (last_map_publish_ < 0.0 || now - last_map_publish_ >= config_.map_publish_period)) {
@@ -206,16 +221,6 @@ void LocalizationNode::publishStatus(const ros::Time& stamp, const localization:
   status_pub_.publish(msg);
 }
 
-void LocalizationNode::publishMap(const localization::OccupancyMap& map) {
-  if (map.empty()) return;
-  nav_msgs::OccupancyGrid msg;
-  msg.header.stamp = ros::Time::now();
-  msg.header.frame_id = config_.global_frame;
-  msg.info.map_load_time = msg.header.stamp;
-  toOccupancyGrid(map, &msg);
-  map_pub_.publish(msg);
-}
-
 void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
   const auto& p = msg->pose.pose.position;
   const auto& o = msg->pose.pose.orientation;
@@ -243,7 +248,7 @@ void LocalizationNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStam
   localization::PoseEstimate estimate;
   {
     std::lock_guard<std::mutex> engine(engine_mutex_);
-    const std::string refused = engine_->setPose(pose, odom_base);
+    const std::string refused = engine_ ? engine_->setPose(pose, odom_base) : "/initialpose ignored: no map yet on the map topic";
     if (!refused.empty()) {
       ROS_WARN_STREAM_NAMED("localization", refused);
       return;
@@ -266,30 +271,15 @@ void LocalizationNode::poseJumped(const localization::PoseEstimate& estimate, bo
   publishStatus(ros::Time::now(), estimate);
 }
 
-bool LocalizationNode::onSaveMap(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
-  localization::OccupancyMap map;
-  {
-    std::lock_guard<std::mutex> engine(engine_mutex_);
-    response.message = engine_->mapToSave(&map);
-  }
-  if (!response.message.empty()) return true;
-  try {
-    localization::saveMap(config_.map_file, map);
-    response.success = true;
-    response.message = "saved " + config_.map_file + " (" + std::to_string(map.width) + " x " + std::to_string(map.height) + " cells)";
-    publishMap(map);
-  } catch (const std::exception& e) {
-    response.message = e.what();
-  }
-  ROS_INFO_STREAM_NAMED("localization", "~save_map: " << response.message);
-  return true;
-}
-
 bool LocalizationNode::onGlobalLocalization(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
   localization::GlobalSearch result;
   localization::PoseEstimate estimate;
   {
     std::lock_guard<std::mutex> engine(engine_mutex_);
+    if (!engine_) {
+      response.message = "no map yet on the map topic";
+      return true;
+    }
     if (!last_work_) {
       response.message = "no scan yet";
       return true;
@@ -312,7 +302,9 @@ bool LocalizationNode::onGlobalLocalization(std_srvs::Trigger::Request&, std_srv
 void LocalizationNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!output_.ready) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for scans (and tf " + config_.odom_frame + " -> laser)");
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, config_.use_map_topic && !measures_match_
+                                                                ? std::string("waiting for the map on the map topic")
+                                                                : "waiting for scans (and tf " + config_.odom_frame + " -> laser)");
   } else if (output_.estimate.lost) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "lost: the scans do not fit the map");
   } else if (!output_.estimate.localized) {
@@ -322,8 +314,8 @@ void LocalizationNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& sta
   }
   rate_->report(status, output_.ready);
   status.add("mode", config_.mode);
-  status.add("map file", config_.map_file);
-  if (engine_->measuresMatch()) {  // a map made of its own scans has no match to report
+  status.add("map file", config_.use_map_topic ? "(the map topic)" : config_.map_file);
+  if (measures_match_) {  // a map made of its own scans has no match to report
     status.add("match (fraction of beams on the map)", output_.estimate.match);
     status.add("ICP goodness", output_.estimate.icp_goodness);
   }

@@ -93,7 +93,7 @@ std::string readAliasedValue(const ros::NodeHandle& pnh, const std::string& key,
     if (*present) {
       rememberKey(pnh, a.alias);
       if (pnh.hasParam(a.alias))
-        ROS_WARN_STREAM_NAMED("params", "~" << a.alias << " (" << a.origin << "'s name for ~" << key
+        ROS_WARN_STREAM_NAMED("params", "~" << a.alias << " (~" << key << "'s name in " << a.origin
                                             << ") ignored: ~" << key << " is set too");
       continue;
     }
@@ -103,6 +103,7 @@ std::string readAliasedValue(const ros::NodeHandle& pnh, const std::string& key,
       *present = true;
       *out = alias_value;
       *read_as = a.alias;
+      ROS_INFO_STREAM_NAMED("params", "~" << a.alias << " read as ~" << key << " (its name in " << a.origin << ")");
       return "";
     }
   }

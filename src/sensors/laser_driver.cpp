@@ -76,11 +76,22 @@ bool LaserDriver::poll(LaserScanData* scan, double timeout) {
       return false;
     }
     ++counters_.opens;
+    motor_on_ = true;
     identity_ = device_->identity();
     last_scan_ = systemSeconds();
     last_error_.clear();
   }
   try {
+    const bool wanted = motor_wanted_;
+    if (wanted != motor_on_) {
+      device_->setMotor(wanted);
+      motor_on_ = wanted;
+      last_scan_ = systemSeconds();  // the stall clock starts when the motor does
+    }
+    if (!motor_on_) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(timeout));
+      return false;
+    }
     if (!device_->read(scan, static_cast<int>(std::ceil(timeout * 1000.0)))) {
       if (systemSeconds() - last_scan_ > config_.stall_timeout) {
         ++counters_.stalls;

@@ -63,12 +63,7 @@ class RplidarDevice : public LaserDevice {
     id << std::dec << ", " << standard_us << " us per sample";
     if (health.status == 1) id << ", health warning " << health.error_code;
     identity_ = id.str() + " at " + port;
-    write(rplidar::request(rplidar::kScan));
-    rplidar::Descriptor d;
-    const std::string error = rplidar::decodeDescriptor(readExactly(rplidar::kDescriptorSize, 2000), &d);
-    if (!error.empty() || d.type != rplidar::kMeasurementType || !d.multiple || d.length != rplidar::kNodeSize) {
-      throw failure("SCAN not acknowledged: " + (error.empty() ? "unexpected descriptor" : error));
-    }
+    startScan();
   }
 
   ~RplidarDevice() override {
@@ -115,7 +110,41 @@ class RplidarDevice : public LaserDevice {
 
   std::string identity() const override { return identity_; }
 
+  void setMotor(bool on) override {
+    int dtr = TIOCM_DTR;  // the A1/A2 USB adapter's motor line (no effect on a pty)
+    if (!on) {
+      write(rplidar::request(rplidar::kStop));
+      write(rplidar::request(rplidar::kSetMotorPwm, std::string{0, 0}));
+      ::ioctl(fd_, TIOCMBIS, &dtr);
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      discardInput();
+      buffer_.clear();  // the next revolution starts afresh
+      samples_.clear();
+      damage_.clear();
+      started_ = 0.0;
+      return;
+    }
+    ::ioctl(fd_, TIOCMBIC, &dtr);
+    startScan();
+  }
+
  private:
+  // The motor at its default duty (a device stopped by the last client stays stopped), then SCAN.
+  void startScan() {
+    const std::uint16_t pwm = rplidar::kDefaultMotorPwm;
+    write(rplidar::request(rplidar::kSetMotorPwm, std::string{static_cast<char>(pwm & 0xFF), static_cast<char>(pwm >> 8)}));
+    write(rplidar::request(rplidar::kScan));
+    // Nodes the device sent before it took a STOP may still arrive: skipped up to the descriptor.
+    std::string window = readExactly(rplidar::kDescriptorSize, 2000);
+    for (const double end = systemSeconds() + 2.0;;) {
+      rplidar::Descriptor d;
+      const std::string error = rplidar::decodeDescriptor(window, &d);
+      if (error.empty() && d.type == rplidar::kMeasurementType && d.multiple && d.length == rplidar::kNodeSize) return;
+      if (systemSeconds() > end) throw failure("SCAN not acknowledged: " + (error.empty() ? "unexpected descriptor" : error));
+      window = window.substr(1) + readExactly(1, 2000);
+    }
+  }
+
   std::runtime_error failure(const std::string& what) const { return std::runtime_error("rplidar " + port_ + ": " + what); }
 
   void write(const std::string& bytes) {

@@ -6,6 +6,8 @@
 // scan modes before any scan: two are reported, Standard (SCAN, 5-byte nodes) and Express
 // (EXPRESS_SCAN, 84-byte capsules), Express the typical one. Other commands with a payload
 // (size, bytes, XOR checksum) are skipped whole, as the device ignores what it does not know.
+// SET_MOTOR_PWM 0 stops the motor: no node is streamed until a PWM above 0 restarts it (a
+// SCAN meanwhile is acknowledged, its nodes wait for the motor), as a stopped A2 sends none.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -72,7 +74,7 @@ class RplidarSession : public LaserSession {
   }
 
   std::string stream(const EmulatedScan& scan) override {
-    if (mode_ == Mode::kIdle) return "";
+    if (mode_ == Mode::kIdle || !motor_on_) return "";
     return mode_ == Mode::kExpress ? capsules(scan) : nodes(scan);
   }
 
@@ -182,8 +184,14 @@ class RplidarSession : public LaserSession {
         pending_.clear();
         return encodeDescriptor({kCapsuleSize, true, kCapsuledType});
       }
+      case kSetMotorPwm:
+        if (payload.size() >= 2) motor_on_ = readLittleEndian(payload, 0, 2) > 0;
+        return "";
       case kStop: mode_ = Mode::kIdle; return "";
-      case kReset: mode_ = Mode::kIdle; return "RP LIDAR System.\r\nFirmware Ver 1.29 - rc4, HW Ver 7\r\nModel: 24\r\n";
+      case kReset:
+        mode_ = Mode::kIdle;
+        motor_on_ = true;
+        return "RP LIDAR System.\r\nFirmware Ver 1.29 - rc4, HW Ver 7\r\nModel: 24\r\n";
       default: return "";  // the device ignores what it does not know
     }
   }
@@ -194,6 +202,7 @@ class RplidarSession : public LaserSession {
   LaserModel model_;
   std::string serial_, buffer_;
   Mode mode_ = Mode::kIdle;
+  bool motor_on_ = true;  // spinning from power-up
   bool first_capsule_ = false;
   std::vector<PendingSample> pending_;
 };

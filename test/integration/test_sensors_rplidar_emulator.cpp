@@ -94,6 +94,26 @@ TEST(RplidarDriver, ReopensThePortAfterAStall) {
   EXPECT_GE(driver.counters().opens, 2u);
 }
 
+// rplidar_ros's stop_motor / start_motor: no scan while stopped, and that is no stall (the
+// port is not reopened); the same port scans again once started.
+TEST(RplidarDriver, StopsAndRestartsTheMotorWithoutReopening) {
+  const std::string link = amigobot_test::ptyLink("rplidar_motor");
+  LaserEmulator emulator("rplidar", {"--pty", link, "--tcp-port", "-1"});
+  LaserDriver driver(driverConfig("rplidar", link));
+  scans(driver, 2, 10.0);
+  driver.requestMotor(false);
+  LaserScanData scan;
+  int while_stopped = 0;
+  const double stopped_for = 2.5;  // > stall_timeout (1 s) and > 10 revolutions of 5.5 Hz
+  for (const double end = systemSeconds() + stopped_for; systemSeconds() < end;) while_stopped += driver.poll(&scan, 0.1);
+  EXPECT_EQ(while_stopped, 0) << "poll stops the motor before it reads";
+  EXPECT_EQ(driver.counters().stalls, 0u);
+  driver.requestMotor(true);
+  expectRevolutionTruth(scans(driver, 3, 10.0));
+  EXPECT_EQ(driver.counters().opens, 1u) << "stopping the motor is not a lost link: " << driver.lastError();
+  EXPECT_EQ(driver.counters().stalls, 0u);
+}
+
 TEST(RplidarDriver, RefusesATcpAddress) {
   EXPECT_THROW(driverConfig("rplidar", "127.0.0.1:2000").validate(), std::invalid_argument);
   EXPECT_NO_THROW(driverConfig("rplidar", "/dev/ttyUSB1").validate());

@@ -1,8 +1,10 @@
 // The Laser nodelet against laser_emulator, for each emulated protocol: LaserScan geometry
 // fields, monotonic stamps, every beam equal to the ray-cast truth within 1 mm, diagnostics
 // with the device identity, a clean unload; a bad parameter names itself and starts nothing.
+// An RPLIDAR's motor: stop_motor and start_motor (std_srvs/Empty, as rplidar_ros).
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -13,6 +15,7 @@
 #include <nodelet/loader.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
+#include <std_srvs/Empty.h>
 
 #include "amigobot_tracking/sensors/scan_source.h"
 #include "child_process.h"
@@ -145,6 +148,58 @@ TEST(LaserRos, HokuyoUrgOverScip) { runAgainst("hokuyo_urg"); }
 TEST(LaserRos, SickTim5xxOverColaA) { runAgainst("sick_tim5xx"); }
 
 TEST(LaserRos, SickLms1xxOverColaA) { runAgainst("sick_lms1xx"); }
+
+// The emulator streams no node while its motor is stopped (SET_MOTOR_PWM 0): no scan is
+// published, the port stays open (no stall), and start_motor brings the scans back.
+TEST(LaserRos, RplidarMotorStopsAndStartsAsRplidarRos) {
+  const std::string link = "/tmp/amigobot_laser_rostest_rplidar_" + std::to_string(::getpid());
+  const std::string world_file = link + ".yaml";
+  std::ofstream(world_file) << world::worldYaml(room());
+  amigobot_test::ChildProcess emulator;
+  const std::string line = emulator.start({AMIGOBOT_LASER_EMULATOR, "--model", "rplidar", "--pty", link, "--tcp-port", "-1",
+                                           "--world", world_file});
+  ASSERT_EQ(line.rfind("READY", 0), 0u) << line;
+  ros::param::set("/laser_rplidar/model", "rplidar");
+  ros::param::set("/laser_rplidar/port", link);
+  ros::NodeHandle nh;
+  std::atomic<int> scans{0};
+  auto scan_sub = nh.subscribe<sensor_msgs::LaserScan>("scan", 20, [&](const sensor_msgs::LaserScan::ConstPtr&) { ++scans; });
+  std::mutex mutex;
+  std::string opens;  // the diagnostics' count of opens
+  auto diag_sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+    for (const auto& s : m->status)
+      for (const auto& kv : s.values)
+        if (s.name.find("Laser rplidar") != std::string::npos && kv.key == "opens") {
+          std::lock_guard<std::mutex> l(mutex);
+          opens = kv.value;
+        }
+  });
+  nodelet::Loader loader(false);
+  ASSERT_TRUE(loader.load("/laser_rplidar", "amigobot_tracking/Laser", {}, {}));
+  auto waitForScans = [&](int count, double seconds) {
+    const int from = scans;
+    for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end && scans - from < count;)
+      ros::WallDuration(0.05).sleep();
+    return scans - from >= count;
+  };
+  ASSERT_TRUE(waitForScans(3, 20.0)) << "no scans from the RPLIDAR";
+  std_srvs::Empty empty;
+  ASSERT_TRUE(ros::service::waitForService("/stop_motor", ros::Duration(5.0)));
+  ASSERT_TRUE(ros::service::call("/stop_motor", empty));
+  ros::WallDuration(0.5).sleep();  // a scan already on its way
+  const int stopped = scans;
+  ros::WallDuration(2.5).sleep();  // > stall_timeout: stopping is no stall
+  EXPECT_EQ(scans - stopped, 0) << "scans while the motor is stopped";
+  ASSERT_TRUE(ros::service::call("/start_motor", empty));
+  EXPECT_TRUE(waitForScans(3, 10.0)) << "no scans after start_motor";
+  ros::WallDuration(1.2).sleep();  // one more diagnostics period
+  {
+    std::lock_guard<std::mutex> l(mutex);
+    EXPECT_EQ(opens, "1") << "the port was reopened: stopping the motor looked like a stall";
+  }
+  EXPECT_TRUE(loader.unload("/laser_rplidar"));
+  std::remove(world_file.c_str());
+}
 
 TEST(LaserRos, BadParameterStartsNothing) {
   ros::param::set("/bad_laser/model", "urg9");

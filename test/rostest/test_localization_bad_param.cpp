@@ -1,12 +1,16 @@
 // rostest: with a bad parameter (tf_rate 10 Hz, below 20) the nodelet logs a FATAL naming
 // ~tf_rate and starts nothing: no map -> odom, no services, even with scans and odometry
 // arriving; the manager survives and unloads it. The standalone localization_node with a
-// missing map exits 1 after its FATAL, every time, never aborting.
+// missing map exits 1 after its FATAL, every time, never aborting. A mapping map_file whose
+// folder cannot be created is refused the same way at start-up, naming the path.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
+#include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <string>
 
@@ -17,39 +21,55 @@
 #include "child_process.h"
 #include "synthetic_robot.h"
 
+namespace {
+
+// The FATAL lines on /rosout, subscribed (this process publishes /rosout) before a load.
+class FatalLog {
+ public:
+  FatalLog() {
+    sub_ = ros::NodeHandle().subscribe<rosgraph_msgs::Log>("/rosout", 100, [this](const rosgraph_msgs::Log::ConstPtr& msg) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (msg->level == rosgraph_msgs::Log::FATAL) text_ += msg->msg + "\n";
+    });
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(10.0);
+    while (sub_.getNumPublishers() == 0 && ros::WallTime::now() < end) ros::WallDuration(0.05).sleep();
+  }
+  // Waits up to 6 s for `part` in a FATAL line.
+  bool waitFor(const std::string& part) {
+    for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(6.0); ros::WallTime::now() < end;) {
+      if (text().find(part) != std::string::npos) return true;
+      ros::WallDuration(0.1).sleep();
+    }
+    return false;
+  }
+  std::string text() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return text_;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::string text_;
+  ros::Subscriber sub_;
+};
+
+}  // namespace
+
 TEST(LocalizationBadParam, NamesTheParameterAndStartsNothing) {
   ros::NodeHandle nh;
   std::atomic<int> map_to_odom{0};
   ros::Subscriber tf_sub = nh.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr& msg) {
     for (const auto& t : msg->transforms) map_to_odom += t.header.frame_id == "map";
   });
-  std::mutex mutex;
-  std::string fatal;
-  ros::Subscriber log_sub = nh.subscribe<rosgraph_msgs::Log>("/rosout", 100, [&](const rosgraph_msgs::Log::ConstPtr& msg) {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (msg->level == rosgraph_msgs::Log::FATAL) fatal += msg->msg + "\n";
-  });
-  // The log subscription is connected (this process publishes /rosout) before the load.
-  const ros::WallTime connect_end = ros::WallTime::now() + ros::WallDuration(10.0);
-  while (log_sub.getNumPublishers() == 0 && ros::WallTime::now() < connect_end) ros::WallDuration(0.05).sleep();
+  FatalLog log;
   ros::param::set("/localization/mode", "mapping");
   ros::param::set("/localization/tf_rate", 10.0);
   amigobot_test::SyntheticRobot robot(amigobot_test::kLoopStart, amigobot_test::Pose2{});
   nodelet::Loader loader(false);
   EXPECT_TRUE(loader.load("/localization", "amigobot_tracking/Localization", {}, {}));  // the manager survives
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(6.0);
-  while (ros::WallTime::now() < end) {
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (fatal.find("~tf_rate") != std::string::npos) break;
-    }
-    ros::WallDuration(0.1).sleep();
-  }
+  log.waitFor("~tf_rate");
   ros::WallDuration(2.0).sleep();  // scans keep coming: still nothing may start
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    EXPECT_NE(fatal.find("~tf_rate: must be"), std::string::npos) << "FATAL log: " << fatal;
-  }
+  EXPECT_TRUE(log.waitFor("~tf_rate: must be")) << "FATAL log: " << log.text();
   EXPECT_EQ(map_to_odom.load(), 0);
   EXPECT_FALSE(ros::service::exists("localization/save_map", false));
   EXPECT_FALSE(ros::service::exists("localization/global_localization", false));
@@ -73,6 +93,22 @@ TEST(LocalizationBadParam, StandaloneNodeWithAMissingMapExitsCleanlyEveryTime) {
     clean += !signalled && WIFEXITED(status) && WEXITSTATUS(status) == 1;
   }
   std::printf("localization_node with a missing map: %d of 20 runs exited 1 cleanly\n", clean);
+}
+
+TEST(LocalizationBadParam, AMapFolderThatCannotBeCreatedIsRefusedAtStartUp) {
+  FatalLog log;
+  const std::string file = "/tmp/amigobot_not_a_folder_" + std::to_string(::getpid());
+  std::ofstream(file) << "a file where the maps folder should be\n";
+  const std::string map_file = file + "/maps/lab.yaml";
+  ros::param::set("/mapping_refused/mode", "mapping");
+  ros::param::set("/mapping_refused/map_file", map_file);
+  nodelet::Loader loader(false);
+  EXPECT_TRUE(loader.load("/mapping_refused", "amigobot_tracking/Localization", {}, {}));
+  const std::string expected = "~map_file: " + map_file + ": cannot create the folder " + file + "/maps: " + file + " is not a folder";
+  EXPECT_TRUE(log.waitFor(expected)) << "FATAL log: " << log.text();
+  EXPECT_FALSE(ros::service::exists("mapping_refused/save_map", false));
+  EXPECT_TRUE(loader.unload("/mapping_refused"));
+  std::filesystem::remove(file);
 }
 
 int main(int argc, char** argv) {

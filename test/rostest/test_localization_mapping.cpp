@@ -1,6 +1,7 @@
 // rostest: the Localization nodelet in mapping mode (ICP-SLAM) driven through the synthetic
-// room: the latched `map` grows, map -> odom follows the drive, and ~save_map writes map files
-// that load and whose walls are the room's.
+// room: the latched `map` grows with its `map_metadata`, map -> odom follows the drive, and
+// ~save_map writes map files that load and whose walls are the room's, into a folder that did
+// not exist (created); ~save_map_to writes them to the path it is given.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -8,9 +9,12 @@
 #include <atomic>
 #include <filesystem>
 
+#include <nav_msgs/MapMetaData.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nodelet/loader.h>
 #include <std_srvs/Trigger.h>
+
+#include "amigobot_tracking/SaveMap.h"
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -20,7 +24,9 @@
 using namespace amigobot_test;
 
 TEST(LocalizationNodelet, MapsTheRoomAndSavesTheMap) {
-  const std::string map_file = "/tmp/amigobot_mapping_rostest_" + std::to_string(::getpid()) + ".yaml";
+  // A folder that does not exist yet, as ~/maps on a fresh account.
+  const std::string folder = "/tmp/amigobot_mapping_rostest_" + std::to_string(::getpid());
+  const std::string map_file = folder + "/maps/lab.yaml";
   const std::string pgm_file = map_file.substr(0, map_file.size() - 5) + ".pgm";
   ros::NodeHandle nh;
   std::mutex mutex;
@@ -28,6 +34,11 @@ TEST(LocalizationNodelet, MapsTheRoomAndSavesTheMap) {
   ros::Subscriber map_sub = nh.subscribe<nav_msgs::OccupancyGrid>("/map", 5, [&](const nav_msgs::OccupancyGrid::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex);
     known_cells.push_back(static_cast<std::size_t>(std::count_if(msg->data.begin(), msg->data.end(), [](std::int8_t v) { return v >= 0; })));
+  });
+  std::vector<nav_msgs::MapMetaData> metadata;
+  ros::Subscriber metadata_sub = nh.subscribe<nav_msgs::MapMetaData>("/map_metadata", 5, [&](const nav_msgs::MapMetaData::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex);
+    metadata.push_back(*msg);
   });
   ros::param::set("/mapping/mode", "mapping");
   ros::param::set("/mapping/map_file", map_file);
@@ -54,6 +65,9 @@ TEST(LocalizationNodelet, MapsTheRoomAndSavesTheMap) {
     std::lock_guard<std::mutex> lock(mutex);
     ASSERT_GE(known_cells.size(), 5u) << "the map is republished every map_publish_period";
     EXPECT_GT(known_cells.back(), known_cells.front()) << "and grows as the robot explores";
+    ASSERT_GE(metadata.size(), 5u) << "map_metadata with every map, as map_server";
+    EXPECT_NEAR(metadata.back().resolution, 0.05, 1e-6);
+    EXPECT_GT(metadata.back().width * metadata.back().height, 0u);
   }
 
   std_srvs::Trigger save;
@@ -72,9 +86,19 @@ TEST(LocalizationNodelet, MapsTheRoomAndSavesTheMap) {
   }
   EXPECT_GT(occupied, 200);
   EXPECT_GT(static_cast<double>(on_walls) / std::max(1, occupied), 0.9) << on_walls << " of " << occupied;
+  // ~save_map_to: a path of its own (map_saver's -f NAME: ".yaml" added), its folder created.
+  amigobot_tracking::SaveMap save_to;
+  save_to.request.path = folder + "/elsewhere/lab2";
+  ASSERT_TRUE(ros::service::call("/mapping/save_map_to", save_to));
+  EXPECT_TRUE(save_to.response.success) << save_to.response.message;
+  EXPECT_EQ(loc::loadMap(folder + "/elsewhere/lab2.yaml").width, map.width);
+  EXPECT_TRUE(std::filesystem::exists(folder + "/elsewhere/lab2.pgm"));
+  save_to.request.path = pgm_file + "/under_a_file.yaml";  // a folder that cannot be made: named
+  ASSERT_TRUE(ros::service::call("/mapping/save_map_to", save_to));
+  EXPECT_FALSE(save_to.response.success);
+  EXPECT_NE(save_to.response.message.find("cannot create the folder " + pgm_file), std::string::npos) << save_to.response.message;
   EXPECT_TRUE(loader.unload("/mapping"));
-  std::filesystem::remove(map_file);
-  std::filesystem::remove(pgm_file);
+  std::filesystem::remove_all(folder);
 }
 
 int main(int argc, char** argv) {

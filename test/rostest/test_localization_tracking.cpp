@@ -1,7 +1,9 @@
 // rostest: the Localization nodelet on a known map (the synthetic room, scans and odometry
 // from the test): map -> odom at >= 20 Hz stamped ahead, the pose converges from a wrong
 // initial pose, /initialpose moves the estimate, ~global_localization finds a kidnapped robot,
-// ~pose and /diagnostics report it; bad /initialpose messages are refused.
+// ~pose and /diagnostics report it; bad /initialpose messages are refused; map and map_metadata
+// are published latched. With use_map_topic (amcl's) it localises on a map a map_server
+// publishes on /map instead.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -13,6 +15,8 @@
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <nav_msgs/MapMetaData.h>
+#include <nav_msgs/OccupancyGrid.h>
 #include <nodelet/loader.h>
 #include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
@@ -59,6 +63,14 @@ struct Fixture {
   }
 };
 
+// The nodelet `ns` localises, starting `off` the truth.
+void setStart(const std::string& ns, const Pose2& off) {
+  ros::param::set(ns + "/mode", "localization");
+  ros::param::set(ns + "/initial_pose/x", kTruth.x + off.x);
+  ros::param::set(ns + "/initial_pose/y", kTruth.y + off.y);
+  ros::param::set(ns + "/initial_pose/yaw", kTruth.theta + off.theta);
+}
+
 }  // namespace
 
 TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
@@ -88,12 +100,8 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
       for (const auto& kv : s.values) diagnostics += "|" + kv.key + "=" + kv.value;
     }
   });
-  ros::param::set("/localization/mode", "localization");
   ros::param::set("/localization/map_file", map_file);
-  // Wrong by 0.4 m and 17 deg.
-  ros::param::set("/localization/initial_pose/x", kTruth.x + 0.3);
-  ros::param::set("/localization/initial_pose/y", kTruth.y - 0.25);
-  ros::param::set("/localization/initial_pose/yaw", kTruth.theta + 0.3);
+  setStart("/localization", Pose2{0.3, -0.25, 0.3});  // wrong by 0.4 m and 17 deg
   SyntheticRobot robot(kTruth, kMapToOdom);
   Fixture f;
   nodelet::Loader loader(false);
@@ -145,6 +153,12 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
   ASSERT_TRUE(ros::service::waitForService("/global_localization", ros::Duration(5.0)));
   ASSERT_TRUE(ros::service::call("/global_localization", empty));
   EXPECT_TRUE(f.near(kidnapped_again, 0.05, 0.03, 5.0)) << "after amcl's global_localization";
+  // map_metadata latched with the map, as map_server.
+  const auto metadata = ros::topic::waitForMessage<nav_msgs::MapMetaData>("/map_metadata", ros::Duration(5.0));
+  ASSERT_TRUE(metadata);
+  EXPECT_EQ(static_cast<int>(metadata->width), roomMap().width);
+  EXPECT_EQ(static_cast<int>(metadata->height), roomMap().height);
+  EXPECT_NEAR(metadata->origin.position.x, roomMap().origin_x, 1e-9);
   // Mapping's service is refused in this mode, naming why.
   std_srvs::Trigger save;
   ASSERT_TRUE(ros::service::call("/localization/save_map", save));
@@ -228,6 +242,35 @@ TEST(LocalizationNodelet, BadInitialPosesAreRefused) {
   EXPECT_TRUE(loader.unload("/localization"));
   std::filesystem::remove(map_file);
   std::filesystem::remove(map_file.substr(0, map_file.size() - 5) + ".pgm");
+}
+
+// amcl's use_map_topic: no map_file; the map comes latched on /map from a map_server (here
+// the test), and the pose converges on it as on a file.
+TEST(LocalizationNodelet, LocalisesOnTheMapOfTheMapTopic) {
+  ros::NodeHandle nh;
+  ros::param::set("/localization_on_topic/use_map_topic", true);
+  setStart("/localization_on_topic", Pose2{0.3, -0.25, 0.3});  // as on the file above
+  SyntheticRobot robot(kTruth, kMapToOdom);
+  Fixture f;
+  nodelet::Loader loader(false);
+  ASSERT_TRUE(loader.load("/localization_on_topic", "amigobot_tracking/Localization", {}, {}));
+  ros::WallDuration(1.5).sleep();
+  EXPECT_FALSE(f.estimate()) << "no map -> odom before a map";
+  const loc::OccupancyMap room = roomMap();
+  nav_msgs::OccupancyGrid grid;
+  grid.header.frame_id = "map";
+  grid.header.stamp = ros::Time::now();
+  grid.info.resolution = static_cast<float>(room.resolution);
+  grid.info.width = static_cast<std::uint32_t>(room.width);
+  grid.info.height = static_cast<std::uint32_t>(room.height);
+  grid.info.origin.position.x = room.origin_x;
+  grid.info.origin.position.y = room.origin_y;
+  grid.info.origin.orientation.w = 1.0;
+  grid.data.assign(room.cells.begin(), room.cells.end());
+  ros::Publisher map_pub = nh.advertise<nav_msgs::OccupancyGrid>("/map", 1, true);  // a map_server
+  map_pub.publish(grid);
+  EXPECT_TRUE(f.near(kTruth, 0.03, 0.02, 10.0)) << "on the map of /map";
+  EXPECT_TRUE(loader.unload("/localization_on_topic"));
 }
 
 int main(int argc, char** argv) {

@@ -1,7 +1,9 @@
 // rostest: the ROS parameter reader over the controller table: an int is accepted for a
 // real, a wrong type and a bound violation are errors naming the parameter, nested keys are
 // namespaces, and unset parameters keep the struct's defaults; RosAria's names are aliases of
-// the driver's; a parameter no reader asks for is warned on /rosout with the nearest key.
+// the driver's; a parameter no reader asks for is warned on /rosout with the nearest key. A
+// lab's urg_node, rplidar_ros, sick_tim, amcl and slam_toolbox configs (lab_configs.yaml,
+// loaded by param_reader.test) are read through their aliases, each with an INFO line.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -12,6 +14,8 @@
 
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/ros/driver.h"
+#include "amigobot_tracking/ros/laser_scan.h"
+#include "amigobot_tracking/ros/localization_node.h"
 #include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/tracking_params.h"
 
@@ -25,6 +29,46 @@ ros::NodeHandle freshNamespace(const std::string& name) {
   pnh.deleteParam("");
   return pnh;
 }
+
+// The /rosout lines of one level, from the test's start.
+class RosoutLines {
+ public:
+  explicit RosoutLines(std::uint8_t level) {
+    sub_ = ros::NodeHandle().subscribe<rosgraph_msgs::Log>("/rosout", 200, [this, level](const rosgraph_msgs::Log::ConstPtr& m) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (m->level == level) lines_.push_back(m->msg);
+    });
+    // Lines logged before /rosout reaches the subscriber would be missed.
+    for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(5.0);
+         sub_.getNumPublishers() == 0 && ros::WallTime::now() < end;)
+      ros::WallDuration(0.02).sleep();
+  }
+  // Waits up to 5 s for a line containing `text`.
+  bool saw(const std::string& text) {
+    for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(5.0); ros::WallTime::now() < end;) {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (const std::string& line : lines_)
+          if (line.find(text) != std::string::npos) return true;
+      }
+      ros::WallDuration(0.05).sleep();
+    }
+    return false;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::string> lines_;
+  ros::Subscriber sub_;
+};
+
+std::vector<std::string> unknownKeys(const ros::NodeHandle& pnh) {
+  std::vector<std::string> keys;
+  for (const core::UnknownKey& u : ros_layer::unknownParams(pnh)) keys.push_back(u.key);
+  return keys;
+}
+
+using Keys = std::vector<std::string>;
 
 }  // namespace
 
@@ -146,6 +190,92 @@ TEST(ParamReader, UnknownParametersAreWarnedByNameWithTheNearestKey) {
   }
   EXPECT_TRUE(seen_typo) << "no warning '" << expected << "...; did you mean ~k_d?'";
   EXPECT_TRUE(seen_button);
+}
+
+TEST(LabConfigs, UrgNodeNamesAreTheLasersOwn) {
+  RosoutLines info(rosgraph_msgs::Log::INFO);
+  const ros::NodeHandle ethernet("/lab_configs/urg_node");
+  const ros_layer::LaserParams p = ros_layer::loadLaserParams(ethernet);
+  EXPECT_EQ(p.driver.port, "192.168.0.10:10940") << "ip_address + ip_port";
+  EXPECT_EQ(p.frame_id, "hokuyo_link");
+  EXPECT_DOUBLE_EQ(p.angle_min, -1.5707963);
+  EXPECT_DOUBLE_EQ(p.time_offset, 0.02);
+  EXPECT_EQ(unknownKeys(ethernet), (Keys{"calibrate_time", "publish_intensity"})) << "not carried: warned";
+  EXPECT_TRUE(info.saw("/lab_configs/urg_node/port = 192.168.0.10:10940 (from urg_node's ~ip_address and ~ip_port)"));
+  const ros::NodeHandle serial("/lab_configs/urg_node_serial");
+  EXPECT_EQ(ros_layer::loadLaserParams(serial).driver.port, "/dev/ttyACM1");
+  EXPECT_TRUE(info.saw("~serial_port read as ~port (its name in urg_node and rplidar_ros)"));
+  EXPECT_EQ(unknownKeys(serial), (Keys{"serial_baud"}));
+}
+
+TEST(LabConfigs, RplidarRosAndSickTimNamesAreTheLasersOwn) {
+  const ros::NodeHandle rplidar("/lab_configs/rplidar_ros");
+  const ros_layer::LaserParams r = ros_layer::loadLaserParams(rplidar);
+  EXPECT_EQ(r.driver.port, "/dev/ttyUSB1");
+  EXPECT_EQ(r.driver.baud, 256000);
+  EXPECT_TRUE(r.upside_down) << "inverted";
+  EXPECT_EQ(unknownKeys(rplidar), (Keys{"angle_compensate"}));
+  const ros::NodeHandle sick("/lab_configs/sick_tim");
+  const ros_layer::LaserParams t = ros_layer::loadLaserParams(sick);
+  EXPECT_EQ(t.driver.port, "192.168.0.71:2112") << "hostname + sick_tim's port";
+  EXPECT_DOUBLE_EQ(t.angle_min, -2.0);
+  EXPECT_DOUBLE_EQ(t.angle_max, 2.0);
+  EXPECT_DOUBLE_EQ(t.range_min, 0.05);
+  EXPECT_TRUE(unknownKeys(sick).empty());
+}
+
+TEST(LabConfigs, AmclAndSlamToolboxNamesAreTheLocalisationsOwn) {
+  const ros::NodeHandle amcl("/lab_configs/amcl");
+  const localization::LocalizationConfig a = ros_layer::loadLocalizationConfig(amcl);
+  EXPECT_TRUE(a.use_map_topic);
+  EXPECT_DOUBLE_EQ(a.initial_pose.x, 1.5);
+  EXPECT_DOUBLE_EQ(a.initial_pose.y, -0.5);
+  EXPECT_DOUBLE_EQ(a.initial_pose.theta, 0.3);
+  EXPECT_EQ(a.global_frame, "world");
+  EXPECT_EQ(a.odom_frame, "r1/odom");
+  EXPECT_EQ(a.base_frame, "r1/base_footprint");
+  EXPECT_DOUBLE_EQ(a.min_travel, 0.2);
+  EXPECT_DOUBLE_EQ(a.min_rotation, 0.5236);
+  EXPECT_DOUBLE_EQ(a.transform_tolerance, 0.2);
+  EXPECT_EQ(unknownKeys(amcl), (Keys{"laser_max_range"}));
+  const ros::NodeHandle slam("/lab_configs/slam_toolbox");
+  const localization::LocalizationConfig m = ros_layer::loadLocalizationConfig(slam);
+  EXPECT_EQ(m.mode, "mapping");
+  EXPECT_EQ(m.global_frame, "slam_map");
+  EXPECT_EQ(m.base_frame, "base_link");
+  EXPECT_DOUBLE_EQ(m.resolution, 0.04);
+  EXPECT_DOUBLE_EQ(m.map_publish_period, 5.0);
+  EXPECT_DOUBLE_EQ(m.range_max, 12.0);
+  EXPECT_DOUBLE_EQ(m.min_travel, 0.5);
+  EXPECT_DOUBLE_EQ(m.min_rotation, 0.4);
+  EXPECT_EQ(unknownKeys(slam), (Keys{"scan_topic"}));
+}
+
+TEST(LabConfigs, OurOwnNameWinsOverAnAliasAndTheAliasIsWarned) {
+  RosoutLines warn(rosgraph_msgs::Log::WARN);
+  ros::NodeHandle laser = freshNamespace("both_laser");
+  laser.setParam("port", std::string("/dev/ttyACM0"));
+  laser.setParam("serial_port", std::string("/dev/ttyACM1"));
+  laser.setParam("ip_address", std::string("192.168.0.10"));
+  EXPECT_EQ(ros_layer::loadLaserParams(laser).driver.port, "/dev/ttyACM0");
+  EXPECT_TRUE(warn.saw("~serial_port (~port's name in urg_node and rplidar_ros) ignored: ~port is set too"));
+  EXPECT_TRUE(warn.saw("~ip_address (urg_node's ~ip_address and ~ip_port) ignored: ~port is set too"));
+  ros::NodeHandle loc = freshNamespace("both_localization");
+  loc.setParam("map_file", std::string("/tmp/none.yaml"));
+  loc.setParam("mode", std::string("mapping"));
+  loc.setParam("initial_pose/x", 2.0);
+  loc.setParam("initial_pose_x", 3.0);
+  EXPECT_DOUBLE_EQ(ros_layer::loadLocalizationConfig(loc).initial_pose.x, 2.0);
+  EXPECT_TRUE(warn.saw("~initial_pose_x (~initial_pose/x's name in amcl) ignored: ~initial_pose/x is set too"));
+  ros::NodeHandle bad = freshNamespace("bad_laser_alias");
+  bad.setParam("model", std::string("rplidar"));
+  bad.setParam("serial_baudrate", 9600);
+  try {
+    ros_layer::loadLaserParams(bad);
+    ADD_FAILURE() << "serial_baudrate 9600 was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("baud: rplidar runs at 115200 or 256000, got 9600"), std::string::npos) << e.what();
+  }
 }
 
 int main(int argc, char** argv) {

@@ -119,6 +119,21 @@ TEST(RplidarSession, AnswersInfoHealthAndStreamsNodesAfterScan) {
   EXPECT_EQ(session->receive(bytes({0xA5, 0xF0, 0x02, 0x94, 0x02, 0xC1}) + rplidar::request(rplidar::kGetHealth), scan), health);
 }
 
+TEST(RplidarSession, MotorPwmZeroStopsTheNodesUntilThePwmRestartsIt) {
+  auto session = makeSession(laserModel("rplidar"), "SERIAL");
+  EmulatedScan scan;
+  scan.ranges = {1.0f, 2.0f};
+  scan.angles = {0.0f, 1.0f};
+  session->receive(rplidar::request(rplidar::kScan), scan);
+  ASSERT_EQ(session->stream(scan).size(), 10u) << "spinning from power-up";
+  EXPECT_EQ(session->receive(rplidar::request(rplidar::kSetMotorPwm, std::string(2, '\0')), scan), "") << "no answer";
+  EXPECT_EQ(session->stream(scan), "") << "a stopped motor measures nothing";
+  EXPECT_EQ(session->receive(rplidar::request(rplidar::kScan), scan).size(), rplidar::kDescriptorSize);
+  EXPECT_EQ(session->stream(scan), "") << "SCAN alone does not spin the motor";
+  session->receive(rplidar::request(rplidar::kSetMotorPwm, std::string{static_cast<char>(0x94), 0x02}), scan);  // 660
+  EXPECT_EQ(session->stream(scan).size(), 10u);
+}
+
 TEST(Rplidar, CapsulesCarryTheirChecksumStartBitAndMillimetreDistances) {
   rplidar::Capsule in;
   in.start = true;

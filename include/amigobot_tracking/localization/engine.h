@@ -39,6 +39,9 @@ class Engine {
 // The engine of config.mode: "localization" on config.map_file (throws std::runtime_error
 // "parameter ~map_file: ..." for a bad file), "mapping" (ICP-SLAM or graph).
 std::unique_ptr<Engine> makeEngine(const LocalizationConfig& config);
+// Localisation on a map received rather than read (use_map_topic); throws std::runtime_error
+// for an empty map.
+std::unique_ptr<Engine> makeEngine(const LocalizationConfig& config, const OccupancyMap& map);
 
 }  // namespace localization
 }  // namespace amigobot_tracking

@@ -42,8 +42,8 @@ OccupancyMap makeMap(double resolution, double origin_x, double origin_y, int wi
 // std::runtime_error "FILE: KEY: what is wrong" (or "FILE: what is wrong" for the image).
 OccupancyMap loadMap(const std::string& yaml_path);
 
-// Writes yaml_path and, beside it, the PGM named like it (map.yaml -> map.pgm). Throws
-// std::runtime_error naming the file that cannot be written.
+// Writes yaml_path and, beside it, the PGM named like it (map.yaml -> map.pgm), creating the
+// folder when missing. Throws std::runtime_error naming the file that cannot be written.
 void saveMap(const std::string& yaml_path, const OccupancyMap& map);
 
 }  // namespace localization

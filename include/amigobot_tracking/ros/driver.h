@@ -58,9 +58,6 @@ struct DriverParams {
 // The driver's ROS parameters: its own rows and aria::clientFields(), flat.
 const core::FieldTable<DriverParams>& driverFields();
 
-// RosAria's names of some parameters (TicksMM -> ticks_mm, ...), read when the driver's own is unset.
-const std::vector<ParamAlias>& rosAriaAliases();
-
 // Reads the private parameters (docs/ros_api.md); throws std::runtime_error("~key: reason").
 DriverParams loadDriverParams(const ros::NodeHandle& pnh);
 

@@ -2,7 +2,8 @@
 // (sensor_msgs/LaserScan, laser_scan.h) and /diagnostics (scan rate through FrequencyStatus,
 // device identity, counters, last error). The device I/O runs on its own thread; the
 // destructor stops it and closes the device. Shared by the nodelet amigobot_tracking/Laser
-// and the node laser_node.
+// and the node laser_node. An RPLIDAR's motor: the services start_motor and stop_motor
+// (std_srvs/Empty, as rplidar_ros).
 #pragma once
 
 #include <atomic>
@@ -13,6 +14,7 @@
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
+#include <std_srvs/Empty.h>
 
 #include "amigobot_tracking/ros/laser_scan.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
@@ -35,10 +37,13 @@ class LaserNode {
   void loop();  // I/O thread
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   void reportLink(bool got_scan);  // the console's lines about the device (mutex_ held)
+  bool onMotor(bool on);
 
   LaserParams params_;
   ros::NodeHandle nh_, pnh_;
   ros::Publisher scan_pub_;
+  ros::ServiceServer start_motor_srv_, stop_motor_srv_;  // rplidar only
+  std::atomic<bool> motor_wanted_{true};
   diagnostic_updater::Updater updater_;
   std::unique_ptr<RateMonitor> rate_;
   ros::Timer diagnostics_timer_;

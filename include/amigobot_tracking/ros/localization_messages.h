@@ -2,6 +2,8 @@
 // OccupancyMap -> nav_msgs/OccupancyGrid, tf <-> Pose2, the estimate -> PoseWithCovariance.
 #pragma once
 
+#include <string>
+
 #include <Eigen/Core>
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/PoseWithCovariance.h>
@@ -24,6 +26,9 @@ core::Pose2 toPose2(const geometry_msgs::Pose& pose);
 geometry_msgs::Transform toTransform(const core::Pose2& pose);
 // Grid data and metadata; the header is the caller's.
 void toOccupancyGrid(const localization::OccupancyMap& map, nav_msgs::OccupancyGrid* out);
+// A received grid (a map_server's): "" and *out, or what is wrong with it (size, resolution,
+// a rotated origin, a cell outside -1 .. 100).
+std::string fromOccupancyGrid(const nav_msgs::OccupancyGrid& grid, localization::OccupancyMap* out);
 // (x, y, yaw) covariance into the 6 x 6 row-major one of (x, y, z, roll, pitch, yaw).
 geometry_msgs::PoseWithCovariance toPoseWithCovariance(const core::Pose2& pose, const Eigen::Matrix3d& covariance);
 

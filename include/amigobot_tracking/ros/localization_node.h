@@ -3,9 +3,10 @@
 // odometry from tf odom -> base; each scan is handed to a worker thread that runs the
 // localisation Engine of the mode (engine.h: on map_file, or mapping), never asking which. A tf
 // thread publishes map -> odom at tf_rate, stamped transform_tolerance ahead (as amcl does),
-// so lookups at "now" succeed between scans. Publishes `map` (latched OccupancyGrid; mapping:
-// every map_publish_period), ~pose and /diagnostics; takes /initialpose; serves ~save_map
-// and ~global_localization.
+// so lookups at "now" succeed between scans. Publishes `map` and `map_metadata` (latched, as
+// map_server; mapping: every map_publish_period), ~pose and /diagnostics; takes /initialpose
+// and, with use_map_topic, the map from `map` (as amcl); serves ~save_map, ~save_map_to and
+// ~global_localization.
 #pragma once
 
 #include <atomic>
@@ -19,6 +20,7 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <message_filters/subscriber.h>
+#include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_srvs/Empty.h>
@@ -28,6 +30,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "amigobot_tracking/SaveMap.h"
 #include "amigobot_tracking/localization/engine.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 #include "amigobot_tracking/ros/refusal_log.h"
@@ -38,6 +41,9 @@ namespace ros_layer {
 
 // Reads the private parameters; throws std::runtime_error naming the bad one.
 localization::LocalizationConfig loadLocalizationConfig(const ros::NodeHandle& pnh);
+// Why a map could not be saved to yaml_path's folder (not a folder, or the nearest existing
+// one not writable), naming it; "" when it exists writable or can be created.
+std::string mapFolderProblem(const std::string& yaml_path);
 
 class LocalizationNode {
  public:
@@ -63,6 +69,11 @@ class LocalizationNode {
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg);
   void onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg);
   bool onSaveMap(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  bool onSaveMapTo(SaveMap::Request& request, SaveMap::Response& response);
+  // Writes the engine's map to yaml_path; false with *message saying why not.
+  bool saveMapTo(const std::string& yaml_path, std::string* message);
+  // use_map_topic: a map_server's map; the engine is made (or remade, keeping the pose) on it.
+  void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg);
   bool onGlobalLocalization(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   // amcl's global_localization (std_srvs/Empty): the same search; the outcome is logged.
   bool onAmclGlobalLocalization(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
@@ -88,14 +99,15 @@ class LocalizationNode {
   StampGate tf_gate_;  // map -> odom only when its stamp advances (use_sim_time replays)
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> filter_;
-  ros::Subscriber initial_pose_sub_;
-  ros::Publisher map_pub_, pose_pub_, status_pub_, amcl_pose_pub_;  // amcl_pose: ~pose under amcl's name
-  ros::ServiceServer save_map_srv_, global_srv_, amcl_global_srv_;
+  ros::Subscriber initial_pose_sub_, map_sub_;
+  ros::Publisher map_pub_, map_metadata_pub_, pose_pub_, status_pub_, amcl_pose_pub_;  // amcl_pose: ~pose under amcl's name
+  ros::ServiceServer save_map_srv_, save_map_to_srv_, global_srv_, amcl_global_srv_;
   diagnostic_updater::Updater updater_;
   ros::Timer diagnostics_timer_;
 
   std::mutex engine_mutex_;  // guards the engine (worker, services, /initialpose)
-  std::unique_ptr<localization::Engine> engine_;
+  std::unique_ptr<localization::Engine> engine_;  // null until use_map_topic's first map
+  std::atomic<bool> measures_match_{false};       // engine_->measuresMatch(), for diagnostics
   std::optional<Work> last_work_;  // the last scan processed, for ~global_localization
   double last_map_publish_ = -1.0;
 

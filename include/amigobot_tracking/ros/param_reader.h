@@ -20,12 +20,13 @@ namespace ros_layer {
 // no reader asked for is warned, naming the key, the node and the nearest known key (a typo
 // or a config copied from another driver would otherwise fall back to a default silently).
 
-// Another driver's name for a field ("TicksMM", RosAria's for "ticks_mm"): read when the
-// field's own key is unset; ignored, with a warning, when both are.
+// Another driver's name for a field ("TicksMM", RosAria's for "ticks_mm"; param_aliases.h):
+// read when the field's own key is unset, with an INFO line naming the mapping; ignored, with
+// a warning, when both are.
 struct ParamAlias {
   std::string alias;
   std::string key;
-  std::string origin;  // "RosAria"
+  std::string origin;  // the driver(s) using the name: "RosAria", "urg_node and rplidar_ros"
 };
 
 // Reads ~key as `type`: "" with *present false when unset; "~key: must be ..." on a wrong type.
@@ -69,8 +70,8 @@ std::string readFields(const ros::NodeHandle& pnh, const core::FieldTable<C>& ta
 // readFields, then config->validate() for the rules across fields.
 template <class C>
 std::string readParams(const ros::NodeHandle& pnh, const core::FieldTable<C>& table, C* config,
-                       const std::string& prefix = "") {
-  const std::string error = readFields(pnh, table, config, prefix);
+                       const std::string& prefix = "", const std::vector<ParamAlias>& aliases = {}) {
+  const std::string error = readFields(pnh, table, config, prefix, aliases);
   if (!error.empty()) return error;
   const std::string invalid = config->validate();
   return invalid.empty() ? "" : "~" + prefix + invalid;

@@ -39,6 +39,10 @@ class LaserDevice {
   // ScanError for a damaged scan, std::runtime_error once the link is broken.
   virtual bool read(LaserScanData* scan, int timeout_ms) = 0;
   virtual std::string identity() const = 0;  // model, firmware, serial as the device says
+  // Stops (scanning and the motor) or restarts a device with a motor of its own (RPLIDAR:
+  // rplidar_ros's stop_motor / start_motor); throws std::runtime_error once the link is broken.
+  // The others always spin: nothing to do.
+  virtual void setMotor(bool /*on*/) {}
 };
 
 // Opens (connects, configures, starts the measurement) or throws std::runtime_error naming

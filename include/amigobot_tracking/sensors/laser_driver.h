@@ -3,6 +3,7 @@
 // to 8 times that). Not thread-safe: one I/O thread calls poll().
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -35,6 +36,11 @@ class LaserDriver {
   // scan; false otherwise (lastError() says why, empty when the scan simply is not due).
   bool poll(LaserScanData* scan, double timeout);
   bool connected() const { return device_ != nullptr; }
+  // The motor stopped or running (rplidar_ros's stop_motor / start_motor): callable from any
+  // thread; poll() applies it, also to a device it reopens. While stopped no scan comes, and
+  // that is no stall.
+  void requestMotor(bool on) { motor_wanted_ = on; }
+  bool motorRunning() const { return motor_wanted_; }
   std::string identity() const { return identity_; }
   const std::string& lastError() const { return last_error_; }
   const LaserDriverCounters& counters() const { return counters_; }
@@ -49,6 +55,8 @@ class LaserDriver {
   LaserDriverCounters counters_;
   double next_open_ = 0.0, backoff_ = 0.0, last_scan_ = 0.0;
   std::uint64_t sequence_ = 0;
+  std::atomic<bool> motor_wanted_{true};
+  bool motor_on_ = true;  // as the open device was last told (a device opens spinning)
 };
 
 }  // namespace sensors

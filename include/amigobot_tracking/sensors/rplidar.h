@@ -23,7 +23,9 @@ enum Command : std::uint8_t {
   kStop = 0x25, kReset = 0x40, kScan = 0x20, kForceScan = 0x21,
   kGetInfo = 0x50, kGetHealth = 0x52, kGetSampleRate = 0x59,
   kExpressScan = 0x82, kGetLidarConf = 0x84,  // firmware >= 1.17, >= 1.24
+  kSetMotorPwm = 0xF0,  // payload: u16 PWM duty, 0 stops the motor (A2/A3; the A1's USB adapter: DTR)
 };
+constexpr std::uint16_t kDefaultMotorPwm = 660;  // Slamtec's SDK's default duty
 enum DataType : std::uint8_t {
   kInfoType = 0x04, kHealthType = 0x06, kMeasurementType = 0x81, kCapsuledType = 0x82, kSampleRateType = 0x15,
   kLidarConfType = 0x20,
