@@ -26,6 +26,7 @@ RESULTS := $(WS)/build/test_results
 timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
 
 PHONY := deps deps-workstation deps-robot build test two-machines soak demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
+PHONY += test-under-load
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
@@ -69,6 +70,16 @@ TWO_MACHINES = $(SETUP) && timeout -k 30 230 $(ROOT)/scripts/test/two_machines.p
 two-machines: build ## the two-Odroid experiment on two network namespaces: tracking, link cut, traffic (~1 min, root)
 	$(call timed,two machines,$(TWO_MACHINES))
 
+# Not in `make test`: the end-to-end rostests with BUSY spinning processes on the cores, PASSES
+# times (scripts/test/under_load.py): each pass's failures with their first line, then
+# `under load: P of N passes clean`. ONLY="diamond tracking" runs those tests alone.
+PASSES ?= 1
+BUSY ?= 2
+test-under-load: build ## the end-to-end rostests with two busy loops on the cores (PASSES=5 BUSY=2 ONLY="diamond"), ~8 min a pass
+	$(CATKIN) amigobot_e2e_nodes
+	$(call timed,e2e under load,$(ROOT)/scripts/test/under_load.py --ws $(WS) --passes $(PASSES) --busy $(BUSY) \
+	  --jobs $(JOBS) $(if $(ONLY),--only $(ONLY)))
+
 # Not in `make test`: continuous tracking on sim.launch, RSS and CPU of every process sampled,
 # RSS growth per process (MB/h) and the rosout warning rate in report/soak (scripts/test/soak.py).
 SOAK_MINUTES ?= 15
@@ -81,7 +92,15 @@ soak: build ## soak: SOAK_MINUTES (15) of tracking on sim.launch, RSS growth MB/
 # the diamond; 4: the run did not happen; 5: safe, but the true error was not back within
 # rho_inf + tolerance after the obstacles (or at the end). DEMO_ARGS="--paper-law": the paper's
 # law alone; DEMO_ARGS="--tolerance 0.05 --recovery-time 10": the tracking verdict's margins.
-demo: build ## the whole stack on the emulated robot, headless, scored report in report/demo
+# The demo builds what it runs and nothing more: sim.launch's nodes and nodelets (emulated robot
+# and laser, driver, laser, localisation, tracking, reference, trails, world markers; sim_laser
+# for laser:=sim), run_report, the Python messages `rostopic pub` needs, the cfg headers.
+# `make build` adds the offline simulator, the tools, tele-operation and the standalone nodes.
+DEMO_TARGETS := amigobot_emulator laser_emulator ground_truth_localization reference_publisher world_markers \
+  trail_publisher sim_laser run_report amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser \
+  amigobot_tracking_ros_localization amigobot_tracking_generate_messages amigobot_tracking_gencfg
+demo: deps-workstation $(WS)/src/amigobot_tracking ## the whole stack on the emulated robot, headless, scored report in report/demo
+	$(call timed,build of the demo,$(CATKIN) $(DEMO_TARGETS))
 	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
 # A world's map built by ICP-SLAM on the emulated robot (scripts/reports/make_map.py): the

@@ -25,6 +25,9 @@ add_dependencies(tests test_e2e)
 set(AMIGOBOT_E2E_NODES test_e2e amigobot_emulator amigobot_tracking_ros amigobot_tracking_ros_driver
     sim_laser ground_truth_localization reference_publisher trail_publisher laser_emulator amigobot_tracking_ros_laser amigobot_tracking_ros_localization
     laser_node)
+# Everything the e2e tier runs, built in one go (make test-under-load builds it before loading the cores).
+add_custom_target(amigobot_e2e_nodes)
+add_dependencies(amigobot_e2e_nodes ${AMIGOBOT_E2E_NODES} world_markers ${PROJECT_NAME}_generate_messages)  # two_robots.launch; Python judges import the messages
 
 # amigobot_add_e2e_test(FILE PORT_ARG...): rostest FILE with a free port for each PORT_ARG.
 function(amigobot_add_e2e_test file)

@@ -7,12 +7,14 @@ The end-to-end .test files start amigobot_emulator on the ports named by their a
 (tcp_port, status_port, ...); fixed ports would collide when two runs of the suite share a
 machine, and the driver nodelet needs its port at load time, so the ports are chosen here,
 just before rostest starts (as rostest itself chooses its master's port). Each port is bound
-to 0, read back and released; the names get distinct ports.
+to a random port below the kernel's ephemeral range, released, and claimed for 15 min in
+/tmp/amigobot_test_ports so that no other run hands it out meanwhile; the names get distinct ports.
 """
 import os
 import random
 import socket
 import sys
+import time
 
 
 def ephemeral_low(default=32768):
@@ -22,6 +24,30 @@ def ephemeral_low(default=32768):
             return int(f.read().split()[0])
     except (OSError, ValueError, IndexError):
         return default
+
+
+CLAIMS = "/tmp/amigobot_test_ports"  # one file per port handed out lately, on this machine
+CLAIM_LIFETIME = 900.0  # [s] longer than any rostest keeps its ports
+
+
+def claim(port):
+    """True when no other run of this script handed `port` out in the last CLAIM_LIFETIME s:
+    between our check and the emulator's bind (seconds, more under load) the port is free again,
+    and two runs side by side (make's -j2, or two checkouts) could otherwise both pick it; the
+    loser's emulator then exits 1 with "cannot listen ... Address already in use"."""
+    os.makedirs(CLAIMS, exist_ok=True)
+    path = os.path.join(CLAIMS, str(port))
+    try:
+        os.close(os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY))
+        return True
+    except FileExistsError:
+        try:
+            if time.time() - os.path.getmtime(path) < CLAIM_LIFETIME:
+                return False
+            os.utime(path)  # a stale claim: ours now
+            return True
+        except OSError:
+            return False
 
 
 def free_ports(count):
@@ -35,9 +61,13 @@ def free_ports(count):
     try:
         while len(sockets) < count:  # hold all of them until every one is chosen: distinct ports
             s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+            port = rng.randrange(low, high)
             try:
-                s.bind(("127.0.0.1", rng.randrange(low, high)))
+                s.bind(("127.0.0.1", port))
             except OSError:
+                s.close()
+                continue
+            if not claim(port):
                 s.close()
                 continue
             sockets.append(s)

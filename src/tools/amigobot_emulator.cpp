@@ -1,5 +1,7 @@
 // amigobot_emulator: a ROS-free AmigoBot stand-in that speaks the robot's protocol over
 // TCP and a pseudo-terminal and reports its ground-truth pose on a status socket.
+#include <unistd.h>
+
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -22,14 +24,27 @@ using namespace amigobot_tracking::aria;
 namespace {
 
 std::atomic<bool> g_stop{false};
-void onSignal(int) { g_stop = true; }
+std::atomic<int> g_signal{0};
+void onSignal(int signal) {
+  g_signal = signal;
+  g_stop = true;
+}
+
+// --exit-report: the emulator's last word for whoever started it without reading its stderr
+// (roslaunch's output="log" in the end-to-end tests): "running pid N" while it serves, then
+// "exit CODE: why". An unwritable file is not an error: the report is a courtesy.
+void report(const std::string& path, const std::string& line) {
+  if (path.empty()) return;
+  std::ofstream out(path, std::ios::trunc);
+  out << line << "\n";
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   EmulatorOptions robot;
   EmulatorServerOptions server;
-  std::string model = "amigo", params_file, world_file, name, command_log;
+  std::string model = "amigo", params_file, world_file, name, command_log, exit_report;
   std::uint32_t seed = robot.seed;
   int control_port = -1;
   CLI::App app("A ROS-free AmigoBot stand-in: the robot's protocol over TCP and a pseudo-terminal, its "
@@ -63,6 +78,8 @@ int main(int argc, char** argv) {
                  "start open and talking at this baud, as a crashed session that had switched it leaves the "
                  "robot (pty only; CLOSE returns it to 9600)");
   app.add_option("--command-log", command_log, "journal of every motion command received: 't command v w' per line");
+  app.add_option("--exit-report", exit_report,
+                 "file that says why the emulator stopped: 'running pid N' while it serves, then 'exit CODE: reason'");
   app.add_flag("--simulator-mode", robot.simulator_mode,
                "behave like an ARIA simulator (MobileSim): motors start enabled, SIPs always 0x32, watchdog "
                "only warns, CLOSE drops the connection");
@@ -74,6 +91,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;  // --help: 0; a bad option: 2, as the usage errors before
   }
   robot.seed = server.corrupt_seed = seed;
+  report(exit_report, "starting pid " + std::to_string(::getpid()));
   try {
     robot.robot = params_file.empty() ? builtinRobotParams(model) : loadRobotParams(params_file);
     if (!world_file.empty()) {
@@ -104,10 +122,14 @@ int main(int argc, char** argv) {
                 io.ptyName().empty() ? "-" : io.ptyName().c_str(),
                 control ? (" control=" + std::to_string(control->port())).c_str() : "");
     std::fflush(stdout);
+    report(exit_report, "running pid " + std::to_string(::getpid()));
     io.run(g_stop);
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";
+    report(exit_report, std::string("exit 1: ") + e.what());
     return 1;
   }
+  report(exit_report, g_signal ? "exit 0: stopped by signal " + std::to_string(g_signal.load())
+                               : std::string("exit 0: asked to quit on the status socket"));
   return 0;
 }

@@ -12,14 +12,17 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <ros/network.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 #include <xmlrpcpp/XmlRpcClient.h>
 
 #include "amigobot_tracking/aria/emulator_status.h"
+#include "emulator_liveness.h"
 #include "emulator_process.h"  // waitFor, now
 
 namespace e2e {
@@ -40,7 +43,7 @@ T requiredParam(const std::string& name) {
 // truth() fails and tryTruth() returns false.
 class GroundTruth {
  public:
-  explicit GroundTruth(int status_port) : client_("127.0.0.1", status_port, 1.0) {}
+  explicit GroundTruth(int status_port) : status_port_(status_port), client_("127.0.0.1", status_port, 1.0) {}
   bool tryTruth(EmulatorStatus* status) { return client_.query(status).empty(); }
   EmulatorStatus truth() {
     EmulatorStatus s;
@@ -48,12 +51,39 @@ class GroundTruth {
     if (!problem.empty()) throw std::runtime_error("emulator status: " + problem);
     return s;
   }
-  // Waits until the emulator answers and the driver has it open with the motors on.
-  bool waitForRobotReady(double timeout) {
-    return waitFor([&] {
-      EmulatorStatus s;
-      return tryTruth(&s) && s.open && s.motors;
-    }, timeout);
+  // Waits until the emulator answers and the driver has it open with the motors on. Start-up
+  // runs in stages (the emulator answers, the driver opens the robot, the motors come on) and
+  // each stage gets `timeout` [s] from the end of the one before: a loaded machine lengthens
+  // the wait while the stack makes progress. A failure names the stage, the process that was
+  // late and, when the emulator is gone, its exit report.
+  ::testing::AssertionResult waitForRobotReady(double timeout) {
+    enum Stage { kNoAnswer, kClosed, kMotorsOff, kReady };
+    Stage reached = kNoAnswer;
+    double stage_start = now();
+    std::string problem;
+    EmulatorStatus s;
+    while (true) {
+      problem = client_.query(&s);
+      const Stage stage = !problem.empty() ? kNoAnswer : !s.open ? kClosed : !s.motors ? kMotorsOff : kReady;
+      if (stage == kReady) return ::testing::AssertionSuccess();
+      if (stage > reached) {
+        reached = stage;
+        stage_start = now();
+      }
+      if (now() - stage_start > timeout) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    const std::string late = " within " + std::to_string(static_cast<int>(timeout)) + " s";
+    switch (reached) {
+      case kNoAnswer:
+        return ::testing::AssertionFailure() << "the emulator never answered on its status port " << status_port_
+                                             << late << " (" << problem << "): " << emulatorState(status_port_);
+      case kClosed:
+        return ::testing::AssertionFailure() << "the emulator answered but the driver never opened the robot" << late
+                                             << " (no completed handshake; " << emulatorState(status_port_) << ")";
+      default:
+        return ::testing::AssertionFailure() << "the driver opened the robot but never enabled its motors" << late;
+    }
   }
   // Waits until the robot's true v and w are exactly zero; *stopped = that status.
   bool waitForStandstill(double timeout, EmulatorStatus* stopped) {
@@ -63,6 +93,7 @@ class GroundTruth {
   }
 
  private:
+  int status_port_;
   amigobot_tracking::aria::StatusClient client_;
 };
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
@@ -101,11 +102,18 @@ class StepRecorder {
   }
 };
 
-inline bool waitForSteps(StepRecorder& recorder, double duration, double timeout) {
-  return e2e::waitFor([&] {
+inline ::testing::AssertionResult waitForSteps(StepRecorder& recorder, double duration, double timeout) {
+  double reached = 0.0;
+  const bool done = e2e::waitFor([&] {
     const auto steps = recorder.steps();
+    reached = steps.empty() ? 0.0 : steps.back().t;
     return !steps.empty() && steps.back().t >= duration;
   }, timeout);
+  if (done) return ::testing::AssertionSuccess();
+  // Which part was late: no /tracking/state at all (the tracking nodelet), states without
+  // ground truth (the emulator) or without the target's tf (the reference publisher).
+  return ::testing::AssertionFailure() << "valid control steps for " << reached << " s of the " << duration
+                                       << " s wanted within " << timeout << " s: " << recorder.counts();
 }
 
 }  // namespace e2e

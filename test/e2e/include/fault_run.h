@@ -26,9 +26,8 @@ namespace e2e {
 // `settle` [s] more have passed, so a fault strikes a robot in full tracking.
 inline ::testing::AssertionResult trackingStarted(GroundTruth& truth, double drive_timeout = 60.0,
                                                   double settle = 3.0) {
-  if (!truth.waitForRobotReady(60.0)) {
-    return ::testing::AssertionFailure() << "the driver never opened the emulated robot with the motors on";
-  }
+  const ::testing::AssertionResult ready = truth.waitForRobotReady(60.0);
+  if (!ready) return ready;
   if (!waitFor([&] { return truth.truth().v > 0.1; }, drive_timeout)) {
     return ::testing::AssertionFailure() << "the robot never drove (true v <= 0.1 m/s for " << drive_timeout << " s)";
   }
