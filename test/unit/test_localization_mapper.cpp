@@ -109,3 +109,35 @@ TEST(Mapper, ItsSavedMapLocalisesTheRobot) {
   EXPECT_LT(std::hypot(localizer.estimate().pose.x - truth.x, localizer.estimate().pose.y - truth.y), 0.05);
   EXPECT_GT(localizer.estimate().match, 0.8);
 }
+
+// The online correction: at every scan, also the scans where a loop closes, the published pose
+// is the current keyframe's optimised pose plus the motion since (the smoothed trajectory's
+// last pose), and map -> odom carries it to the odometry (the pose tf gives between scans).
+TEST(Mapper, AClosedLoopReachesThePublishedPoseAndMapToOdom) {
+  std::mt19937 random(7);
+  LocalizationConfig c;
+  c.mode = "mapping";
+  c.mapping_method = "graph";
+  c.initial_pose = amigobot_test::kLoopStart;
+  Mapper mapper(c);
+  core::Pose2 truth = c.initial_pose, odom{};
+  int closing_scans = 0;
+  for (int step = 0; step < 300; ++step) {
+    const int loops = mapper.loopClosures();
+    const PoseEstimate& e = mapper.update(scanAt(truth, 360, &random), odom);
+    const core::Pose2 smoothed = mapper.trajectory().back(), via_odom = compose(e.map_to_odom, odom);
+    ASSERT_NEAR(e.pose.x, smoothed.x, 1e-9) << "scan " << step;
+    ASSERT_NEAR(e.pose.y, smoothed.y, 1e-9) << "scan " << step;
+    ASSERT_NEAR(e.pose.theta, smoothed.theta, 1e-9) << "scan " << step;
+    ASSERT_NEAR(via_odom.x, e.pose.x, 1e-9);
+    ASSERT_NEAR(via_odom.y, e.pose.y, 1e-9);
+    if (mapper.loopClosures() > loops) {
+      ++closing_scans;
+      EXPECT_LT(std::hypot(e.pose.x - truth.x, e.pose.y - truth.y), 0.1) << "scan " << step;
+    }
+    const double v = 0.03, w = v / amigobot_test::kLoopRadius;
+    truth = compose(truth, core::Pose2{v, 0.0, w});
+    odom = compose(odom, core::Pose2{v * 1.04, 0.0, w * 1.03});
+  }
+  EXPECT_GT(closing_scans, 0);
+}
