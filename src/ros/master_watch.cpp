@@ -1,5 +1,6 @@
 #include "amigobot_tracking/ros/master_watch.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <ros/connection_manager.h>
@@ -15,7 +16,10 @@ namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
 
-constexpr double kServiceRefresh = 1.0;  // [s] how often the services this node provides are listed
+// [s] how often the services this node provides are listed: getSystemState answers with the whole
+// graph (tens of kB with two robots), which across a Wi-Fi to a master on the other robot cost
+// 35 kB/s at 1 Hz. Services are advertised at start-up, so the interval doubles from 1 s to 30 s.
+constexpr double kServiceRefreshLast = 30.0;
 
 double steadyNow() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -190,7 +194,8 @@ void MasterWatch::run() {
     }
     if (pid && started >= next_service_refresh_) {
       rememberServices();
-      next_service_refresh_ = started + kServiceRefresh;
+      next_service_refresh_ = started + service_refresh_;
+      service_refresh_ = std::min(2.0 * service_refresh_, kServiceRefreshLast);
     }
     const double left = kPollPeriod - (steadyNow() - started);
     if (left > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(left));

@@ -102,12 +102,17 @@ TEST_F(MapFiles, BadFilesNameTheFileAndTheKey) {
   }
 }
 
-TEST_F(MapFiles, SavingAnEmptyMapOrIntoAMissingFolderNamesTheFile) {
+TEST_F(MapFiles, SavingAnEmptyMapOrIntoAnUncreatableFolderNamesTheFile) {
   EXPECT_THROW(saveMap(dir_ + "/empty.yaml", OccupancyMap()), std::runtime_error);
+  // A missing folder is created (a mapping drive must not end in "cannot write the map image").
+  saveMap(dir_ + "/new/folder/map.yaml", makeMap(0.1, 0, 0, 2, 2));
+  EXPECT_TRUE(std::ifstream(dir_ + "/new/folder/map.pgm").good());
+  // A folder that cannot be made (a regular file in its path) is named.
+  std::ofstream(dir_ + "/a_file") << "not a folder\n";
   try {
-    saveMap(dir_ + "/no/such/folder/map.yaml", makeMap(0.1, 0, 0, 2, 2));
+    saveMap(dir_ + "/a_file/maps/map.yaml", makeMap(0.1, 0, 0, 2, 2));
     ADD_FAILURE() << "an unwritable path must throw";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("no/such/folder/map.pgm: cannot write"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a_file"), std::string::npos) << e.what();
   }
 }

@@ -27,7 +27,7 @@ namespace ros_layer {
 
 class MasterWatch {
  public:
-  static constexpr double kPollPeriod = 0.1;   // [s]
+  static constexpr double kPollPeriod = 0.2;   // [s] (a new TCP connection each: ~6 kB/s at 5 Hz across a link)
   static constexpr double kCallTimeout = 0.3;  // [s] per XML-RPC call
 
   struct State {
@@ -65,6 +65,7 @@ class MasterWatch {
   State state_;              // mutex_ (unreachable_for computed in state())
   std::set<std::string> services_;  // poll thread only
   double next_service_refresh_ = 0.0;
+  double service_refresh_ = 1.0;  // [s] doubles up to 30 s (master_watch.cpp)
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
