@@ -26,7 +26,7 @@ RESULTS := $(WS)/build/test_results
 timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
 
 PHONY := deps deps-workstation deps-robot build test two-machines soak demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
-PHONY += test-under-load
+PHONY += test-under-load pedestrians
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
@@ -138,10 +138,18 @@ sim: build ## offline simulator: SCENARIO=config/scenarios/X.yaml OUT=out/X ARGS
 # The paper's Section 5 and the baselines: writes docs/results.md and docs/figures/.
 reproduce: build ## the paper's Section 5 and the baselines: docs/results.md, docs/figures/
 	$(ROOT)/scripts/reports/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
+	$(PEDESTRIANS)
 
 # The clutter benchmark alone (also part of reproduce): docs/clutter.md. QUICK=1: 4 variants per batch.
 clutter: build ## clutter benchmark, 12 classes x 5 laws x 50 Monte Carlo variants: docs/clutter.md (5 min measured on 2 cores, 2026-12-03; QUICK=1: 4 variants)
 	$(ROOT)/scripts/reports/clutter.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/clutter $(if $(QUICK),--quick)
+
+# The pedestrian benchmark (also part of reproduce): docs/pedestrians.md. QUICK=1: 2 variants per
+# class; SETS="robot.dynamics=ideal" adds --set for every run (the scenes name no dynamics).
+PEDESTRIANS = $(ROOT)/scripts/reports/pedestrians.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim \
+  --out $(ROOT)/out/pedestrians --jobs 4 $(if $(QUICK),--quick) $(foreach s,$(SETS),--set $(s))
+pedestrians: build ## pedestrian benchmark, 8 classes x 4 laws x 50 Monte Carlo variants: docs/pedestrians.md (QUICK=1: 2 variants)
+	$(PEDESTRIANS)
 
 # libFuzzer (ASan + UBSan) of every parser: ARIA packets, SCIP, CoLa-A, RPLIDAR, the emulator
 # status line, parameter values, world, scenario and map files; 10.8 M inputs split as

@@ -20,6 +20,11 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(clutter_report_quick ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_clutter_report.py
                      ${PROJECT_SOURCE_DIR}/scripts/reports/clutter.py
                      ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/amigobot_sim)
+  # The pedestrian benchmark in its quick mode on three classes: every run completes, no NaN, no
+  # command outside the diamond.
+  amigobot_add_check(pedestrian_report_quick ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_pedestrian_report.py
+                     ${PROJECT_SOURCE_DIR}/scripts/reports/pedestrians.py
+                     ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/amigobot_sim)
   # No library feature newer than Noetic's toolchain (GCC 9 / libstdc++ 9, Eigen 3.3, Python 3.8):
   # the list and the reason for each are in the script (--list prints them).
   amigobot_add_check(cxx_features_noetic ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_cxx_features.py ${PROJECT_SOURCE_DIR})

@@ -71,7 +71,9 @@ COLUMNS = [
     ("worst stall [s]", "worst_stall_s", 3),
     ("orbit turns", "worst_orbit_turns", 2),
     ("toggles esc/avoid", None, None),
-    ("side flips", "worst_side_flips", None),
+    ("ω reversals /min (mean)", "mean_omega_reversals_per_minute", 3),
+    ("max abs Δv [m/s]", "worst_max_delta_v", 3),
+    ("max abs Δω [rad/s]", "worst_max_delta_omega", 3),
     ("widenings", "envelope_widenings", None),
     ("min body clearance [m]", "worst_min_clearance_body", 3),
     ("diamond violations", "diamond_violations", None),
@@ -132,17 +134,12 @@ def write_page(path, results, runs, seconds, quick):
     page("True ASE/ISE use the true target and robot. Stall: target reachable (beyond its best standoff) "
          "but not approached (docs/simulation.md). Orbit turns: the largest |angle| / 2π of the offset "
          "point about one disk in one visit (passing a disk ≈ 0.5). Toggles: the worst run's escape / "
-         "avoidance on-off switches. Widenings: steps where the guard widened ρ, summed over the runs "
+         "avoidance on-off switches. ω reversals: sign changes of ω beyond ±0.01 rad/s per minute of run, "
+         "the mean over the runs; Δv, Δω: the worst run's largest change of the command between two steps. "
+         "Widenings: steps where the guard widened ρ, summed over the runs "
          "(0 for a law without ρ). A law the simulator does not offer is marked missing.")
     page("")
-    page("| " + " | ".join(HEADINGS) + " |")
-    page("|" + "---|" * len(HEADINGS))
-    for name, law, summary in results:
-        page("| " + " | ".join([name, law] + cells(summary)) + " |")
-    page("")
-    page("Classes:")
-    for name, what in CLASSES.items():
-        page(f"- `{name}`: {what}")
+    markdown.benchmark_table(page, HEADINGS, results, cells, CLASSES)
     page.save(path)
 
 

@@ -21,3 +21,22 @@ class Page:
     def save(self, path):
         with open(path, "w") as out:
             out.write("\n".join(self.lines) + "\n")
+
+
+def benchmark_table(page, headings, results, cells, classes):
+    """A benchmark's table (a row per (class, law, summary) of `results`, `cells(summary)` after
+    class and law) and the list of its classes {name: what}."""
+    page("| " + " | ".join(headings) + " |")
+    page("|" + "---|" * len(headings))
+    for name, law, summary in results:
+        page("| " + " | ".join([name, law] + cells(summary)) + " |")
+    page("")
+    page("Classes:")
+    for name, what in classes.items():
+        page(f"- `{name}`: {what}")
+
+
+def table_rows(text):
+    """A markdown table's rows as lists of cells (header first, separator dropped)."""
+    rows = [line.strip("|").split("|") for line in text.splitlines() if line.startswith("|")]
+    return [[c.strip() for c in row] for row in rows if not set("".join(row)) <= set("-: ")]

@@ -9,13 +9,18 @@ def load(path):
         return yaml.safe_load(f)
 
 
+def write_data(data, dst):
+    """Writes the scenario dict `data` to `dst`."""
+    with open(dst, "w") as f:
+        yaml.safe_dump(data, f, sort_keys=False, default_flow_style=None)
+    return dst
+
+
 def write_variant(src, dst, edit):
     """Writes to `dst` the scenario `src` after `edit(data)`, which changes the dict in place."""
     data = load(src)
     edit(data)
-    with open(dst, "w") as f:
-        yaml.safe_dump(data, f, sort_keys=False, default_flow_style=None)
-    return dst
+    return write_data(data, dst)
 
 
 def set_key(data, dotted, value, must_exist=True):

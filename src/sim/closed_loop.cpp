@@ -19,6 +19,9 @@ namespace amigobot_tracking {
 namespace sim {
 namespace {
 
+// The duration of a constant-velocity motion's one leg [s]: longer than any run (about 30 years).
+constexpr double kForever = 1e9;
+
 // The selected law behind one step() call.
 class Law {
  public:
@@ -145,8 +148,8 @@ std::string validateSetup(const ClosedLoopSetup& setup) {
     err << "max_step must be >= 0 (0 = fixed step), got " << setup.max_step;
   else if (!std::isfinite(setup.sample_period) || setup.sample_period < 0.0)
     err << "sample_period must be >= 0, got " << setup.sample_period;
-  else if (!setup.obstacle_velocities.empty() && setup.obstacle_velocities.size() != setup.obstacles.size())
-    err << "obstacle_velocities must be empty or one per obstacle";
+  else if (!setup.obstacle_motions.empty() && setup.obstacle_motions.size() != setup.obstacles.size())
+    err << "obstacle_motions must be empty or one per obstacle";
   else if (!(setup.baseline.k_p > 0.0 && std::isfinite(setup.baseline.k_p))) err << "k_p must be > 0";
   else if (!(setup.baseline.lowpass_tau > 0.0 && std::isfinite(setup.baseline.lowpass_tau)))
     err << "lowpass_tau must be > 0";
@@ -160,7 +163,25 @@ std::string validateSetup(const ClosedLoopSetup& setup) {
         err << "obstacles: every obstacle needs a finite centre and a radius > 0";
         break;
       }
+  for (size_t j = 0; err.str().empty() && j < setup.obstacle_motions.size(); ++j) {
+    const std::string why = setup.obstacle_motions[j].validate();
+    if (!why.empty()) err << "obstacles[" << j << "].motion." << why;
+  }
   return err.str();
+}
+
+core::ObstacleMotion constantMotion(const Eigen::Vector2d& start, const Eigen::Vector2d& velocity) {
+  core::ObstacleMotion m;
+  m.start = start;
+  m.legs.push_back({kForever, velocity});
+  return m;
+}
+
+bool isConstantMotion(const core::ObstacleMotion& motion, Eigen::Vector2d* velocity) {
+  if (motion.start_time != 0.0 || motion.repeat || motion.legs.size() != 1 || motion.legs[0].duration != kForever)
+    return false;
+  *velocity = motion.legs[0].velocity;
+  return true;
 }
 
 ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Reference& reference,
@@ -179,7 +200,8 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Refere
   const bool land_on_samples = setup.sample_period >= policy.max_step;
   const bool fixed_step = policy.max_step <= policy.min_step;
   double max_obstacle_speed = 0.0;
-  for (const Eigen::Vector2d& v : setup.obstacle_velocities) max_obstacle_speed = std::max(max_obstacle_speed, v.norm());
+  for (const core::ObstacleMotion& m : setup.obstacle_motions)
+    for (const core::MotionLeg& leg : m.legs) max_obstacle_speed = std::max(max_obstacle_speed, leg.velocity.norm());
   const double max_speed = std::max(config.v_max, config.offset * config.w_max) + max_obstacle_speed;
 
   ClosedLoopSummary summary;
@@ -191,9 +213,11 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Refere
   double t = 0.0;
   double last_filter_stamp = -std::numeric_limits<double>::infinity();
   auto moveObstacles = [&](double at) {
-    for (size_t j = 0; j < setup.obstacle_velocities.size(); ++j) {
-      obstacles[j].center = setup.obstacles[j].center + setup.obstacle_velocities[j] * at;
-      obstacles[j].velocity = setup.obstacle_velocities[j];
+    for (size_t j = 0; j < setup.obstacle_motions.size(); ++j) {
+      // From the obstacle's centre (code that shifts a centre, Monte Carlo, moves its path too).
+      const core::ObstacleMotion& motion = setup.obstacle_motions[j];
+      obstacles[j].center = setup.obstacles[j].center + (motion.positionAt(at) - motion.start);
+      obstacles[j].velocity = motion.velocityAt(at);
     }
   };
   // The newest target sample at time `at`, with the baseline filter's velocity when one is used.

@@ -78,6 +78,8 @@ void to_json(Json& j, const RunMetrics& m) {
                 {"avoidance_toggles", m.avoidance_toggles},
                 {"max_delta_v", jsonNumber(m.max_delta_v)},
                 {"max_delta_omega", jsonNumber(m.max_delta_omega)},
+                {"omega_reversals", m.omega_reversals},
+                {"omega_reversals_per_minute", jsonNumber(m.omega_reversals_per_minute)},
                 {"sim_time_s", jsonNumber(m.sim_time)}};
 }
 

@@ -53,6 +53,11 @@ void MetricsAccumulator::add(const MetricSample& s) {
   if (s.escaping) ++m_.escape_steps;
   if (s.passing_side * last_side_ < 0) ++m_.side_flips;
   last_side_ = s.passing_side;
+  if (std::abs(s.u.omega) > kReversalDeadband) {
+    const int sign = s.u.omega > 0.0 ? 1 : -1;
+    if (sign * last_omega_sign_ < 0) ++m_.omega_reversals;
+    last_omega_sign_ = sign;
+  }
   if (has_last_) {
     m_.escape_toggles += s.escaping != last_escaping_;
     m_.avoidance_toggles += s.avoiding != last_avoiding_;
@@ -134,6 +139,7 @@ RunMetrics MetricsAccumulator::result() const {
     r.estimator_rms_error = std::sqrt(sum_v2_ / r.sim_time);
     r.true_ase = sum_true_e2_ / r.sim_time;
     r.true_aae = sum_true_e_ / r.sim_time;
+    r.omega_reversals_per_minute = static_cast<double>(r.omega_reversals) * 60.0 / r.sim_time;
   }
   return r;
 }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <atomic>
 #include <cstdio>
+#include <exception>
 #include <mutex>
 #include <random>
 #include <thread>
@@ -47,10 +48,18 @@ std::vector<VariantResult> runVariants(const Scenario& base, const MonteCarloOpt
   std::atomic<int> next{0}, done{0};
   std::mutex print;
   const auto start = std::chrono::steady_clock::now();
+  std::exception_ptr failure;  // the first run that threw (a peer's error): the batch fails with it
   auto worker = [&] {
     for (int i = next++; i < runs; i = next++) {
       const Scenario s = randomVariant(base, options, static_cast<std::uint64_t>(i));
-      results[i] = {s.setup.initial_pose, runScenario(s, false)};
+      try {
+        results[i] = {s.setup.initial_pose, runScenario(s, false)};
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(print);
+        if (!failure) failure = std::current_exception();
+        next = runs;  // the others stop at their next run
+        return;
+      }
       const int finished = ++done;
       if (!options.progress) continue;
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -65,6 +74,7 @@ std::vector<VariantResult> runVariants(const Scenario& base, const MonteCarloOpt
   for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
   worker();
   for (std::thread& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
   return results;
 }
 
@@ -86,24 +96,34 @@ Scenario randomVariant(const Scenario& base, const MonteCarloOptions& options, s
   std::mt19937_64 rng(options.seed * 1000003ULL + index);
   std::uniform_real_distribution<double> heading(-options.heading_shift, options.heading_shift);
   std::uniform_real_distribution<double> speed(0.0, options.obstacle_speed);
-  const bool retime = options.obstacle_speed > 0.0 && !base.setup.obstacle_velocities.empty();
-  std::vector<double> encounter(base.setup.obstacles.size(), 0.0);
-  if (retime) {
+  // Re-timed: the obstacles at a constant velocity (a scenario's `velocity`); a motion of legs
+  // keeps its timing and only shifts.
+  const size_t count = base.setup.obstacle_motions.size();
+  std::vector<Eigen::Vector2d> velocity(count, Eigen::Vector2d::Zero());
+  std::vector<bool> retime(count, false);
+  std::vector<double> encounter(count, 0.0);
+  if (options.obstacle_speed > 0.0) {
     const auto reference = base.makeReference();
-    for (size_t j = 0; j < encounter.size(); ++j)
-      encounter[j] = encounterTime(base.setup.obstacles[j], base.setup.obstacle_velocities[j], *reference,
-                                   base.setup.duration);
+    for (size_t j = 0; j < count; ++j) {
+      retime[j] = isConstantMotion(base.setup.obstacle_motions[j], &velocity[j]) && !velocity[j].isZero(0.0);
+      if (retime[j])
+        encounter[j] = encounterTime(base.setup.obstacles[j], velocity[j], *reference, base.setup.duration);
+    }
   }
   for (int attempt = 0; attempt < 100; ++attempt) {
     Scenario s = base;
     for (size_t j = 0; j < s.setup.obstacles.size(); ++j) {
       core::Disk& d = s.setup.obstacles[j];
       d.center += inDisk(rng, options.obstacle_shift);
-      if (!retime || base.setup.obstacle_velocities[j].isZero(0.0)) continue;
-      Eigen::Vector2d& v = s.setup.obstacle_velocities[j];
-      const Eigen::Vector2d meet = d.center + v * encounter[j];
-      v = v.normalized() * speed(rng);
-      d.center = meet - v * encounter[j];
+      if (j >= count) continue;
+      core::ObstacleMotion& motion = s.setup.obstacle_motions[j];
+      if (retime[j]) {
+        const Eigen::Vector2d meet = d.center + velocity[j] * encounter[j];
+        const Eigen::Vector2d v = velocity[j].normalized() * speed(rng);
+        d.center = meet - v * encounter[j];
+        motion = constantMotion(d.center, v);
+      }
+      motion.start = d.center;
     }
     const Eigen::Vector2d shift = inDisk(rng, options.pose_shift);
     s.setup.initial_pose.x += shift.x();
@@ -127,7 +147,7 @@ void to_json(Json& j, const MonteCarloRun& r) {
                             "min_clearance_offset", "min_clearance_body", "body_collisions", "offset_collisions",
                             "diamond_violations", "nan_count", "true_ise", "envelope_widenings", "stall_time_s",
                             "max_orbit_turns", "escape_toggles", "avoidance_toggles", "side_flips", "max_delta_v",
-                            "max_delta_omega"}));
+                            "max_delta_omega", "omega_reversals_per_minute"}));
 }
 
 MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOptions& options) {
@@ -158,6 +178,8 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
     sum.worst_side_flips = std::max(sum.worst_side_flips, m.side_flips);
     sum.worst_max_delta_v = std::max(sum.worst_max_delta_v, m.max_delta_v);
     sum.worst_max_delta_omega = std::max(sum.worst_max_delta_omega, m.max_delta_omega);
+    sum.worst_omega_reversals_per_minute = std::max(sum.worst_omega_reversals_per_minute, m.omega_reversals_per_minute);
+    sum.mean_omega_reversals_per_minute += m.omega_reversals_per_minute;
     sum.diamond_violations += m.diamond_violations;
     sum.nan_steps += m.nan_count;
     sum.runs_with_offset_collision += m.offset_collisions > 0;
@@ -180,6 +202,7 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
   sum.mean_aae = sum_aae / n;
   sum.mean_true_ase = sum_true_ase / n;
   sum.mean_true_ise = sum_true_ise / n;
+  sum.mean_omega_reversals_per_minute /= n;
   return sum;
 }
 
@@ -223,6 +246,8 @@ void to_json(Json& j, const MonteCarloSummary& s) {
            {"worst_side_flips", s.worst_side_flips},
            {"worst_max_delta_v", jsonNumber(s.worst_max_delta_v)},
            {"worst_max_delta_omega", jsonNumber(s.worst_max_delta_omega)},
+           {"mean_omega_reversals_per_minute", jsonNumber(s.mean_omega_reversals_per_minute)},
+           {"worst_omega_reversals_per_minute", jsonNumber(s.worst_omega_reversals_per_minute)},
            {"diamond_violations", s.diamond_violations},
            {"nan_steps", s.nan_steps},
            {"sim_time_s", jsonNumber(s.sim_time)},

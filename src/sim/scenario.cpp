@@ -235,28 +235,56 @@ ReferenceSpec parseReference(Section s) {
   return r;
 }
 
+// An obstacle's `motion`: when its legs begin, the legs (duration, velocity), whether they repeat.
+core::ObstacleMotion parseMotion(Section s, const Eigen::Vector2d& start) {
+  core::ObstacleMotion m;
+  m.start = start;
+  m.start_time = s.number("start_time", 0.0);
+  m.repeat = s.boolean("repeat", false);
+  const YAML::Node legs = s.required("legs");
+  if (!legs.IsSequence() || legs.size() == 0)
+    fail(s.file(), legs, s.key("legs"), "expected a list of {duration, velocity}, got " + describe(legs));
+  for (size_t i = 0; i < legs.size(); ++i) {
+    Section leg(legs[i], s.key("legs") + "[" + std::to_string(i) + "]", s.file());
+    const double duration = positive(leg, "duration", leg.number("duration"));
+    m.legs.push_back({duration, leg.point("velocity")});
+    leg.finish();
+  }
+  const std::string why = m.validate();
+  if (!why.empty()) fail(s.file(), s.node(), s.key(why.substr(0, why.find(':'))), why.substr(why.find(':') + 2));
+  s.finish();
+  return m;
+}
+
 void parseObstacles(const YAML::Node& list, const std::string& file, sim::ClosedLoopSetup& setup) {
   if (!list.IsSequence()) fail(file, list, "obstacles", "expected a list of {center, radius}, got " + describe(list));
   bool moving = false;
-  std::vector<Eigen::Vector2d> velocities;
+  std::vector<core::ObstacleMotion> motions;
   for (size_t i = 0; i < list.size(); ++i) {
     Section s(list[i], "obstacles[" + std::to_string(i) + "]", file);
     core::Disk d;
     d.center = s.point("center");
     d.radius = positive(s, "radius", s.number("radius"));
-    Eigen::Vector2d v = Eigen::Vector2d::Zero();
+    // `velocity`: a constant velocity from the start; `motion`: legs of piecewise-constant
+    // velocity (walk, stop, turn); neither: static. One description either way (ObstacleMotion).
+    if (s.has("velocity") && s.has("motion"))
+      fail(file, s.node()["motion"], s.key("motion"), "give velocity (constant) or motion (legs), not both");
+    core::ObstacleMotion motion = constantMotion(d.center, Eigen::Vector2d::Zero());
     if (s.has("velocity")) {
       const std::vector<double> xy = s.toNumbers(s.optional("velocity"), s.key("velocity"), 2);
-      v = {xy[0], xy[1]};
+      motion = constantMotion(d.center, {xy[0], xy[1]});
       moving = true;
-    } else {
-      s.optional("velocity");
+    } else if (s.has("motion")) {
+      motion = parseMotion(Section(s.optional("motion"), s.key("motion"), file), d.center);
+      moving = true;
     }
+    s.optional("velocity");
+    s.optional("motion");
     s.finish();
     setup.obstacles.push_back(d);
-    velocities.push_back(v);
+    motions.push_back(motion);
   }
-  if (moving) setup.obstacle_velocities = velocities;
+  if (moving) setup.obstacle_motions = motions;
 }
 
 void parseSimulation(Section s, Scenario& scenario) {

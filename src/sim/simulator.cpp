@@ -98,9 +98,10 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   s["duration"] = jsonNumber(setup.duration);
   s["obstacles"] = Json::array();
   for (size_t i = 0; i < setup.obstacles.size(); ++i) {
-    s["obstacles"].push_back(obstacleJson(setup.obstacles[i], setup.obstacle_velocities.empty()
-                                                                  ? Eigen::Vector2d::Zero()
-                                                                  : setup.obstacle_velocities[i]));
+    // The velocity at the start (a motion of legs: its first leg's, even before it starts).
+    const bool moves = !setup.obstacle_motions.empty() && !setup.obstacle_motions[i].legs.empty();
+    s["obstacles"].push_back(
+        obstacleJson(setup.obstacles[i], moves ? setup.obstacle_motions[i].legs[0].velocity : Eigen::Vector2d::Zero()));
   }
   return dumpJson(j);
 }

@@ -174,6 +174,7 @@ class ReactiveLaw : public sim::StepLaw {
     out.p_d = target.position;
     out.e = out.p_d - out.p_r;
     if (!started_ || t >= next_update_ - 1e-9) {
+      if (!started_ && options_.prime_scores) primeScores(t, robot.pose, obstacles);
       navigate(t, robot.pose, target.position, obstacles);
       next_update_ = started_ ? next_update_ + options_.period : t + options_.period;
       if (next_update_ <= t) next_update_ = t + options_.period;  // a long step skipped periods
@@ -204,6 +205,32 @@ class ReactiveLaw : public sim::StepLaw {
     params.target.targetIsRelative = false;
     navigator_.navigate(&params);
     navigator_.navigationStep();
+    failOnNavigatorError(t);
+  }
+
+  // MRPT 2.5 compiles its score formulas (exprtk) from the variables of the first candidate of
+  // its first decision, the candidate of PTG 0; a PTG whose domain misses the target has no
+  // variables, so a target outside PTG 0's domain (a start facing away from it, close) fails
+  // the compilation ("ERR201 - Undefined symbol: 'target_d_norm'") at every step and the robot
+  // never moves. One decision on a point straight ahead (on PTG 0's straight path, always in its
+  // domain) compiles them once and for all; the real decision follows at the same instant.
+  void primeScores(double t, const core::Pose2& pose, const std::vector<core::Disk>& obstacles) {
+    const double ahead = 0.5 * options_.ref_distance;
+    navigate(t, pose, pose.position() + ahead * Eigen::Vector2d(std::cos(pose.theta), std::sin(pose.theta)), obstacles);
+  }
+
+  // The navigator catches its own exceptions and stops the robot: a run on after that would
+  // score a robot that never moved, so the error ends the run, naming MRPT's reason. MRPT 2.5
+  // restores the NAVIGATING state at the end of the step, so the reason it recorded (kept until
+  // the next navigate()) is what shows the error, not the state.
+  void failOnNavigatorError(double t) const {
+    if (navigator_.getCurrentState() != mrpt::nav::CAbstractNavigator::NAV_ERROR &&
+        navigator_.getErrorReason().error_code == mrpt::nav::CAbstractNavigator::ERR_NONE)
+      return;
+    std::ostringstream why;
+    why << "mrpt_reactive: MRPT's navigator failed at t = " << t
+        << " s: " << navigator_.getErrorReason().error_msg;
+    throw std::runtime_error(why.str());
   }
 
   core::ControllerConfig config_;

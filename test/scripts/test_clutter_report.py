@@ -18,12 +18,6 @@ SIM = sys.argv.pop(1) if len(sys.argv) > 1 else ""
 CLASSES = ["pillar_park", "gap_pair"]
 
 
-def table_rows(text):
-    """The markdown table's rows as lists of cells (header first, separator dropped)."""
-    rows = [line.strip("|").split("|") for line in text.splitlines() if line.startswith("|")]
-    return [[c.strip() for c in row] for row in rows if not set("".join(row)) <= set("-: ")]
-
-
 class QuickClutterReport(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -32,7 +26,7 @@ class QuickClutterReport(unittest.TestCase):
         cls.results = clutter.main(SIM, os.path.join(cls.tmp.name, "out"), cls.tmp.name, runs=clutter.QUICK_RUNS,
                                    jobs=2, classes=CLASSES, quick=True, laws=laws)
         with open(os.path.join(cls.tmp.name, "clutter.md")) as f:
-            cls.rows = table_rows(f.read())
+            cls.rows = clutter.markdown.table_rows(f.read())
 
     def test_every_column_and_a_row_per_class_and_law(self):
         self.assertEqual(self.rows[0], clutter.HEADINGS)

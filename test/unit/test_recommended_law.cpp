@@ -40,7 +40,8 @@ sim::ClosedLoopSetup setupOf(const Scene& scene, sim::ControlLaw law) {
   setup.controller.moving_obstacles = !scene.velocities.empty();
   setup.initial_pose = {0.0, 0.0, 0.0};
   setup.obstacles = scene.disks;
-  setup.obstacle_velocities = scene.velocities;
+  for (size_t j = 0; j < scene.velocities.size(); ++j)
+    setup.obstacle_motions.push_back(sim::constantMotion(scene.disks[j].center, scene.velocities[j]));
   setup.duration = scene.duration;
   setup.control_period = 0.05;
   setup.law = law;

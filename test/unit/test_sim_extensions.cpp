@@ -222,19 +222,22 @@ TEST(MonteCarlo, CrossingObstaclesKeepTheirEncounterPointAndStayWithinTheSpeed) 
   for (std::uint64_t i = 0; i < 10; ++i) {
     const sim::Scenario s = sim::randomVariant(base, options, i);
     for (size_t j = 0; j < s.setup.obstacles.size(); ++j) {
-      const double t_meet = sim::encounterTime(base.setup.obstacles[j], base.setup.obstacle_velocities[j], *reference,
-                                               base.setup.duration);
-      const Eigen::Vector2d nominal = base.setup.obstacles[j].center + base.setup.obstacle_velocities[j] * t_meet;
-      const Eigen::Vector2d drawn = s.setup.obstacles[j].center + s.setup.obstacle_velocities[j] * t_meet;
+      Eigen::Vector2d v_base, v_drawn;
+      ASSERT_TRUE(sim::isConstantMotion(base.setup.obstacle_motions[j], &v_base));
+      ASSERT_TRUE(sim::isConstantMotion(s.setup.obstacle_motions[j], &v_drawn));
+      const double t_meet = sim::encounterTime(base.setup.obstacles[j], v_base, *reference, base.setup.duration);
+      const Eigen::Vector2d nominal = base.setup.obstacles[j].center + v_base * t_meet;
+      const Eigen::Vector2d drawn = s.setup.obstacles[j].center + v_drawn * t_meet;
       EXPECT_LE((drawn - nominal).norm(), options.obstacle_shift + 1e-9);
-      EXPECT_LE(s.setup.obstacle_velocities[j].norm(), options.obstacle_speed + 1e-12);
-      EXPECT_NEAR(std::abs(s.setup.obstacle_velocities[j].normalized().dot(base.setup.obstacle_velocities[j].normalized())),
-                  1.0, 1e-9);
+      EXPECT_TRUE(s.setup.obstacle_motions[j].positionAt(t_meet).isApprox(drawn, 1e-9));
+      EXPECT_LE(v_drawn.norm(), options.obstacle_speed + 1e-12);
+      EXPECT_NEAR(std::abs(v_drawn.normalized().dot(v_base.normalized())), 1.0, 1e-9);
     }
   }
   // The nominal crossings meet the target where the file says: x / 0.15 s.
-  EXPECT_NEAR(sim::encounterTime(base.setup.obstacles[0], base.setup.obstacle_velocities[0], *reference, 59.0),
-              2.0 / 0.15, 0.02);
+  Eigen::Vector2d v0;
+  ASSERT_TRUE(sim::isConstantMotion(base.setup.obstacle_motions[0], &v0));
+  EXPECT_NEAR(sim::encounterTime(base.setup.obstacles[0], v0, *reference, 59.0), 2.0 / 0.15, 0.02);
 }
 
 // Delayed and slow measurements: target and robot pose both 10 Hz and equally late.

@@ -9,6 +9,7 @@
 
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/sim/closed_loop.h"
+#include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"
 #include "amigobot_tracking/sim_mrpt/reactive_law.h"
@@ -43,7 +44,54 @@ sim::ClosedLoopSetup staticSetup() {
   return setup;
 }
 
+// The shipped dead end (the robot faces the pocket's end, the target walks away behind it),
+// run by MRPT's navigator with these options.
+sim::Scenario deadEnd(const sim_mrpt::ReactiveLawOptions& options) {
+  sim::Scenario scenario = sim::loadScenario(std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/dead_end_away.yaml",
+                                             {"controller.variant=mrpt_reactive"});
+  scenario.setup.external_law = sim_mrpt::reactiveLawFactory(options);
+  return scenario;
+}
+
 }  // namespace
+
+// Facing away from the target in a dead end, MRPT 2.5's navigator failed every step with
+// ERR201 (its score formulas compiled from a PTG that cannot reach a target behind) and the
+// robot never moved (true ASE 11.8 m2, a 25 s stall). Primed, it backs out, turns round and
+// follows (it ends 3.8 m behind its start).
+TEST(MrptReactive, LeavesADeadEndFacingAwayFromTheTarget) {
+  const sim::Scenario scenario = deadEnd(sim_mrpt::ReactiveLawOptions());
+  const auto reference = scenario.makeReference();
+  core::Pose2 last = scenario.setup.initial_pose;
+  const sim::ClosedLoopSummary s =
+      sim::runClosedLoop(scenario.setup, *reference, [&](const sim::ClosedLoopStep& step) { last = step.pose; });
+  EXPECT_LT(last.x, -1.0);  // out of the pocket (it opens at x = -0.3) and after the target
+  EXPECT_LT(s.metrics.true_ase, 5.0);  // 2.56 m2 measured: it backs out and turns round in 14 s
+  EXPECT_LT(s.metrics.longest_stall, 10.0);
+  EXPECT_EQ(s.metrics.body_collisions, 0u);
+}
+
+// A navigator error ends the run naming MRPT's reason, here MRPT's own failure without the
+// priming; a Monte Carlo batch with such a run fails too (on any thread) instead of scoring
+// robots that never moved.
+TEST(MrptReactive, ANavigatorErrorFailsTheRunNamingIt) {
+  sim_mrpt::ReactiveLawOptions unprimed;
+  unprimed.prime_scores = false;
+  const sim::Scenario scenario = deadEnd(unprimed);
+  const auto reference = scenario.makeReference();
+  try {
+    sim::runClosedLoop(scenario.setup, *reference);
+    ADD_FAILURE() << "the run ended normally";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("mrpt_reactive: MRPT's navigator failed at t = 0 s"), std::string::npos) << what;
+    EXPECT_NE(what.find("ERR201"), std::string::npos) << what;
+  }
+  sim::MonteCarloOptions batch;
+  batch.runs = 3;
+  batch.jobs = 2;
+  EXPECT_THROW(sim::summarizeMonteCarlo(scenario, batch), std::runtime_error);
+}
 
 TEST(MrptReactive, ReachesAStaticGoalBehindADiskWithoutTouchingIt) {
   const sim::ClosedLoopSetup setup = staticSetup();

@@ -228,7 +228,7 @@ TEST(SimScenario, BeyondThePaperSwitchesDefaultToThePaper) {
   EXPECT_EQ(s.setup.controller.k_t, paper.k_t);
   EXPECT_EQ(s.setup.controller.tangential_hysteresis, paper.tangential_hysteresis);
   EXPECT_FALSE(s.setup.pose_sensor.active());
-  EXPECT_TRUE(s.setup.obstacle_velocities.empty());
+  EXPECT_TRUE(s.setup.obstacle_motions.empty());
 }
 
 TEST(SimScenario, ReadsBeyondThePaperKeys) {
@@ -250,8 +250,9 @@ TEST(SimScenario, ReadsBeyondThePaperKeys) {
   EXPECT_DOUBLE_EQ(c.max_prediction, 0.8);
   EXPECT_DOUBLE_EQ(s.setup.pose_sensor.sample_period, 0.1);
   EXPECT_DOUBLE_EQ(s.setup.pose_sensor.delay, 0.2);
-  ASSERT_EQ(s.setup.obstacle_velocities.size(), 1u);
-  EXPECT_EQ(s.setup.obstacle_velocities[0], Eigen::Vector2d(0.1, -0.2));
+  ASSERT_EQ(s.setup.obstacle_motions.size(), 1u);
+  EXPECT_EQ(s.setup.obstacle_motions[0].velocityAt(3.0), Eigen::Vector2d(0.1, -0.2));
+  EXPECT_TRUE(s.setup.obstacle_motions[0].positionAt(2.0).isApprox(Eigen::Vector2d(1.7, -0.4)));
 }
 
 TEST(SimScenario, RefusesBadBeyondThePaperKeys) {
@@ -294,4 +295,63 @@ TEST(SimScenario, OverridesAreCheckedLikeTheFile) {
   refused("controller.body_safe=maybe", "controller.body_safe");
   refused("simulation.duration", "expected section.key=value");
   refused("reference.amplitude=0", "reference.amplitude");
+}
+
+// An obstacle that walks, stops and turns (motion: legs); the closed loop moves it along them
+// and hands the laws its velocity of the moment.
+TEST(SimScenario, ObstaclesWalkTheirLegsInTheClosedLoop) {
+  const std::string text = replaced(kMinimum, "{center: [1.5, 0.0], radius: 0.15}",
+                                    "{center: [1.5, 0.0], radius: 0.15, motion: {start_time: 1.0, legs: [\n"
+                                    "  {duration: 2.0, velocity: [0.5, 0.0]}, {duration: 1.0, velocity: [0.0, 0.0]},\n"
+                                    "  {duration: 1.0, velocity: [0.0, -0.4]}]}}");
+  sim::Scenario s = sim::parseScenario(text, "walk.yaml");
+  ASSERT_EQ(s.setup.obstacle_motions.size(), 1u);
+  const core::ObstacleMotion& m = s.setup.obstacle_motions[0];
+  EXPECT_DOUBLE_EQ(m.start_time, 1.0);
+  EXPECT_FALSE(m.repeat);
+  ASSERT_EQ(m.legs.size(), 3u);
+  s.setup.duration = 6.0;
+  s.setup.control_period = 0.01;
+  const auto reference = s.makeReference();
+  int checked = 0;
+  sim::runClosedLoop(s.setup, *reference, [&](const sim::ClosedLoopStep& step) {
+    const core::Disk& d = step.obstacles->at(0);
+    const double t = step.t;
+    // Stands, walks 1 m along x, stands 1 s, walks 0.4 m down, stands.
+    const Eigen::Vector2d expected = t < 1.0   ? Eigen::Vector2d(1.5, 0.0)
+                                     : t < 3.0 ? Eigen::Vector2d(1.5 + 0.5 * (t - 1.0), 0.0)
+                                     : t < 4.0 ? Eigen::Vector2d(2.5, 0.0)
+                                     : t < 5.0 ? Eigen::Vector2d(2.5, -0.4 * (t - 4.0))
+                                               : Eigen::Vector2d(2.5, -0.4);
+    EXPECT_LT((d.center - expected).norm(), 1e-9) << "t = " << t;
+    const Eigen::Vector2d velocity = t > 1.5 && t < 2.5   ? Eigen::Vector2d(0.5, 0.0)
+                                     : t > 4.5 && t < 4.9 ? Eigen::Vector2d(0.0, -0.4)
+                                                          : d.velocity;  // (near a leg's change: not checked)
+    EXPECT_EQ(d.velocity, velocity) << "t = " << t;
+    if (t > 3.2 && t < 3.8) {
+      EXPECT_TRUE(d.velocity.isZero()) << "t = " << t;
+    }
+    ++checked;
+  });
+  EXPECT_GT(checked, 500);
+}
+
+TEST(SimScenario, RefusesBadMotions) {
+  const auto with = [](const std::string& obstacle) {
+    return replaced(kMinimum, "{center: [1.5, 0.0], radius: 0.15}", obstacle);
+  };
+  expectRefused(with("{center: [1.5, 0.0], radius: 0.15, velocity: [0.1, 0.0], motion: {legs: "
+                     "[{duration: 1.0, velocity: [0.1, 0.0]}]}}"),
+                "obstacles[0].motion");
+  expectRefused(with("{center: [1.5, 0.0], radius: 0.15, motion: {legs: []}}"), "obstacles[0].motion.legs");
+  expectRefused(with("{center: [1.5, 0.0], radius: 0.15, motion: {legs: [{duration: 0.0, velocity: [1, 0]}]}}"),
+                "obstacles[0].motion.legs[0].duration");
+  expectRefused(with("{center: [1.5, 0.0], radius: 0.15, motion: {legs: [{duration: 1.0, velocity: [1]}]}}"),
+                "obstacles[0].motion.legs[0].velocity");
+  expectRefused(with("{center: [1.5, 0.0], radius: 0.15, motion: {repeat: true, legs: "
+                     "[{duration: 1.0, velocity: [1, 0]}]}}"),
+                "obstacles[0].motion.repeat");
+  expectRefused(with("{center: [1.5, 0.0], radius: 0.15, motion: {legs: [{duration: 1.0, velocity: [1, 0]}], "
+                     "pace: 2}}"),
+                "obstacles[0].motion.pace");
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "amigobot_tracking/core/controller.h"
+#include "amigobot_tracking/core/obstacle_motion.h"
 #include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/core/resume_ramp.h"
@@ -63,9 +64,11 @@ struct ClosedLoopSetup {
   core::ControllerConfig controller;
   core::Pose2 initial_pose;
   std::vector<core::Disk> obstacles;
-  // Obstacle velocities [m/s], one per obstacle (centre(t) = centre + velocity t); empty: static.
-  // The controller is given them (Disk::velocity, ground truth; used with moving_obstacles).
-  std::vector<Eigen::Vector2d> obstacle_velocities;
+  // How the obstacles move (core/obstacle_motion.h), one per obstacle; empty: all static. Each
+  // path is walked from its obstacle's centre: centre(t) = centre + positionAt(t) - start (a
+  // scenario sets start = centre); the controller is given Disk::velocity = velocityAt(t)
+  // (ground truth; used with moving_obstacles).
+  std::vector<core::ObstacleMotion> obstacle_motions;
   double duration = 10.0;        // [s]
   double control_period = 1e-3;  // [s] controller and integration step (the fine step)
   double max_step = 0.0;         // [s] > control_period: variable step up to this (step_size.h)
@@ -124,6 +127,11 @@ using ClosedLoopObserver = std::function<void(const ClosedLoopStep&)>;
 
 // Setup errors ("field: reason"), checked before anything runs; empty when valid.
 std::string validateSetup(const ClosedLoopSetup& setup);
+
+// A motion at a constant velocity from t = 0 (what a scenario's `velocity: [vx, vy]` means).
+core::ObstacleMotion constantMotion(const Eigen::Vector2d& start, const Eigen::Vector2d& velocity);
+// The velocity of a motion made by constantMotion; false for any other motion.
+bool isConstantMotion(const core::ObstacleMotion& motion, Eigen::Vector2d* velocity);
 
 // The setup must be valid (validateSetup empty). Throws std::invalid_argument for kMrptReactive
 // without external_law.

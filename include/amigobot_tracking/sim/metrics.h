@@ -29,7 +29,10 @@
 // of p_r about it is accumulated; max_orbit_turns is the largest |angle| / 2 pi of such a
 // visit (passing a disk gives about 0.5, circling it once 1). Toggles: steps where the escape
 // (u_t != 0), or the avoidance (a disk in its band), switches on or off. Command jumps: the
-// largest |v_k - v_(k-1)| and |w_k - w_(k-1)| between consecutive steps.
+// largest |v_k - v_(k-1)| and |w_k - w_(k-1)| between consecutive steps. Reversals: steps where
+// w's sign is the opposite of the last w beyond +-kReversalDeadband (a command that hovers at
+// zero does not count; one that swings through it does), and their rate per minute of run:
+// the chatter a jump figure cannot see.
 #pragma once
 
 #include <cstdint>
@@ -109,6 +112,8 @@ struct RunMetrics {
   std::uint64_t avoidance_toggles = 0;  // steps where the avoidance switched on or off
   double max_delta_v = 0.0;             // [m/s] largest per-step change of v
   double max_delta_omega = 0.0;         // [rad/s] largest per-step change of omega
+  std::uint64_t omega_reversals = 0;    // sign reversals of omega (beyond the deadband)
+  double omega_reversals_per_minute = 0.0;  // [1/min] omega_reversals / run time
 };
 
 class MetricsAccumulator {
@@ -127,6 +132,7 @@ class MetricsAccumulator {
   // (t, p_r, excess) over the last window
   std::deque<std::pair<double, std::pair<Eigen::Vector2d, double>>> recent_;
   int last_side_ = 0;
+  int last_omega_sign_ = 0;                                 // sign of the last omega beyond the deadband, 0 before
   double stall_start_ = -1.0;                               // t_a of the stall in progress, or < 0
   double last_stall_t_ = 0.0;                               // t of the last stalled step
   bool has_last_ = false, last_escaping_ = false, last_avoiding_ = false;
@@ -141,6 +147,7 @@ constexpr double kDiamondTolerance = 1e-9;
 constexpr double kStallSpeed = 0.05;   // [m/s] net headway below this counts as standing
 constexpr double kStallWindow = 0.5;   // [s] over which the headway is measured
 constexpr double kStallError = 0.2;    // [m] twice the experiment's rho_inf: clearly not arrived
+constexpr double kReversalDeadband = 0.01;  // [rad/s] |w| at or below this is no turn either way
 constexpr double kOrbitReach = 0.5;    // [m] beyond a disk's zone where p_r's angle about it still counts
 
 }  // namespace sim

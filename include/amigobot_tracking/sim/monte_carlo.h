@@ -71,6 +71,7 @@ struct MonteCarloSummary {
   double worst_orbit_turns = 0.0;
   std::uint64_t worst_escape_toggles = 0, worst_avoidance_toggles = 0, worst_side_flips = 0;
   double worst_max_delta_v = 0.0, worst_max_delta_omega = 0.0;  // [m/s], [rad/s]
+  double mean_omega_reversals_per_minute = 0.0, worst_omega_reversals_per_minute = 0.0;  // [1/min]
   std::uint64_t diamond_violations = 0, nan_steps = 0;          // summed over the runs
   double sim_time = 0.0, wall_time = 0.0;  // [s] summed over the runs
   std::vector<MonteCarloRun> per_run;

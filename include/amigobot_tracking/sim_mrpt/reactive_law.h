@@ -29,6 +29,9 @@ struct ReactiveLawOptions {
   int ptg_paths = 121;                    // trajectories per PTG
   int beams = 360;                        // laser beams over 360 deg
   double range_max = 8.0;                 // [m] laser range (sim_laser's default)
+  // Compile MRPT's score formulas on a point in PTG 0's domain before the first step (see
+  // reactive_law.cpp); false shows MRPT 2.5's own failure on a target outside that domain.
+  bool prime_scores = true;
 };
 
 // The navigator's configuration (MRPT INI text) for these limits and robot: PTGs C forward,
@@ -36,7 +39,9 @@ struct ReactiveLawOptions {
 // diamond's corners.
 std::string reactiveConfigText(const core::ControllerConfig& config, const ReactiveLawOptions& options);
 
-// One law per run (not thread-safe: it switches MRPT's process-wide clock while it lives).
+// A navigator error (MRPT's NAV_ERROR: an exception inside it, an emergency stop) makes step()
+// throw std::runtime_error naming MRPT's reason: the run fails instead of scoring a robot that
+// stopped. One law per run (not thread-safe: it switches MRPT's process-wide clock while it lives).
 std::unique_ptr<sim::StepLaw> makeReactiveLaw(const sim::ClosedLoopSetup& setup,
                                               const ReactiveLawOptions& options = ReactiveLawOptions());
 // What ClosedLoopSetup::external_law takes.

@@ -1,0 +1,70 @@
+#!/usr/bin/python3
+"""scripts/reports/pedestrians.py --quick on three classes with the real simulator: a row per class
+and law with every column, every run completed (none failed), no NaN, no command outside the
+diamond, and the variants draw what the benchmark says (speeds in range, the encounter kept).
+
+Usage: test_pedestrian_report.py PATH/TO/pedestrians.py PATH/TO/amigobot_sim
+"""
+import math
+import os
+import sys
+import tempfile
+import unittest
+
+from script_loader import load_script_from_argv
+
+if len(sys.argv) > 1:
+    sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[1])))  # its siblings markdown.py, scenario_yaml.py
+pedestrians = load_script_from_argv("pedestrians")
+SIM = sys.argv.pop(1) if len(sys.argv) > 1 else ""
+CLASSES = ["two_sides", "stopping", "crowd"]
+
+
+class QuickPedestrianReport(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.results = pedestrians.main(SIM, os.path.join(cls.tmp.name, "out"), cls.tmp.name,
+                                       runs=pedestrians.QUICK_RUNS, jobs=2, classes=CLASSES, quick=True)
+        with open(os.path.join(cls.tmp.name, "pedestrians.md")) as f:
+            cls.rows = pedestrians.markdown.table_rows(f.read())
+
+    def test_every_column_and_a_row_per_class_and_law(self):
+        self.assertEqual(self.rows[0], pedestrians.HEADINGS)
+        body = self.rows[1:]
+        self.assertEqual(len(body), len(CLASSES) * len(pedestrians.LAWS))
+        for row in body:
+            self.assertEqual(len(row), len(pedestrians.HEADINGS), row)
+            self.assertNotIn("—", row)
+
+    def test_every_run_completes_without_nan_or_diamond_violation(self):
+        for name, law, s in self.results:
+            self.assertEqual(s["failed"], 0, (name, law, s.get("reasons")))
+            self.assertEqual(s["runs"], pedestrians.QUICK_RUNS)
+            self.assertEqual(s["runs_with_nan"], 0, (name, law))
+            self.assertEqual(s["diamond_violations"], 0, (name, law))
+            self.assertTrue(math.isfinite(s["mean_true_ase"]) and s["mean_true_ase"] > 0.0, (name, law))
+            self.assertGreaterEqual(s["mean_omega_reversals_per_minute"], 0.0)
+
+    def test_a_failed_run_is_counted_and_named(self):
+        s = pedestrians.summarize([{"failed": "amigobot_sim: mrpt_reactive: MRPT's navigator failed"}])
+        self.assertEqual((s["runs"], s["failed"]), (1, 1))
+        self.assertEqual(pedestrians.cells(s)[1], "1")
+
+    def test_variants_draw_speeds_in_range_and_keep_the_encounter(self):
+        base = pedestrians.scenario_yaml.load(os.path.join(pedestrians.SCENES, "two_sides.yaml"))
+        for i in range(20):
+            data = pedestrians.make_variant(base, i)
+            for before, after in zip(base["obstacles"], data["obstacles"]):
+                legs = after["motion"]["legs"]
+                speed = math.hypot(*legs[0]["velocity"])
+                self.assertGreaterEqual(speed, pedestrians.SPEEDS[0] - 1e-9)
+                self.assertLessEqual(speed, pedestrians.SPEEDS[1] + 1e-9)
+                # Where it crosses the target's line (y = 0): within the timing and shift of the scene's.
+                t_cross = after["motion"]["start_time"] + abs(after["center"][1]) / abs(legs[0]["velocity"][1])
+                self.assertLess(abs(t_cross - pedestrians.ENCOUNTER), pedestrians.TIMING + 0.6)
+                self.assertLess(abs(after["center"][0] - before["center"][0]), pedestrians.PERSON_SHIFT + 1e-9)
+
+
+if __name__ == "__main__":
+    unittest.main()
