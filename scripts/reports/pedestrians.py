@@ -35,7 +35,7 @@ LAWS = {
     "recommended_cv": ["--variant", "recommended", "--moving-obstacles", "true"],
 }
 CLASSES = {
-    "crossing_ahead": "one person crosses the target's line 1 m ahead of it",
+    "crossing_ahead": "one person crosses the target's line 0.4 m ahead of it",
     "crossing_behind": "one person crosses the robot's line just behind it",
     "two_sides": "two people cross at once from both sides",
     "overtaking": "one person overtakes the robot from behind along its line",
