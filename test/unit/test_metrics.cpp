@@ -244,3 +244,20 @@ TEST(FailureMetrics, TogglesAndCommandJumps) {
   EXPECT_NEAR(r.max_delta_v, 0.305, 1e-12);
   EXPECT_NEAR(r.max_delta_omega, 1.6, 1e-12);
 }
+
+// Chatter: w swinging through zero counts, w hovering within the deadband does not, and the
+// count is per minute of run (here 30 s).
+TEST(FailureMetrics, OmegaReversalsPerMinute) {
+  MetricsAccumulator acc;
+  // +, -, (deadband), -, +, (0), +, -: reversals at steps 1, 4 and 7.
+  const double w[] = {0.5, -0.5, 0.005, -0.2, 0.3, 0.0, 0.3, -0.02};
+  for (int k = 0; k < 8; ++k) {
+    MetricSample m = sample(30.0 / 8.0, {0.1, 0.0}, 1.0, {0.1, w[k]});
+    m.t = 30.0 / 8.0 * k;
+    acc.add(m);
+  }
+  const RunMetrics r = acc.result();
+  EXPECT_EQ(r.omega_reversals, 3u);
+  EXPECT_NEAR(r.omega_reversals_per_minute, 6.0, 1e-9);
+  EXPECT_EQ(MetricsAccumulator().result().omega_reversals_per_minute, 0.0);  // no time, no rate
+}
