@@ -201,6 +201,7 @@ METRIC_UNITS = {
     "max_true_error": "m", "final_error": "m", "conflict_steps": "steps", "escape_steps": "steps", "side_flips": "steps",
     "max_orbit_turns": "turns", "escape_toggles": "steps", "avoidance_toggles": "steps", "max_delta_v": "m/s",
     "max_delta_omega": "rad/s", "within_rho_fraction": "share of steps", "commands": "count",
+    "omega_reversals": "count", "omega_reversals_per_minute": "1/min",
     "path_length": "m", "virtual_obstacles": "count", "truth_samples": "count", "safe": "-", "ran": "-",
     "law": "-", "variant": "-", "samples": "count", "missed": "count", "frames": "-", "realtime_factor": "-",
 }
