@@ -66,5 +66,24 @@ class QuickPedestrianReport(unittest.TestCase):
                 self.assertLess(abs(after["center"][0] - before["center"][0]), pedestrians.PERSON_SHIFT + 1e-9)
 
 
+    def test_people_already_walking_at_the_start_stand_where_they_are_then(self):
+        # Slow people reach the encounter only if they set off before t = 0: the variant starts
+        # them at t = 0 where they would be then, so the file's centre is where they are.
+        base = pedestrians.scenario_yaml.load(os.path.join(pedestrians.SCENES, "overtaking.yaml"))
+        moved = 0
+        for i in range(30):
+            person = pedestrians.make_variant(base, i)["obstacles"][0]
+            motion = person["motion"]
+            self.assertGreaterEqual(motion["start_time"], 0.0)
+            self.assertTrue(all(leg["duration"] > 0.0 for leg in motion["legs"]))
+            moved += motion["start_time"] == 0.0
+            # At the encounter (within the timing) it is where the scene has it, within the shift.
+            speed = motion["legs"][0]["velocity"][0]
+            x_at = person["center"][0] + speed * (pedestrians.ENCOUNTER - motion["start_time"])
+            nominal = base["obstacles"][0]["center"][0] + 0.7 * (pedestrians.ENCOUNTER - 6.0)
+            self.assertLess(abs(x_at - nominal), speed * pedestrians.TIMING + pedestrians.PERSON_SHIFT + 1e-9)
+        self.assertGreater(moved, 0)  # the case occurred
+
+
 if __name__ == "__main__":
     unittest.main()
