@@ -135,7 +135,7 @@ OUT ?= out/$(basename $(notdir $(SCENARIO)))
 sim: build ## offline simulator: SCENARIO=config/scenarios/X.yaml OUT=out/X ARGS=...
 	$(WS)/devel/lib/amigobot_tracking/amigobot_sim --scenario $(SCENARIO) --out $(OUT) $(ARGS)
 
-# The paper's Section 5 and the baselines: writes docs/results.md and docs/figures/.
+# The paper's Section 5 and the baselines: writes docs/results.md and docs/figures/ (then docs/pedestrians.md).
 reproduce: build ## the paper's Section 5 and the baselines: docs/results.md, docs/figures/
 	$(ROOT)/scripts/reports/reproduce.py --sim $(WS)/devel/lib/amigobot_tracking/amigobot_sim --out $(ROOT)/out/reproduce
 	$(PEDESTRIANS)
