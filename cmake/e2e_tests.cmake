@@ -14,8 +14,8 @@ add_executable(test_e2e EXCLUDE_FROM_ALL test/e2e/test_e2e.cpp test/e2e/test_bad
   test/e2e/test_target_loss.cpp test/e2e/test_link_loss.cpp test/e2e/test_avoidance.cpp test/e2e/test_two_robots.cpp
   test/e2e/test_fault_injection.cpp test/e2e/test_wrong_initial_pose.cpp test/e2e/test_laser_faults.cpp
   test/e2e/test_cpu_starvation.cpp test/e2e/test_kidnap.cpp
-  test/e2e/test_bad_scans.cpp test/e2e/test_bad_virtual_obstacles.cpp)
-target_link_libraries(test_e2e amigobot_tracking_ros_sim ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+  test/e2e/test_bad_scans.cpp test/e2e/test_bad_virtual_obstacles.cpp test/e2e/test_person_crossing.cpp)
+target_link_libraries(test_e2e amigobot_tracking_ros_sim amigobot_tracking_world ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
 target_include_directories(test_e2e SYSTEM PRIVATE ${GTEST_INCLUDE_DIRS})
 target_include_directories(test_e2e PRIVATE test/support test/e2e/include)
 target_compile_definitions(test_e2e PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
@@ -62,6 +62,7 @@ amigobot_add_e2e_test(test/e2e/bad_virtual_obstacles.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/virtual_obstacle_burst.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/link_loss.test tcp_port status_port)
 amigobot_add_e2e_test(test/e2e/avoidance.test tcp_port status_port laser_port)
+amigobot_add_e2e_test(test/e2e/person_crossing.test tcp_port status_port laser_port)
 amigobot_add_e2e_test(test/e2e/rates.test tcp_port status_port)
 # laser:=none with the lab's own driver (a standalone laser_node) on /front_laser/scan; judged in Python.
 amigobot_add_e2e_test(test/e2e/external_laser.test tcp_port status_port laser_port)

@@ -7,6 +7,9 @@ tracking, rviz with the shipped display), enables tracking through its service, 
 virtual obstacle (a disk of radius 0.25 m where the paper has its square) through the topic, records a rosbag,
 screenshots rviz, stops everything it started, and writes REPORT/: run.bag, trajectory.csv,
 metrics.json, the paper's Figs 3-8 (scripts/reports/plot_run.py), rviz_*.png, summary.md, logs/.
+The world's people (lab.yaml: one crossing the robot's path about 60 s into the course) walk
+on the emulator's clock; run_report places them from the recorded /ground_truth_clock and
+counts a body contact with one as a collision (UNSAFE).
 Exit 0: safe run that tracked; 3: collision or a command outside the diamond; 4: the run did
 not happen; 5: safe, but it did not track (run_report's tracking verdict: true error above
 rho_inf + tolerance outside the obstacle episodes and their recovery time, or at the end).
@@ -42,7 +45,8 @@ LAW_TEXT = {"recommended": "the recommended law, config/demo_tracking.yaml",
             "escape": "the paper's law with the tangential escape",
             "paper": "the paper's law alone, --paper-law (config/paper_law.yaml)"}
 EXIT_NAMES = {0: "SAFE, TRACKED", 3: "UNSAFE", 4: "DID NOT RUN", 5: "SAFE, DID NOT TRACK"}
-TOPICS = ["/tracking/state", "/tracking/virtual_obstacles", "/cmd_vel", "/ground_truth", "/odom", "/scan",
+TOPICS = ["/tracking/state", "/tracking/virtual_obstacles", "/cmd_vel", "/ground_truth", "/ground_truth_clock", "/odom",
+          "/scan",
           "/tf", "/tf_static", "/robot_trail", "/target_trail"]
 
 
@@ -193,6 +197,7 @@ def num(value, digits=3):
 METRIC_UNITS = {
     "ase": "m²", "aae": "m", "ise": "m² s", "iae": "m s", "tec": "-", "max_e_over_rho": "-", "max_rho": "m",
     "min_clearance_offset": "m", "min_clearance_body": "m", "min_clearance_world": "m", "min_clearance_virtual": "m",
+    "min_clearance_people": "m",
     "body_collisions": "count", "offset_collisions": "count", "diamond_violations": "steps",
     "command_diamond_violations": "commands", "max_command_diamond_norm": "- (1 = on the diamond)",
     "saturated_steps": "steps", "saturated_fraction": "share of steps", "envelope_widenings": "steps",

@@ -31,7 +31,7 @@ sources() {  # the sources of target $1 besides test/fuzz/fuzz_$1.cpp
     rplidar) echo src/sensors/rplidar.cpp ;;
     status_line) echo src/aria/emulator_status.cpp src/aria/transport.cpp src/link/address.cpp src/link/serial_port.cpp src/core/diamond.cpp src/core/error_text.cpp ;;
     param_value) echo src/core/field_table.cpp ;;
-    world) echo src/world/world.cpp src/core/input_file.cpp src/core/diamond.cpp ;;
+    world) echo src/world/world.cpp src/core/input_file.cpp src/core/diamond.cpp src/core/obstacle_motion.cpp ;;
     scenario) echo src/sim/*.cpp src/core/*.cpp ;;
     map) echo src/localization/occupancy_map.cpp src/core/input_file.cpp ;;
   esac

@@ -24,11 +24,18 @@ long wrapUnits(double value, long modulus) {
 
 std::vector<double> RobotEmulator::sonarRanges() const {
   std::vector<double> ranges;
+  // People stand where they are at the emulator's last step (the clock of the status line).
+  const world::World* room = &options_.world;
+  world::World now;
+  if (!options_.world.people.empty()) {
+    now = world::worldAt(options_.world, std::max(0.0, last_time_));
+    room = &now;
+  }
   const mrpt::poses::CPose2D robot(pose_.x, pose_.y, pose_.theta);
   for (const SonarPose& s : options_.robot.sonars) {
     const mrpt::poses::CPose2D sensor = robot + mrpt::poses::CPose2D(s.x, s.y, s.yaw);
     const core::Pose2 axis{sensor.x(), sensor.y(), sensor.phi()};
-    ranges.push_back(std::min(options_.sonar_max_range, world::coneRange(options_.world, axis, options_.sonar_half_cone)));
+    ranges.push_back(std::min(options_.sonar_max_range, world::coneRange(*room, axis, options_.sonar_half_cone)));
   }
   return ranges;
 }

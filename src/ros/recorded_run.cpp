@@ -50,9 +50,10 @@ std::string RecordedRunConfig::validate() const {
   return "";
 }
 
-RecordedRun::RecordedRun(RecordedRunConfig config) : config_(std::move(config)) {}
+RecordedRun::RecordedRun(RecordedRunConfig config) : config_(std::move(config)), room_(world::worldAt(config_.world, 0.0)) {}
 
-void RecordedRun::addTruth(double, const core::Pose2& pose) {
+void RecordedRun::addTruth(double, const core::Pose2& pose, double world_t) {
+  if (!config_.world.people.empty()) room_ = world::worldAt(config_.world, world_t);
   truth_ = pose;
   have_truth_ = true;
   ++summary_.truth_samples;
@@ -91,11 +92,15 @@ void RecordedRun::addState(const TrackingState& s) {
   const Eigen::Vector2d p_d(s.p_d.x, s.p_d.y), v_hat(s.v_hat.x, s.v_hat.y), e(s.e.x, s.e.y);
   // Clearance to everything solid (world) and virtual: the verdict's obstacle episodes.
   auto clearanceToAll = [&](const Eigen::Vector2d& p, double radius) {
-    return std::min(world::clearance(config_.world, p, radius), core::clearance(p, radius, virtual_));
+    return std::min(world::clearance(room_, p, radius), core::clearance(p, radius, virtual_));
   };
   const Eigen::Vector2d body = truth_.position();
   const Eigen::Vector2d p_r_true = core::offsetPoint(truth_, config_.offset);
-  const double clearance_world = world::clearance(config_.world, body, config_.robot_radius);
+  const double clearance_world = world::clearance(room_, body, config_.robot_radius);  // people included
+  for (std::size_t i = config_.world.obstacles.size(); i < room_.obstacles.size(); ++i) {  // worldAt appends them
+    summary_.min_clearance_people = std::min(summary_.min_clearance_people,
+                                             core::clearance(body, config_.robot_radius, {room_.obstacles[i]}));
+  }
   const double clearance_virtual = core::clearance(body, config_.robot_radius, virtual_);
   summary_.min_clearance_world = std::min(summary_.min_clearance_world, clearance_world);
   summary_.min_clearance_virtual = std::min(summary_.min_clearance_virtual, clearance_virtual);
@@ -115,7 +120,7 @@ void RecordedRun::addState(const TrackingState& s) {
   m.rho = s.rho;
   m.u = core::Twist2{s.v, s.omega};
   m.diamond_norm = std::abs(s.v) / config_.v_max + std::abs(s.omega) / config_.w_max;
-  m.clearance_offset = std::min(world::clearance(config_.world, p_r_true, config_.robot_radius),
+  m.clearance_offset = std::min(world::clearance(room_, p_r_true, config_.robot_radius),
                                 core::clearance(p_r_true, config_.robot_radius, virtual_));
   m.clearance_body = std::min(clearance_world, clearance_virtual);
   m.estimator_settled = t > config_.settle_time;
@@ -185,6 +190,7 @@ void to_json(sim::Json& j, const RecordedRunSummary& s) {
   j.update(sim::Json{{"within_rho_fraction", jsonNumber(s.within_rho_fraction)},
                      {"min_clearance_world", jsonNumber(s.min_clearance_world)},
                      {"min_clearance_virtual", jsonNumber(s.min_clearance_virtual)},
+                     {"min_clearance_people", jsonNumber(s.min_clearance_people)},
                      {"commands", s.commands},
                      {"command_diamond_violations", s.command_violations},
                      {"max_command_diamond_norm", jsonNumber(s.max_command_norm)},

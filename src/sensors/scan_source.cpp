@@ -31,7 +31,8 @@ core::Pose2 ScanSource::sensorPose(const core::Pose2& base) const {
   return sensor;
 }
 
-std::vector<float> ScanSource::revolution(const core::Pose2& sensor, const core::ScanGeometry& grid, std::vector<float>* angles) {
+std::vector<float> ScanSource::revolution(const core::Pose2& sensor, const world::World& room, const core::ScanGeometry& grid,
+                                          std::vector<float>* angles) {
   // The sample clock and the motor are not locked: the step between samples varies from one
   // revolution to the next, and each revolution starts where the last one left off.
   const RplidarGeometry& g = model_.rplidar;
@@ -43,13 +44,16 @@ std::vector<float> ScanSource::revolution(const core::Pose2& sensor, const core:
     core::ScanGeometry beam = grid;
     beam.angle_min = options_.upside_down ? -angle : angle;  // looks at -angle in the mount frame
     angles->push_back(static_cast<float>(angle));
-    ranges.push_back(world::raycastScan(sensor, world_, beam, 1)[0]);
+    ranges.push_back(world::raycastScan(sensor, room, beam, 1)[0]);
   }
   phase_ -= 360.0;
   return ranges;
 }
 
 EmulatedScan ScanSource::cast(const core::Pose2& base, double t) {
+  // People (moving disks) stand where they are at t, the emulator's clock of the pose.
+  if (!world_.people.empty()) snapshot_ = world::worldAt(world_, t);
+  const world::World& room = world_.people.empty() ? world_ : snapshot_;
   core::ScanGeometry geometry = model_.geometry();
   if (options_.upside_down) {  // beam i looks at -angle_i in the mount frame
     geometry.angle_min = -geometry.angle_min;
@@ -57,9 +61,9 @@ EmulatedScan ScanSource::cast(const core::Pose2& base, double t) {
   }
   EmulatedScan scan;
   if (model_.protocol == Protocol::kRplidar) {
-    scan.ranges = revolution(sensorPose(base), geometry, &scan.angles);
+    scan.ranges = revolution(sensorPose(base), room, geometry, &scan.angles);
   } else {
-    scan.ranges = world::raycastScan(sensorPose(base), world_, geometry, model_.beams());
+    scan.ranges = world::raycastScan(sensorPose(base), room, geometry, model_.beams());
   }
   scan.t = t;
   scan.index = index_++;

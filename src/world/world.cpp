@@ -30,6 +30,16 @@ Problem diskProblem(const core::Disk& d) {
   return {};
 }
 
+Problem personProblem(const Person& p) {
+  if (!(p.radius > 0.0) || !std::isfinite(p.radius)) return {"radius", "expected a radius > 0 in metres"};
+  const std::string bad = p.motion.validate();  // "key: reason"
+  if (!bad.empty()) {
+    const auto colon = bad.find(": ");
+    return {bad.substr(0, colon), colon == std::string::npos ? bad : bad.substr(colon + 2)};
+  }
+  return {};
+}
+
 Problem segmentProblem(const Segment& s) {
   if (!s.from.allFinite() || !s.to.allFinite()) return {"", "expected finite [x, y] end points in metres"};
   if ((s.to - s.from).norm() < kMinLength) return {"", "degenerate segment: its two end points coincide"};
@@ -79,9 +89,10 @@ std::optional<std::vector<double>> numbers(const YAML::Node& node, std::size_t n
   return values;
 }
 
-Eigen::Vector2d readPoint(const std::string& path, const YAML::Node& node, const std::string& key) {
+Eigen::Vector2d readPoint(const std::string& path, const YAML::Node& node, const std::string& key,
+                          const char* expected = "expected [x, y] in metres (finite)") {
   const auto v = numbers(node, 2);
-  if (!v) fail(path, node, key, "expected [x, y] in metres (finite)");
+  if (!v) fail(path, node, key, expected);
   return {(*v)[0], (*v)[1]};
 }
 
@@ -105,6 +116,49 @@ core::Disk readDisk(const std::string& path, const YAML::Node& node, const std::
     fail(path, node, key + ".radius", "expected a radius > 0 in metres");
   }
   return {{(*center)[0], (*center)[1]}, radius};
+}
+
+// A finite number at node[key] (default when absent), else a failure naming where.
+double readNumber(const std::string& path, const YAML::Node& node, const std::string& key, const std::string& where,
+                  double fallback, const char* expected) {
+  if (!node[key]) return fallback;
+  double v = 0.0;
+  if (!YAML::convert<double>::decode(node[key], v) || !std::isfinite(v)) fail(path, node[key], where + key, expected);
+  return v;
+}
+
+// One person: {radius, start, start_time, legs: [{duration, velocity}], repeat}.
+Person readPerson(const std::string& path, const YAML::Node& node, const std::string& key) {
+  const char* expected = "expected {radius: r, start: [x, y], start_time: s, legs: [{duration: s, velocity: [vx, vy]}], repeat: false}";
+  if (!node.IsMap()) fail(path, node, key, expected);
+  onlyKeys(path, node, key + ".", {"radius", "start", "start_time", "legs", "repeat"});
+  Person person;
+  if (!node["radius"]) fail(path, node, key + ".radius", "missing: a radius > 0 in metres");
+  person.radius = readNumber(path, node, "radius", key + ".", 0.0, "expected a radius > 0 in metres");
+  if (!node["start"]) fail(path, node, key + ".start", "missing: where it stands first, [x, y] in metres");
+  person.motion.start = readPoint(path, node["start"], key + ".start");
+  person.motion.start_time = readNumber(path, node, "start_time", key + ".", 0.0, "expected seconds on the emulator's clock");
+  if (const YAML::Node repeat = node["repeat"]) {
+    if (!repeat.IsScalar() || !YAML::convert<bool>::decode(repeat, person.motion.repeat)) {
+      fail(path, repeat, key + ".repeat", "expected true or false");
+    }
+  }
+  if (const YAML::Node legs = node["legs"]) {
+    if (!legs.IsSequence()) fail(path, legs, key + ".legs", "expected a list of {duration: s, velocity: [vx, vy]}");
+    for (std::size_t i = 0; i < legs.size(); ++i) {
+      const std::string leg_key = key + ".legs[" + std::to_string(i) + "]";
+      if (!legs[i].IsMap()) fail(path, legs[i], leg_key, "expected {duration: s > 0, velocity: [vx, vy] m/s}");
+      onlyKeys(path, legs[i], leg_key + ".", {"duration", "velocity"});
+      core::MotionLeg leg;
+      leg.duration = readNumber(path, legs[i], "duration", leg_key + ".", 0.0, "expected a duration > 0 in seconds");
+      if (!legs[i]["velocity"]) fail(path, legs[i], leg_key + ".velocity", "missing: [vx, vy] in m/s");
+      leg.velocity = readPoint(path, legs[i]["velocity"], leg_key + ".velocity", "expected [vx, vy] in m/s (finite)");
+      person.motion.legs.push_back(leg);
+    }
+  }
+  const Problem problem = personProblem(person);
+  if (!problem.ok()) fail(path, node, problem.where(key), problem.reason);
+  return person;
 }
 
 // One wall entry: a segment {from, to} or an open chain {points}, appended as segments.
@@ -178,7 +232,7 @@ namespace {
 
 World parseWorldTree(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap()) fail(path, root, "(top level)", "expected a mapping {initial_pose: ..., obstacles: [...], walls: [...]}");
-  onlyKeys(path, root, "", {"initial_pose", "obstacles", "walls", "polygons"});
+  onlyKeys(path, root, "", {"initial_pose", "obstacles", "walls", "polygons", "people"});
   World world;
   if (const YAML::Node pose = root["initial_pose"]) {
     const auto v = numbers(pose, 3);
@@ -192,6 +246,9 @@ World parseWorldTree(const YAML::Node& root, const std::string& path) {
              [&](const YAML::Node& n, const std::string& k) { readWall(path, n, k, &world.walls); });
   forEntries(path, root, "polygons", "{points: [[x, y], ...]}", [&](const YAML::Node& n, const std::string& k) {
     world.polygons.push_back(readPolygon(path, n, k));
+  });
+  forEntries(path, root, "people", "{radius: r, start: [x, y], legs: [...]}", [&](const YAML::Node& n, const std::string& k) {
+    world.people.push_back(readPerson(path, n, k));
   });
   return world;
 }
@@ -229,7 +286,26 @@ std::string worldYaml(const World& world) {
     }
     out << "]}\n";
   }
+  if (!world.people.empty()) out << "people:\n";
+  for (const Person& p : world.people) {
+    out << "  - {radius: " << p.radius << ", start: ";
+    point(p.motion.start);
+    out << ", start_time: " << p.motion.start_time << ", repeat: " << (p.motion.repeat ? "true" : "false") << ", legs: [";
+    for (std::size_t i = 0; i < p.motion.legs.size(); ++i) {
+      out << (i > 0 ? ", " : "") << "{duration: " << p.motion.legs[i].duration << ", velocity: ";
+      point(p.motion.legs[i].velocity);
+      out << "}";
+    }
+    out << "]}\n";
+  }
   return world.empty() && !world.initial_pose ? "{}\n" : out.str();
+}
+
+World worldAt(const World& world, double t) {
+  World now = world;
+  now.people.clear();
+  for (const Person& p : world.people) now.obstacles.push_back(p.diskAt(t));
+  return now;
 }
 
 std::string validateWorld(const World& world) {
@@ -244,6 +320,7 @@ std::string validateWorld(const World& world) {
   std::string bad = first("obstacles", world.obstacles, diskProblem);
   if (bad.empty()) bad = first("walls", world.walls, segmentProblem);
   if (bad.empty()) bad = first("polygons", world.polygons, polygonProblem);
+  if (bad.empty()) bad = first("people", world.people, personProblem);
   if (bad.empty() && world.initial_pose && !world.initial_pose->isFinite()) bad = "initial_pose: must be finite";
   return bad;
 }

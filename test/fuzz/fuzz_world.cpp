@@ -24,6 +24,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(validateWorld(world).empty());
   const World again = parseWorld(worldYaml(world), "again.yaml");
   check(again.obstacles.size() == world.obstacles.size() && again.walls.size() == world.walls.size() &&
-        again.polygons.size() == world.polygons.size());
+        again.polygons.size() == world.polygons.size() && again.people.size() == world.people.size());
   return 0;
 }

@@ -2,6 +2,8 @@
 // virtual obstacles) with the offline simulator's metrics.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "amigobot_tracking/ros/recorded_run.h"
 
 #include "amigobot_tracking/core/controller_config.h"
@@ -264,4 +266,37 @@ TEST(RecordedRun, JsonEscapesTheRunNameAndKeepsTheSharedKeys) {
   config.world.walls = {{{0.0, -1.0}, {4.0, -1.0}}};
   const nlohmann::json room = nlohmann::json::parse(ros_layer::recordedRunJson(run.summary(), config, {}, name));
   EXPECT_DOUBLE_EQ(room["scenario"]["walls"][0][1][0].get<double>(), 4.0) << "the plots draw the walls";
+}
+
+TEST(RecordedRun, APersonOfTheWorldIsJudgedWhereItIsOnTheEmulatorClock) {
+  // The robot drives along y = 0 from x = 0 to 0.4 (truth at ROS 100..104 s). A person
+  // (r 0.25) walks down x = 0.2 across the path, at y = 0 at emulator time 52 s: with the
+  // emulator's clock 50 s behind ROS time (t = stamp - 50) it is there while the body is
+  // (a contact); with the clock 40 s behind it crossed 8 s earlier and is 1.6 m south.
+  ros_layer::RecordedRunConfig config;
+  world::Person person;
+  person.radius = 0.25;
+  person.motion.start = {0.2, 5.2};
+  person.motion.start_time = 50.0 - 24.0;
+  person.motion.legs = {{40.0, {0.0, -0.2}}};  // y = 0 at 52 s, on to y = -2.8 m at 66 s
+  config.world.people = {person};
+  for (const double behind : {50.0, 40.0}) {
+    ros_layer::RecordedRun run(config);
+    for (int k = 0; k <= 80; ++k) {
+      const double t = 0.05 * k;
+      run.addTruth(100.0 + t, core::Pose2{0.1 * t, 0.0, 0.0}, 100.0 + t - behind);
+      run.addCommand(0.2, 0.0);
+      run.addState(state(t, true, 0.05, 0.1));
+    }
+    run.finish();
+    const auto s = run.summary();
+    if (behind == 50.0) {
+      EXPECT_TRUE(s.collided()) << "the person crossed the robot's body";
+      EXPECT_LT(s.min_clearance_people, 0.0);
+      EXPECT_DOUBLE_EQ(s.min_clearance_world, s.min_clearance_people) << "a person is part of the world";
+    } else {
+      EXPECT_FALSE(s.collided());
+      EXPECT_NEAR(s.min_clearance_people, std::hypot(0.2, 1.6) - 0.43, 1e-9) << "at the first sample (60 s)";
+    }
+  }
 }

@@ -145,6 +145,20 @@ TEST(ScanSource, CastsFromTheMountPoseAndUpsideDownMirrors) {
   EXPECT_THROW(ScanSource(tim, world::World{}, options), std::invalid_argument);
 }
 
+TEST(ScanSource, SeesAPersonWhereItIsAtTheScansEmulatorTime) {
+  // A person walks across the beam straight ahead (x = 2 m) at 0.5 m/s, on it at t = 10 s.
+  world::Person person;
+  person.radius = 0.25;
+  person.motion.start = {2.0, -5.0};
+  person.motion.legs = {{20.0, {0.0, 0.5}}};
+  world::World room;
+  room.people = {person};
+  ScanSource source(laserModel("sick_tim5xx"), room, ScanSourceOptions{});
+  const std::size_t front = 405;  // -0.0135 deg
+  EXPECT_NEAR(source.cast({0.0, 0.0, 0.0}, 10.0).ranges[front], 1.75, 1e-3);
+  EXPECT_FALSE(std::isfinite(source.cast({0.0, 0.0, 0.0}, 2.0).ranges[front])) << "still 4 m south of the beam";
+}
+
 TEST(ColaSession, Lms1xxNeedsTheClientLoginToMeasureAndReportsItsConfiguration) {
   const LaserModel lms = laserModel("sick_lms1xx");
   EXPECT_EQ(lms.beams(), 541);

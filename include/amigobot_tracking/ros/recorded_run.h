@@ -46,6 +46,7 @@ struct RecordedRunSummary {
   double max_command_norm = 0.0;      // max |v|/v_max + |w|/w_max over cmd_vel
   double min_clearance_world = std::numeric_limits<double>::infinity();    // [m] true body to the world (disks, walls, polygons)
   double min_clearance_virtual = std::numeric_limits<double>::infinity();  // [m] true body to virtual disks
+  double min_clearance_people = std::numeric_limits<double>::infinity();   // [m] true body to the world's people (in min_clearance_world too)
   std::uint64_t virtual_obstacles = 0;  // most virtual obstacles present at once
   double within_rho_fraction = 0.0;   // share of enabled steps with |e| < rho
   double path_length = 0.0;           // [m] true distance travelled while enabled
@@ -59,7 +60,9 @@ class RecordedRun {
  public:
   explicit RecordedRun(RecordedRunConfig config);
 
-  void addTruth(double t, const core::Pose2& pose);     // [s] stamp, true pose of base_link in map
+  // [s] stamp, true pose of base_link in map, and the emulator's clock at that pose (where
+  // the world's people are: world::worldAt; ground_truth_localization's ground_truth_clock).
+  void addTruth(double t, const core::Pose2& pose, double world_t = 0.0);
   void addVirtualObstacles(std::vector<core::Disk> disks);
   // Every disk seen: the world's and each virtual obstacle ever present (for the plots).
   std::vector<core::Disk> allObstacles() const;
@@ -84,6 +87,7 @@ class RecordedRun {
   Eigen::Vector2d targetVelocity(std::size_t k) const;
 
   RecordedRunConfig config_;
+  world::World room_;  // config_.world with its people where they are at the latest truth
   sim::MetricsAccumulator accumulator_;
   RecordedRunSummary summary_;
   std::vector<core::Disk> virtual_, virtual_seen_;

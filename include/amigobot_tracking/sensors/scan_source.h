@@ -28,16 +28,19 @@ struct ScanSourceOptions {
 class ScanSource {
  public:
   ScanSource(LaserModel model, world::World world, ScanSourceOptions options);
-  // The scan of the robot at `base` (base_link in the world) at emulator time t.
+  // The scan of the robot at `base` (base_link in the world) at emulator time t [s]: the
+  // world's people (world::worldAt) stand where they are at t.
   EmulatedScan cast(const core::Pose2& base, double t);
   // The sensor pose in the world for a robot at `base`.
   core::Pose2 sensorPose(const core::Pose2& base) const;
 
  private:
-  std::vector<float> revolution(const core::Pose2& sensor, const core::ScanGeometry& grid, std::vector<float>* angles);
+  std::vector<float> revolution(const core::Pose2& sensor, const world::World& room, const core::ScanGeometry& grid,
+                                std::vector<float>* angles);
 
   LaserModel model_;
   world::World world_;
+  world::World snapshot_;  // world_ at the last scan's time (when it has people)
   ScanSourceOptions options_;
   std::mt19937 random_;
   std::uint64_t index_ = 0;

@@ -10,6 +10,18 @@
 //   polygons:                                     # [m] optional, solid outlines (a table):
 //     - {points: [[x, y], [x, y], [x, y], ...]}   #   >= 3 points, closed implicitly; inside
 //                                                 #   counts as collision
+//   people:                                       # optional, moving disks (a person, a trolley):
+//     - radius: 0.25                              #   [m] > 0
+//       start: [x, y]                             #   [m] where it stands until start_time
+//       start_time: 12.0                          #   [s] on the emulator's clock (below), default 0
+//       legs:                                     #   walked in order, then it stands still:
+//         - {duration: 4.0, velocity: [0.0, 0.6]} #   [s] > 0, [m/s] world frame ([0, 0]: stands)
+//       repeat: false                             #   true: the legs start again (must end at start)
+// People move on the robot emulator's clock: seconds since amigobot_emulator started (the `t`
+// of its status line, aria/emulator_status.h), so the laser emulator, the sonar, the ground
+// truth and the judges place a person at the same spot at the same instant. The ROS side
+// maps its stamps to that clock through ground_truth_localization's `ground_truth_clock`.
+// core::ObstacleMotion is the one description of such a path (the simulator's scenarios use it).
 #pragma once
 
 #include <optional>
@@ -17,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "amigobot_tracking/core/obstacle_motion.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -33,14 +46,28 @@ struct Polygon {
   std::vector<Eigen::Vector2d> points;
 };
 
+// A disk that walks: its radius and its path on the emulator's clock.
+struct Person {
+  double radius = 0.25;  // [m] > 0
+  core::ObstacleMotion motion;
+
+  core::Disk diskAt(double t) const { return {motion.positionAt(t), radius}; }
+};
+
 struct World {
   std::vector<core::Disk> obstacles;  // disks (poles, chairs)
+  std::vector<Person> people;         // moving disks; worldAt() places them
   std::vector<Segment> walls;         // every wall segment (chains split into segments)
   std::vector<Polygon> polygons;
   std::optional<core::Pose2> initial_pose;  // absent: the reader's own default
 
-  bool empty() const { return obstacles.empty() && walls.empty() && polygons.empty(); }
+  bool empty() const { return obstacles.empty() && walls.empty() && polygons.empty() && people.empty(); }
 };
+
+// The room as it stands at time t [s, the emulator's clock]: each person becomes a disk
+// (appended to `obstacles`, after the fixed ones) where it is then; `people` is left empty.
+// Every reader that casts rays, judges clearances or draws takes its snapshot from here.
+World worldAt(const World& world, double t);
 
 // A world of these disks only (no walls, polygons or start pose).
 inline World disksOnly(std::vector<core::Disk> disks) {
@@ -61,7 +88,8 @@ World parseWorld(const std::string& text, const std::string& path);
 std::string worldYaml(const World& world);
 
 // "" when every shape is well formed (finite, disks with r > 0, segments of non-zero
-// length, polygons of >= 3 points with non-zero area), else "key[i]: reason".
+// length, polygons of >= 3 points with non-zero area, people with r > 0 and a valid motion),
+// else "key[i]: reason".
 std::string validateWorld(const World& world);
 
 }  // namespace world

@@ -1,12 +1,18 @@
 // ground_truth_localization: asks the emulator's status socket for the true pose of the
 // robot and broadcasts map -> odom so that map -> base_link is that pose (REP 105), and
-// publishes the true pose as `ground_truth` (nav_msgs/Odometry in map) for recording.
+// publishes the true pose as `ground_truth` (nav_msgs/Odometry in map) for recording, and
+// beside it `ground_truth_clock` (sensor_msgs/TimeReference, same stamp): the emulator's
+// clock at that ROS time, on which the world file's people move (world/world.h), so sim_laser,
+// world_markers and run_report place a person where the emulators see it.
 // With publish_tf false it only publishes `ground_truth`: the judge of a run that localises
 // itself (sim.launch localization:=map|slam).
 // When the socket goes away it says so, stops broadcasting (consumers see the pose age
 // and stop the robot) and reconnects every reconnect_period (aria::StatusClient).
 // Parameters: ros/ground_truth.h (GroundTruthConfig).
+#include <algorithm>
+
 #include <nav_msgs/Odometry.h>
+#include <sensor_msgs/TimeReference.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
@@ -34,6 +40,7 @@ int main(int argc, char** argv) {
   tf2_ros::TransformListener listener(tf);
   tf2_ros::TransformBroadcaster broadcaster;
   ros::Publisher truth_pub = nh.advertise<nav_msgs::Odometry>("ground_truth", 10);
+  ros::Publisher clock_pub = nh.advertise<sensor_msgs::TimeReference>("ground_truth_clock", 10);
   aria::StatusClient client(config.host, config.port, config.socket_timeout, config.reconnect_period);
 
   ros::Rate rate(config.rate);
@@ -52,6 +59,11 @@ int main(int argc, char** argv) {
     if (!was_up) ROS_INFO_STREAM("ground_truth_localization: connected to " << config.host << ":" << config.port);
     was_up = true;
     const ros::Time now = ros::Time::now();
+    sensor_msgs::TimeReference clock;  // first: a reader pairing by stamp has it before the pose
+    clock.header.stamp = now;
+    clock.time_ref = ros::Time(std::max(0.0, status.t));
+    clock.source = "amigobot_emulator";
+    clock_pub.publish(clock);
     nav_msgs::Odometry truth;
     truth.header.stamp = now;
     truth.header.frame_id = config.global_frame;

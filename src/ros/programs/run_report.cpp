@@ -4,7 +4,8 @@
 // safe run that tracked; 3: collision or a command outside the diamond; 4: the run did not
 // happen (too few steps, no ground truth, no motion); 5: safe, but it did not track (true
 // error above rho_inf + tolerance outside obstacle episodes and their recovery time, or at
-// the end); 2: bad arguments or unreadable input.
+// the end); 2: bad arguments or unreadable input (also: a world with people and a bag
+// without the emulator's clock, TRUTH_TOPIC_clock, to place them).
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
+#include <sensor_msgs/TimeReference.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <nlohmann/json.hpp>
@@ -21,6 +23,7 @@
 
 #include "amigobot_tracking/TrackingState.h"
 #include "amigobot_tracking/VirtualObstacleArray.h"
+#include "amigobot_tracking/ros/emulator_clock.h"
 #include "amigobot_tracking/ros/localization_error.h"
 #include "amigobot_tracking/ros/recorded_run.h"
 #include "amigobot_tracking/world/world.h"
@@ -84,15 +87,26 @@ int main(int argc, char** argv) {
     rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
     const std::string state_topic = ns + "/state", virtual_topic = ns + "/virtual_obstacles";
     ros_layer::LocalizationErrorMeter localization(global_frame, base_frame, localization_skip);
-    rosbag::View view(bag, rosbag::TopicQuery({state_topic, virtual_topic, cmd_topic, truth_topic, "/tf", "/tf_static"}));
+    // The world's people move on the emulator's clock: ground_truth_localization's pairs place them.
+    const std::string clock_topic = truth_topic + "_clock";
+    ros_layer::EmulatorClock clock;
+    std::uint64_t truth_without_clock = 0;
+    rosbag::View view(bag, rosbag::TopicQuery({state_topic, virtual_topic, cmd_topic, truth_topic, clock_topic, "/tf",
+                                               "/tf_static"}));
     for (const rosbag::MessageInstance& msg : view) {
-      if (msg.getTopic() == "/tf" || msg.getTopic() == "/tf_static") {
+      if (msg.getTopic() == clock_topic) {
+        if (auto c = msg.instantiate<sensor_msgs::TimeReference>()) clock.add(c->header.stamp.toSec(), c->time_ref.toSec());
+      } else if (msg.getTopic() == "/tf" || msg.getTopic() == "/tf_static") {
         if (auto t = msg.instantiate<tf2_msgs::TFMessage>()) localization.addTf(*t, msg.getTopic() == "/tf_static");
       } else if (msg.getTopic() == truth_topic) {
         if (auto o = msg.instantiate<nav_msgs::Odometry>()) {
           const core::Pose2 truth{o->pose.pose.position.x, o->pose.pose.position.y,
                                   tf2::getYaw(o->pose.pose.orientation)};
-          run.addTruth(o->header.stamp.toSec(), truth);
+          if (!config.world.people.empty() && !clock.known()) {  // where the people are is unknown yet
+            ++truth_without_clock;
+            continue;
+          }
+          run.addTruth(o->header.stamp.toSec(), truth, clock.at(o->header.stamp.toSec()));
           localization.addTruth(o->header.stamp, truth);
         }
       } else if (msg.getTopic() == cmd_topic) {
@@ -113,6 +127,14 @@ int main(int argc, char** argv) {
       }
     }
     bag.close();
+    if (!config.world.people.empty() && !clock.known()) {
+      throw std::runtime_error("the world has " + std::to_string(config.world.people.size()) + " people but " + bag_path +
+                               " has no " + clock_topic + " (sensor_msgs/TimeReference) to place them: record it");
+    }
+    if (truth_without_clock > 0) {
+      std::printf("note: %llu ground-truth poses before the first %s were not scored (people unplaced)\n",
+                  static_cast<unsigned long long>(truth_without_clock), clock_topic.c_str());
+    }
     run.finish();
     const ros_layer::RecordedRunSummary s = run.summary();
     sim::writeTrajectoryCsv(out + "/trajectory.csv", run.rows());
@@ -148,9 +170,11 @@ int main(int argc, char** argv) {
                 "%.3f m, %.0f s after the start and each episode)%s%s\n",
                 v.tracked ? "TRACKED" : "DID NOT TRACK", 100.0 * v.judged_fraction, v.max_judged_error, v.bound,
                 config.verdict.recovery_time, v.reason.empty() ? "" : ": ", v.reason.c_str());
-    std::printf("safety: min true body clearance %.3f m to the world, %.3f m to virtual obstacles (%llu at most); "
-                "%llu body collisions; %llu of %llu commands outside the diamond (max norm %.3f)\n",
-                s.min_clearance_world, s.min_clearance_virtual, static_cast<unsigned long long>(s.virtual_obstacles),
+    std::printf("safety: min true body clearance %.3f m to the world (%.3f m to its %zu people), %.3f m to virtual "
+                "obstacles (%llu at most); %llu body collisions; %llu of %llu commands outside the diamond (max norm "
+                "%.3f)\n",
+                s.min_clearance_world, s.min_clearance_people, config.world.people.size(), s.min_clearance_virtual,
+                static_cast<unsigned long long>(s.virtual_obstacles),
                 static_cast<unsigned long long>(m.body_collisions),
                 static_cast<unsigned long long>(s.command_violations), static_cast<unsigned long long>(s.commands),
                 s.max_command_norm);

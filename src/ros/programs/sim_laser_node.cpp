@@ -1,6 +1,7 @@
 // sim_laser: a planar laser for the emulated robot. Ray casts the emulator's world (the
 // same world YAML as amigobot_emulator --world) from the pose of laser_frame in
-// global_frame (tf) and publishes `scan` stamped with that pose's time.
+// global_frame (tf) and publishes `scan` stamped with that pose's time. The world's people
+// stand where they are on the emulator's clock at that time (ground_truth_clock).
 // Parameters (private): include/amigobot_tracking/ros/sim_laser.h (SimLaserConfig).
 #include <random>
 
@@ -8,7 +9,10 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <sensor_msgs/TimeReference.h>
+
 #include "amigobot_tracking/ros/conversions.h"
+#include "amigobot_tracking/ros/emulator_clock.h"
 #include "amigobot_tracking/ros/sim_laser.h"
 #include "amigobot_tracking/world/world.h"
 #include "amigobot_tracking/ros/node_command_line.h"
@@ -40,11 +44,20 @@ int main(int argc, char** argv) {
   tf2_ros::Buffer tf;
   tf2_ros::TransformListener listener(tf);
   ros::Publisher pub = nh.advertise<sensor_msgs::LaserScan>("scan", 5);
+  // People move on the emulator's clock (world/world.h): its pairs with ROS time place them.
+  ros_layer::EmulatorClock clock;
+  ros::Subscriber clock_sub;
+  if (!room.people.empty()) {
+    clock_sub = nh.subscribe<sensor_msgs::TimeReference>("ground_truth_clock", 5, [&](const sensor_msgs::TimeReference::ConstPtr& c) {
+      clock.add(c->header.stamp.toSec(), c->time_ref.toSec());
+    });
+  }
   std::mt19937 rng(static_cast<std::uint32_t>(config.seed));
   ros::Time last_stamp;
   ros::Rate rate(config.rate);
   while (ros::ok()) {
     rate.sleep();
+    ros::spinOnce();
     geometry_msgs::TransformStamped pose;
     try {
       pose = tf.lookupTransform(config.global_frame, config.laser_frame, ros::Time(0));
@@ -55,7 +68,8 @@ int main(int argc, char** argv) {
     }
     if (pose.header.stamp == last_stamp) continue;  // no new pose: no new scan (tf stalled)
     last_stamp = pose.header.stamp;
-    sensor_msgs::LaserScan scan = ros_layer::simulateScan(ros_layer::toPose2(pose.transform), room, config, &rng);
+    const world::World now = room.people.empty() ? room : world::worldAt(room, clock.at(pose.header.stamp.toSec()));
+    sensor_msgs::LaserScan scan = ros_layer::simulateScan(ros_layer::toPose2(pose.transform), now, config, &rng);
     scan.header.stamp = pose.header.stamp;
     pub.publish(scan);
   }
