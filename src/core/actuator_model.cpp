@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "amigobot_tracking/core/unicycle.h"
+
 namespace amigobot_tracking {
 namespace core {
 namespace {
@@ -141,6 +143,14 @@ Twist2 ActuatorModel::step(const Twist2& command, double dt) {
   time_ = end;
   if (dt <= 0.0) return velocity_;
   return {area.v / dt, area.omega / dt};
+}
+
+Pose2 driveBody(ActuatorModel* model, const Pose2& pose, const Twist2& command, double duration, double substep) {
+  const auto pieces = static_cast<long>(std::max(1.0, std::ceil(duration / substep - 1e-9)));
+  const double h = duration / static_cast<double>(pieces);
+  Pose2 p = pose;
+  for (long i = 0; i < pieces; ++i) p = integrateUnicycle(p, model->step(command, h), h);
+  return p;
 }
 
 }  // namespace core

@@ -73,5 +73,11 @@ class ActuatorModel {
   Twist2 velocity_;
 };
 
+// Holds `command` for `duration` through the model and moves the body with the velocity it
+// produces, in sub-steps of at most `substep` (the ramp is linear inside each, the pose
+// follows the mean velocity of each: 1 mm over a 5 s ramp at the default).
+Pose2 driveBody(ActuatorModel* model, const Pose2& pose, const Twist2& command, double duration,
+                double substep = 0.005);
+
 }  // namespace core
 }  // namespace amigobot_tracking
