@@ -17,6 +17,7 @@ amigobot_add_library(amigobot_tracking_sim
   src/sim/json.cpp
   src/sim/tracking_verdict.cpp
   src/sim/robot_description.cpp
+  src/sim/actuator_fit.cpp
 )
 target_include_directories(amigobot_tracking_sim PUBLIC include)
 target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML_CPP_LIBRARIES} nlohmann_json::nlohmann_json)
