@@ -30,6 +30,7 @@ using e2e::kCmdVelTimeout;
 using e2e::kOffset;
 using e2e::kPoseLagTolerance;
 using e2e::kRhoInf;
+using e2e::firmwareStopTime;
 using e2e::kSipPeriod;
 using e2e::kVMax;
 using e2e::kWMax;
@@ -135,9 +136,9 @@ TEST(E2E, CommandWatchdogStopsTheRobot) {
   // driver stops once that one is cmd_vel_timeout old, checked at least every SIP period.
   const double limit = kCmdVelTimeout + kSipPeriod;
   EXPECT_LE(zero_at - before.t, limit) << "zero setpoint " << zero_at - before.t << " s after the kill";
-  // Braking from the speed at the kill at the firmware's decelerations (0.75 m/s^2,
-  // 1.745 rad/s^2, config/robots/amigo.yaml), plus one SIP period of the judge's polling.
-  const double braking = std::max(std::abs(before.v) / 0.75, std::abs(before.w) / 1.745);
+  // The firmware's delay and braking from the speed at the kill (firmwareStopTime), plus one
+  // SIP period of the judge's polling.
+  const double braking = firmwareStopTime(before.v, before.w);
   EXPECT_LE(stopped.t - before.t, limit + braking + kSipPeriod);
   RecordProperty("zero_setpoint_ms", static_cast<int>(1e3 * (zero_at - before.t)));
   RecordProperty("standstill_ms", static_cast<int>(1e3 * (stopped.t - before.t)));

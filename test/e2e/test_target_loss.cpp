@@ -13,6 +13,7 @@
 #include "judge.h"
 
 using e2e::EmulatorStatus;
+using e2e::firmwareStopTime;
 using e2e::kSipPeriod;
 using e2e::CircleTarget;
 using e2e::requiredParam;
@@ -52,7 +53,7 @@ TEST(E2E, TargetLossStopsAndResumesSmoothly) {
   const double pose_timeout = 0.5, control_period = 0.05, driver_slot = 0.05 + 0.02, broadcast = 0.02;
   const double limit = pose_timeout + control_period + driver_slot + broadcast;
   EXPECT_LE(zero_at - before.t, limit) << "zero setpoint late";
-  const double braking = std::max(std::abs(before.v) / 0.75, std::abs(before.w) / 1.745);
+  const double braking = firmwareStopTime(before.v, before.w);  // the firmware's delay and ramps
   EXPECT_LE(stopped.t - before.t, limit + braking + kSipPeriod);
   // After the restore, from the last pair held while lost (zero): each pair may differ from
   // the one before by at most accel x (time between them + two control periods) + one

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "amigobot_tracking/aria/client.h"
+#include "amigobot_tracking/core/actuator_limits.h"
 #include "emulator_process.h"
 
 using namespace amigobot_test;
@@ -44,6 +45,11 @@ Pose2 odom(const AriaClient& c) {
   return s.robot ? s.robot->odometry.pose : Pose2{};
 }
 
+// The firmware acts on a command latency .. latency + cycle after it arrives (core/actuator_model.h):
+// the stop is sent that much early, on the mean, as a client of the real robot has to.
+const double kFirmwareDelay =
+    amigobot_tracking::core::ActuatorLimits{}.latency + 0.5 * amigobot_tracking::core::ActuatorLimits{}.cycle;  // [s]
+
 // Drives straight by odometry for `distance`. The speed shrinks near the goal but stays
 // above two VEL2 steps (20 mm/s per wheel each): below that VEL2 quantises it to zero and
 // the robot stalls short of the goal (the same floor applies to the turns).
@@ -52,8 +58,9 @@ void driveStraight(AriaClient& c, double distance) {
   waitFor([&] {
     const Pose2 p = odom(c);
     const double left = distance - std::hypot(p.x - start.x, p.y - start.y);
-    c.setVelocity({std::clamp(1.5 * left, 0.045, 0.3), 0.0});
-    return left < 0.003;
+    const double v = std::clamp(1.5 * left, 0.045, 0.3);
+    c.setVelocity({v, 0.0});
+    return left < 0.003 + v * kFirmwareDelay;
   }, 30.0);
   c.setVelocity({0.0, 0.0});
 }
@@ -62,8 +69,9 @@ void driveStraight(AriaClient& c, double distance) {
 void turnLeftTo(AriaClient& c, double goal) {
   waitFor([&] {
     const double left = wrapAngle(goal - odom(c).theta);
-    c.setVelocity({0.0, std::clamp(2.0 * left, 0.5, 1.2)});
-    return left < 0.01;
+    const double w = std::clamp(2.0 * left, 0.5, 1.2);
+    c.setVelocity({0.0, w});
+    return left < 0.01 + w * kFirmwareDelay;
   }, 30.0);
   c.setVelocity({0.0, 0.0});
 }

@@ -8,6 +8,8 @@
 #include <functional>
 #include <vector>
 
+#include "amigobot_tracking/core/actuator_limits.h"
+#include "amigobot_tracking/core/actuator_model.h"
 #include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/core/obstacle_motion.h"
 #include "amigobot_tracking/sim/metrics.h"
@@ -60,9 +62,20 @@ struct BaselineParams {
   double kalman_measurement_std = 0.01; // [m] measurement noise of kKalman (> 0)
 };
 
+// What the robot's base does to the law's command (core/actuator_model.h).
+struct RobotDynamics {
+  // true: the command moves the body at once (the paper's unicycle; Section 5 stays exact).
+  // A setup built in code is ideal unless it says otherwise; a scenario file is `firmware`
+  // (ideal = false) unless it says `robot.dynamics: ideal`.
+  bool ideal = true;
+  core::ActuatorLimits limits;                 // the AmigoBot's (config/robots/amigo.yaml)
+  double half_track = core::kAmigoHalfTrack;   // [m] b of the wheel-speed limit
+};
+
 struct ClosedLoopSetup {
   core::ControllerConfig controller;
   core::Pose2 initial_pose;
+  RobotDynamics dynamics;        // the base between the law's command and the body
   std::vector<core::Disk> obstacles;
   // How the obstacles move (core/obstacle_motion.h), one per obstacle; empty: all static. Each
   // path is walked from its obstacle's centre: centre(t) = centre + positionAt(t) - start (a
@@ -106,6 +119,7 @@ struct ClosedLoopStep {
                                                       // the controller's belief)
   double clearance_offset = 0.0;   // disk of radius R around the true p_r to the nearest obstacle [m]
   double clearance_body = 0.0;     // disk of radius R around the centre p [m]
+  core::Twist2 body_velocity;      // what the body does now (== output.u with ideal dynamics)
   const std::vector<core::Disk>* obstacles = nullptr;  // where the obstacles are at t
 };
 
