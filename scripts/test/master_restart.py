@@ -76,6 +76,14 @@ def master_pids(uri):
     return pids
 
 
+def truth_when_up(port):
+    """truth(port), or None while the emulator's status socket is not listening yet (start-up)."""
+    try:
+        return truth(port)
+    except ConnectionRefusedError:
+        return None
+
+
 def wait_until(predicate, timeout, period=0.05):
     end = time.monotonic() + timeout
     while time.monotonic() < end:
@@ -173,7 +181,8 @@ def main():
             raise Failed("roscore did not start")
         run.start("stack", ["roslaunch", LAUNCH, "tcp_port:=%d" % tcp_port, "status_port:=%d" % status_port,
                             "command_log:=" + command_log])
-        if not wait_until(lambda: os.path.exists(command_log) and truth(status_port)["v"] > MOVING, 90.0, 0.5):
+        if not wait_until(lambda: os.path.exists(command_log)
+                          and (truth_when_up(status_port) or {"v": 0.0})["v"] > MOVING, 90.0, 0.5):
             raise Failed("the robot never tracked (see %s)" % log_dir)
         time.sleep(2.0)
         before = truth(status_port)

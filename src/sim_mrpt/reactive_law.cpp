@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -25,20 +26,45 @@ namespace {
 // MRPT stamps with 0 mean "invalid": simulated time t is shown to MRPT as kEpoch + t.
 constexpr double kEpoch = 1.0e9;  // [s] since 1970 (2001)
 
-// MRPT's process-wide clock follows the simulation while a law lives; restored afterwards.
+// MRPT's process-wide clock follows the simulation while a law lives; restored when the last
+// live law goes. Monte Carlo runs laws on several threads at once: the first saves the clock
+// and the last restores it (a per-law save/restore let a later law put back "Simulated").
+// The navigator decides from getNavigationTime(), not from this clock: a batch of MRPT runs
+// gives the same figures on 1 or 2 jobs (test_sim_mrpt_reactive).
 class SimulatedClock {
  public:
-  SimulatedClock() : previous_(mrpt::Clock::getActiveClock()) {
-    set(0.0);
-    mrpt::Clock::setActiveClock(mrpt::Clock::Simulated);
+  SimulatedClock() {
+    std::lock_guard<std::mutex> lock(mutex());
+    if (users()++ == 0) {
+      previous() = mrpt::Clock::getActiveClock();
+      mrpt::Clock::setSimulatedTime(mrpt::Clock::fromDouble(kEpoch));
+      mrpt::Clock::setActiveClock(mrpt::Clock::Simulated);
+    }
   }
-  ~SimulatedClock() { mrpt::Clock::setActiveClock(previous_); }
+  ~SimulatedClock() {
+    std::lock_guard<std::mutex> lock(mutex());
+    if (--users() == 0) mrpt::Clock::setActiveClock(previous());
+  }
   SimulatedClock(const SimulatedClock&) = delete;
   SimulatedClock& operator=(const SimulatedClock&) = delete;
-  static void set(double t) { mrpt::Clock::setSimulatedTime(mrpt::Clock::fromDouble(kEpoch + t)); }
+  static void set(double t) {
+    std::lock_guard<std::mutex> lock(mutex());
+    mrpt::Clock::setSimulatedTime(mrpt::Clock::fromDouble(kEpoch + t));
+  }
 
  private:
-  mrpt::Clock::Source previous_;
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static int& users() {
+    static int n = 0;
+    return n;
+  }
+  static mrpt::Clock::Source& previous() {
+    static mrpt::Clock::Source source = mrpt::Clock::Realtime;
+    return source;
+  }
 };
 
 // The simulator's unicycle as MRPT's robot: pose and time from the closed loop, a laser

@@ -147,6 +147,28 @@ TEST(MrptReactive, RefusedWithoutTheLibraryAndRestoresMrptsClock) {
   EXPECT_EQ(mrpt::Clock::getActiveClock(), mrpt::Clock::Realtime);
 }
 
+// MRPT's clock is one per process while a batch runs its laws on several threads: the
+// figures must not depend on the number of jobs, and the clock is MRPT's own afterwards.
+TEST(MrptReactive, ABatchGivesTheSameFiguresOnOneOrTwoJobsAndRestoresTheClock) {
+  sim::Scenario scenario =
+      sim::loadScenario(std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/pedestrians/crossing_ahead.yaml",
+                        {"controller.variant=mrpt_reactive"});
+  scenario.setup.external_law = sim_mrpt::reactiveLawFactory();
+  sim::MonteCarloOptions batch;
+  batch.runs = 4;
+  batch.jobs = 1;
+  const sim::MonteCarloSummary one = sim::summarizeMonteCarlo(scenario, batch);
+  EXPECT_EQ(mrpt::Clock::getActiveClock(), mrpt::Clock::Realtime);
+  batch.jobs = 2;
+  const sim::MonteCarloSummary two = sim::summarizeMonteCarlo(scenario, batch);
+  EXPECT_EQ(mrpt::Clock::getActiveClock(), mrpt::Clock::Realtime);
+  ASSERT_EQ(one.per_run.size(), two.per_run.size());
+  for (std::size_t i = 0; i < one.per_run.size(); ++i) {
+    EXPECT_EQ(one.per_run[i].metrics.true_ase, two.per_run[i].metrics.true_ase) << "run " << i;
+    EXPECT_EQ(one.per_run[i].metrics.min_clearance_body, two.per_run[i].metrics.min_clearance_body) << "run " << i;
+  }
+}
+
 TEST(MrptReactive, ConfigUsesTheDiamondCornersAndTheBody) {
   core::ControllerConfig c;
   c.v_max = 0.3;
