@@ -90,7 +90,8 @@ soak: build ## soak: SOAK_MINUTES (15) of tracking on sim.launch, RSS growth MB/
 # sim.launch with rviz under Xvfb, a virtual obstacle through the topic, a rosbag, and a
 # scored report in report/demo. Exit 0: safe and tracked; 3: a collision or a command outside
 # the diamond; 4: the run did not happen; 5: safe, but the true error was not back within
-# rho_inf + tolerance after the obstacles (or at the end). DEMO_ARGS="--paper-law": the paper's
+# rho_inf + tolerance after the obstacles (or at the end); 6: safe and tracked, but a recorded
+# message holds a NaN (scripts/test/check_bag_finite.py). DEMO_ARGS="--paper-law": the paper's
 # law alone; DEMO_ARGS="--tolerance 0.05 --recovery-time 10": the tracking verdict's margins.
 # The demo builds what it runs and nothing more: sim.launch's nodes and nodelets (emulated robot
 # and laser, driver, laser, localisation, tracking, reference, trails, world markers; sim_laser

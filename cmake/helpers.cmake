@@ -33,8 +33,9 @@ endfunction()
 function(amigobot_add_rostest_gtest name file)
   add_rostest_gtest(${name} ${file} ${ARGN})
   target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
-  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test/support ${PROJECT_SOURCE_DIR}/test/e2e/include)
   target_link_libraries(${name} ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
+  add_dependencies(${name} ${PROJECT_NAME}_generate_messages_cpp)  # nan_watcher.h judges TrackingState
 endfunction()
 
 # A command run as one JUnit test case (scripts/test/junit_check.py writes the XML the

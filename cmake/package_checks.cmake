@@ -16,6 +16,9 @@ if(CATKIN_ENABLE_TESTING)
                      ${PROJECT_SOURCE_DIR}/scripts/test/check_layers.py)
   amigobot_add_check(count_test_results_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_count_test_results.py
                      ${PROJECT_SOURCE_DIR}/scripts/test/count_test_results.py)
+  # The NaN check of recorded bags (make demo's) on bags it writes, NaN and allowed infinities.
+  amigobot_add_check(check_bag_finite_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_check_bag_finite.py
+                     ${PROJECT_SOURCE_DIR}/scripts/test/check_bag_finite.py)
   # The clutter benchmark's report in its quick mode on two classes, with the real simulator.
   amigobot_add_check(clutter_report_quick ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_clutter_report.py
                      ${PROJECT_SOURCE_DIR}/scripts/reports/clutter.py

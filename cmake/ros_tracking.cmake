@@ -1,8 +1,9 @@
 # Layer 3, ros: the one ROS parameter reader (every ROS library and node reads its field
 # tables through it) and the one dynamic_reconfigure mapping over any field table, the tracking nodelet amigobot_tracking/Tracking and tracking_node over
 # the core, and the reference publisher (a target for simulation and the demo).
+# The master watch and the guarded tf listener are here too: every process of the stack uses them.
 amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp src/ros/param_aliases.cpp src/ros/reconfigure_mapping.cpp
-  src/ros/xmlrpc_call.cpp src/ros/master_watch.cpp)
+  src/ros/xmlrpc_call.cpp src/ros/master_watch.cpp src/ros/guarded_tf_listener.cpp)
 target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core ${catkin_LIBRARIES})
 
 amigobot_add_library(amigobot_tracking_ros
@@ -15,7 +16,6 @@ amigobot_add_library(amigobot_tracking_ros
   src/ros/laser_obstacles.cpp
   src/ros/tracking_statistics.cpp
   src/ros/tracking_nodelet.cpp
-  src/ros/guarded_tf_listener.cpp
 )
 target_include_directories(amigobot_tracking_ros SYSTEM PRIVATE ${urdfdom_INCLUDE_DIRS})
 target_link_libraries(amigobot_tracking_ros amigobot_tracking_core amigobot_tracking_ros_params ${catkin_LIBRARIES} ${urdfdom_LIBRARIES})

@@ -44,10 +44,10 @@ PAPER_PARAMS = os.path.join(ROOT, "config", "paper_law.yaml")
 LAW_TEXT = {"recommended": "the recommended law, config/demo_tracking.yaml",
             "escape": "the paper's law with the tangential escape",
             "paper": "the paper's law alone, --paper-law (config/paper_law.yaml)"}
-EXIT_NAMES = {0: "SAFE, TRACKED", 3: "UNSAFE", 4: "DID NOT RUN", 5: "SAFE, DID NOT TRACK"}
+EXIT_NAMES = {0: "SAFE, TRACKED", 3: "UNSAFE", 4: "DID NOT RUN", 5: "SAFE, DID NOT TRACK",
+              6: "TRACKED, BUT A NaN WAS PUBLISHED"}
 TOPICS = ["/tracking/state", "/tracking/virtual_obstacles", "/cmd_vel", "/ground_truth", "/ground_truth_clock", "/odom",
-          "/scan",
-          "/tf", "/tf_static", "/robot_trail", "/target_trail"]
+          "/scan", "/tf", "/tf_static", "/robot_trail", "/target_trail", "/tracking/markers", "/diagnostics"]
 
 
 def log(msg):
@@ -167,9 +167,14 @@ def main():
                                 os.path.join(out, "trajectory.csv")], env=env, capture_output=True, text=True)
         if plots.returncode != 0:
             log("plots failed: " + plots.stderr.strip())
-    write_summary(out, report, shots, time.time() - started, law)
+    # Nothing published as NaN: every number of every recorded message (scripts/test/check_bag_finite.py).
+    finite = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "test", "check_bag_finite.py"), bag],
+                            env=env, capture_output=True, text=True)
+    log((finite.stdout + finite.stderr).strip())
+    returncode = 6 if finite.returncode != 0 and report.returncode == 0 else report.returncode
+    write_summary(out, report, shots, time.time() - started, law, returncode, finite.stdout.strip())
     log(f"report: {out} (summary.md, metrics.json, fig*.png, rviz_*.png, run.bag)")
-    return report.returncode
+    return returncode
 
 
 def course_duration(path):
@@ -235,7 +240,7 @@ def metric_rows(metrics):
     return [f"| {METRIC_NAMES.get(k, k)} | {num(v, 4)} | {metric_unit(k)} |" for k, v in rows]
 
 
-def write_summary(out, report, shots, wall, law):
+def write_summary(out, report, shots, wall, law, returncode, finite):
     metrics = {}
     path = os.path.join(out, "metrics.json")
     if os.path.exists(path):
@@ -243,8 +248,8 @@ def write_summary(out, report, shots, wall, law):
             metrics = json.load(f)
     lines = ["# make demo: the stack on the emulated AmigoBot", "",
              f"Law: **{law}** ({LAW_TEXT[law]}). "
-             f"Run wall time {wall:.0f} s. Verdict: **{EXIT_NAMES.get(report.returncode, f'exit {report.returncode}')}** "
-             f"(exit {report.returncode}).", ""]
+             f"Run wall time {wall:.0f} s. Verdict: **{EXIT_NAMES.get(returncode, f'exit {returncode}')}** "
+             f"(exit {returncode}).", "", "NaN check of the recorded bag: " + finite, ""]
     tracking = metrics.get("tracking")
     if tracking:
         lines += [f"Tracking verdict: true ‖e*‖ = ‖p_d − p_r‖ (target against the robot's true offset point) "

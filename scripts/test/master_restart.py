@@ -9,6 +9,9 @@ its command journal, never from the stack's own messages:
             the motors off within BOUND; no non-zero setpoint on the wire after that while
             nobody enabled the motors
   services  a new roscore on the same port: /disable_motors and /enable_motors answer again
+  standalone the stand-alone helper nodes (reference_publisher, sim_laser,
+            ground_truth_localization, the trail publishers) are known to the new master, and
+            a new subscriber receives ground_truth_localization's `ground_truth` and sim_laser's `scan`
   cmd_vel   a new cmd_vel publisher (rostopic pub) drives the robot after enable_motors
   tracking  /tracking/enable: the robot tracks again
 
@@ -33,6 +36,8 @@ MASTER_TIMEOUT = 0.5  # [s] config/driver.yaml
 # next command slot (0.05 s) + 0.15 s of scheduling on a loaded 2-core machine
 BOUND = MASTER_TIMEOUT + 0.4
 MOVING = 0.05  # [m/s] true speed that counts as driving
+# The stand-alone programs of the stack (not nodelets) master_restart.launch starts.
+STANDALONE = ("/reference_publisher", "/sim_laser", "/ground_truth_localization", "/robot_trail", "/target_trail")
 LAUNCH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "test", "e2e", "master_restart.launch")
 
 
@@ -82,6 +87,15 @@ def truth_when_up(port):
         return truth(port)
     except ConnectionRefusedError:
         return None
+
+
+def known_nodes(uri, names):
+    """The nodes of `names` the master at uri can look up."""
+    master = xmlrpc.client.ServerProxy(uri)
+    try:
+        return [n for n in names if master.lookupNode("/master_restart", n)[0] == 1]
+    except (OSError, xmlrpc.client.Error):
+        return []
 
 
 def wait_until(predicate, timeout, period=0.05):
@@ -185,6 +199,7 @@ def main():
                           and (truth_when_up(status_port) or {"v": 0.0})["v"] > MOVING, 90.0, 0.5):
             raise Failed("the robot never tracked (see %s)" % log_dir)
         time.sleep(2.0)
+        standalone = known_nodes(env["ROS_MASTER_URI"], STANDALONE)
         before = truth(status_port)
         print("master_restart: tracking at %.2f m/s; killing the master" % before["v"], flush=True)
         run.kill_master(master)
@@ -212,6 +227,17 @@ def main():
         check("services", not truth(status_port)["motors"], "the motors stayed off after the new master")
         check("services", run.call("/enable_motors") and wait_until(lambda: truth(status_port)["motors"], 3.0),
               "/enable_motors answered and the motors are on")
+
+        # standalone: the helper programs registered with the new master too (their master watch).
+        wait_until(lambda: known_nodes(env["ROS_MASTER_URI"], standalone) == standalone, 5.0, 0.2)
+        again = known_nodes(env["ROS_MASTER_URI"], standalone)
+        check("standalone", len(standalone) >= 3 and again == standalone,
+              "%d of the %d stand-alone nodes known before the kill are known to the new master (%s)"
+              % (len(again), len(standalone), " ".join(standalone)))
+        for topic in ("/ground_truth", "/scan"):
+            code, out = run.ros(["rostopic", "echo", "-n1", "--noarr", topic], 15.0)
+            check("standalone", code == 0 and "header" in out, "a new subscriber to %s received a message%s"
+                  % (topic, "" if code == 0 else ": " + (out.splitlines()[-1] if out else str(code))))
 
         # cmd_vel: tracking was disabled when the master died, so a new publisher is the only one.
         pub = run.start("cmd_vel", ["rostopic", "pub", "-r", "10", "/cmd_vel", "geometry_msgs/Twist",

@@ -16,6 +16,10 @@ truth and the tracker emulator's command journal, never from the controller's me
   nothing_dies  every process and node alive, with the pids they had before the cut
   traffic       bytes/s each way per topic (publishers' counters) and the veth's total: small,
                 no scan, map or point cloud across
+  clocks        then the target's clock 0.45 s behind (its driver's ~stamp_offset, a test aid,
+                set live): the tracker's diagnostics name it ("target/base_footprint clock
+                0.45 s behind this machine: synchronise the clocks (chrony)"), any stop after
+                that names the clock, true |e| stays bounded
 
 Usage: two_machines.py [--results DIR] [--logs DIR] [--time-limit S]; writes DIR/two_machines.xml
 (JUnit, one case per line above) and prints every figure. Root, iproute2, a built workspace
@@ -50,6 +54,10 @@ CUT_AFTER, CUT_FOR = 6.0, 3.0  # [s] after the teleop starts; how long the link 
 # about 1.5 kB a call with the handshake, ~8 kB/s), the price of stopping the robot when the
 # master is gone: the veth was 12.8 kB/s without it, 16-21 kB/s with it.
 BUDGET = 25e3  # [B/s]
+# The clock case: the target's stamps this far behind; named within the estimate's window (2 s:
+# the undelayed samples leave it) + a diagnostics period (1 s) + 1 s of a loaded machine, after
+# the offset is in force (dynparam returned: 1-5 s after it started here); watched this long after.
+CLOCK_BEHIND, CLOCK_NAME_BOUND, CLOCK_WATCH = 0.45, 4.0, 6.0  # [s]
 BIG_TYPES = ("sensor_msgs/LaserScan", "sensor_msgs/PointCloud", "sensor_msgs/PointCloud2",
              "nav_msgs/OccupancyGrid", "visualization_msgs/MarkerArray")
 
@@ -181,6 +189,31 @@ class Run:
         r.tracking_end(rec.since(end - 3.0, end), RHO_INF + POSE_LAG + LOCALIZATION_TOL)
         pids_after = probe.Graph(self.m, "tracker", MASTER).pids()
         r.nothing_dies(pids_before, pids_after, self.m.dead(), self.truth_now("tracker"))
+        self.clocks()
+
+    def clocks(self):
+        """The target machine's clock CLOCK_BEHIND s behind: its driver stamps odometry and
+        odom -> base_footprint that late (~stamp_offset, live), as a machine without chrony."""
+        log = os.path.join(self.logs, "tracker_status.log")
+        self.start("tracker", "tracker_status", [os.path.join(self.root, "scripts", "test", "two_machines_status_probe.py"),
+                                                 "tracker/tracking: tracking", "/tracker/tracking/state"])
+        wait_for("the tracker's status probe", lambda: "diag" in open(log).read(), 30, 0.2)
+        rec = probe.PairRecorder(probe.StatusSocket(self.m.ns["target"], STATUS_PORT),
+                                 probe.StatusSocket(self.m.ns["tracker"], STATUS_PORT))
+        t_set = time.monotonic()
+        if not self.ros("target", "rosrun", "dynamic_reconfigure", "dynparam", "set", "/target/amigobot_driver",
+                        "stamp_offset", str(-CLOCK_BEHIND)):
+            raise RuntimeError("dynparam set /target/amigobot_driver stamp_offset refused")
+        t_applied = time.monotonic()
+        time.sleep(max(0.0, t_applied + CLOCK_WATCH - time.monotonic()))
+        rec.stop()
+        lines = []
+        for line in open(log):
+            parts = line.rstrip("\n").split(" ", 2)
+            if len(parts) == 3 and parts[1] in ("diag", "state"):
+                lines.append((float(parts[0]), parts[1], parts[2]))
+        self.report.clocks(lines, t_set, t_applied, CLOCK_BEHIND, CLOCK_NAME_BOUND, rec.since(t_set),
+                           RHO_INF + POSE_LAG + LOCALIZATION_TOL)
 
     def cleanup(self):
         if getattr(self, "rec", None):

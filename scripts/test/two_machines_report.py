@@ -2,9 +2,10 @@
 failing with what it measured; every figure printed and kept in the file's system-out."""
 import math
 import os
+import re
 import xml.sax.saxutils as xml
 
-CASES = ("tracking", "link_cut", "resume", "nothing_dies", "traffic", "cleanup")
+CASES = ("tracking", "link_cut", "resume", "nothing_dies", "traffic", "clocks", "cleanup")
 V_ACCEL, W_ACCEL = 0.3, 1.745  # [m/s^2, rad/s^2] config/tracking.yaml resume_v_accel / resume_w_accel
 CONTROL_PERIOD = 0.05  # [s] 20 Hz
 V_STEP, W_STEP = 1e-3, math.pi / 180  # the wire's quantisation (mm/s, deg/s)
@@ -142,6 +143,44 @@ class Report:
         big = sorted({k[0] for k in rates if types.get(k[0]) in big_types})  # k: (topic, from, to, pub, sub)
         self.check("traffic", not big, "no scan, map, point cloud or marker array across the link%s"
                    % (": " + " ".join(big) if big else ""))
+
+    def clocks(self, lines, t_set, t_applied, behind, name_bound, samples, bound):
+        """The target's stamps `behind` s late from t_set (dynparam started) / t_applied (it
+        returned, the offset in force): the tracker's diagnostics name the clock within
+        name_bound of t_applied; once
+        named, every stop names the clock, never a stale target; true |e| stays within bound.
+        lines: the status probe's (monotonic, kind, rest)."""
+        named = next((l for l in lines if l[0] >= t_set and l[1] == "diag" and "clock" in l[2]
+                      and "behind this machine: synchronise the clocks" in l[2]), None)
+        if named is None:
+            other = sorted({l[2] for l in lines if l[0] >= t_set and l[1] == "diag"})
+            return self.check("clocks", False, "the tracker's diagnostics never named the target's clock %.2f s behind "
+                              "(%.0f s watched; said: %s)" % (behind, lines[-1][0] - t_set if lines else 0.0,
+                                                              " | ".join(other) or "nothing"))
+        words = named[2].split()
+        said = next((float(words[i - 1]) for i, w in enumerate(words) if w == "s" and i > 0
+                     and words[i - 1].replace(".", "", 1).isdigit()), float("nan"))
+        self.check("clocks", named[0] - t_applied <= name_bound and abs(said - behind) <= 0.1,
+                   "named on /diagnostics %.2f s after dynparam returned (bound %.1f s; %.2f s after it started): '%s'"
+                   % (named[0] - t_applied, name_bound, named[0] - t_set, named[2].split(" ", 1)[1]))
+        states = [l for l in lines if l[1] == "state" and l[0] >= t_set]
+        after = [l for l in states if l[0] >= named[0]]
+        unnamed = sorted({l[2] for l in after if not l[2].startswith("1 tracking") and "clock" not in l[2]})
+        self.check("clocks", not unnamed, "after it was named, every stop names the clock%s"
+                   % ("; others: " + " | ".join(unnamed) if unnamed else ""))
+        end = lines[-1][0] if lines else named[0]
+        tracking = 0.0
+        for a, b in zip(after, after[1:] + [(end, "", "")]):
+            if a[2].startswith("1 tracking"):
+                tracking += b[0] - a[0]
+        stops = sum(1 for l in after if l[2].startswith("1 ") and not l[2].startswith("1 tracking"))
+        self.figure("clocks", "after it was named: tracking %.0f %% of %.1f s, %d stops (each naming the clock); before: %s"
+                    % (100 * tracking / max(1e-9, end - named[0]), end - named[0], stops,
+                       " | ".join(sorted({re.sub(r"\d+\.\d+ s", "N s", l[2][2:]) for l in states if l[0] < named[0]}))
+                       or "no change"))
+        worst = max((s[3] for s in samples), default=float("inf"))
+        self.check("clocks", worst <= bound, "true |e| while the target's clock was behind: max %.3f m (bound %.2f m)"
+                   % (worst, bound))
 
     def cleanup(self, problems, logs):
         self.check("cleanup", not problems, "processes stopped, namespaces deleted%s; logs in %s"

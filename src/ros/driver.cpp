@@ -21,6 +21,9 @@ namespace amigobot_tracking {
 namespace ros_layer {
 namespace {
 
+// [s] ~stamp_offset's bound: beyond every timeout of the stack (a bigger skew tests nothing more).
+constexpr double kMaxStampOffset = 5.0;
+
 geometry_msgs::Quaternion yawQuaternion(double yaw) {
   tf2::Quaternion q;
   q.setRPY(0.0, 0.0, yaw);
@@ -53,6 +56,9 @@ const core::FieldTable<DriverParams>& driverFields() {
               "node whose cmd_vel is driven; empty: the first publisher until silent 1 s"),
         field("master_timeout", &D::master_timeout, "s",
               "ROS master unreachable this long: stop, motors disabled until enable_motors", core::boundedTimeout()),
+        core::live(field("stamp_offset", &D::stamp_offset, "s",
+                         "test aid, 0 on a robot: added to every published stamp (emulates a clock this far ahead/behind)",
+                         core::interval(-kMaxStampOffset, false, kMaxStampOffset, false))),
     };
     core::include(&t, "", &D::client, aria::clientFields());
     return t;
@@ -117,18 +123,41 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   master_timer_ = nh_.createWallTimer(ros::WallDuration(MasterWatch::kPollPeriod), [this](const ros::WallTimerEvent&) { checkMaster(); });
   cmd_vel_lock_ = std::make_unique<core::CommandLock>(params_.cmd_vel_source, kCommandLockRelease);
   cmd_vel_sub_ = nh_.subscribe("cmd_vel", 1, &AmigobotDriver::onCmdVel, this);
+  stamp_offset_ = params_.stamp_offset;
+  warnStampOffset();
   amigobot_tracking::DriverConfig in_force;
-  fillReconfigure(aria::clientFields(), client_->motionLimits(), &in_force);
+  fillReconfigure(driverFields(), liveParams(), &in_force);
   reconfigure_ = std::make_unique<CheckedReconfigure<amigobot_tracking::DriverConfig>>(
       pnh_, in_force, [this](const amigobot_tracking::DriverConfig& requested) { return onReconfigure(requested); });
 }
 
+DriverParams AmigobotDriver::liveParams() const {
+  DriverParams p = params_;
+  p.client = client_->motionLimits();
+  p.stamp_offset = stamp_offset_;
+  return p;
+}
+
 std::string AmigobotDriver::onReconfigure(const amigobot_tracking::DriverConfig& requested) {
-  aria::ClientConfig limits = client_->motionLimits();
-  std::string error = applyReconfigure(requested, aria::clientFields(), &limits);
-  if (error.empty()) error = client_->setMotionLimits(limits);
-  if (!error.empty()) ROS_ERROR_STREAM("reconfigure refused, keeping the limits in force: " << error);
+  DriverParams p = liveParams();
+  std::string error = applyReconfigure(requested, driverFields(), &p);
+  if (error.empty()) error = p.validate();
+  if (error.empty()) error = client_->setMotionLimits(p.client);
+  if (!error.empty()) {
+    ROS_ERROR_STREAM("reconfigure refused, keeping the limits in force: " << error);
+    return error;
+  }
+  const bool changed = p.stamp_offset != stamp_offset_;
+  stamp_offset_ = p.stamp_offset;
+  if (changed) warnStampOffset();
   return error;
+}
+
+void AmigobotDriver::warnStampOffset() const {
+  const double offset = stamp_offset_;
+  if (offset == 0.0) return;
+  ROS_WARN_STREAM_NAMED("driver", "every stamp this driver publishes is shifted by " << offset
+                                  << " s (~stamp_offset, a test aid emulating a skewed clock; 0 on a robot)");
 }
 
 AmigobotDriver::~AmigobotDriver() {
@@ -158,7 +187,7 @@ void AmigobotDriver::onCmdVel(const ros::MessageEvent<const geometry_msgs::Twist
 void AmigobotDriver::onSip(const aria::RobotState& state) {
   sip_rate_->tick();
   std::lock_guard<std::mutex> lock(publish_mutex_);
-  const ros::Time stamp = ros::Time::now();
+  const ros::Time stamp = ros::Time::now() + ros::Duration(stamp_offset_);
   const auto& pose = state.odometry.pose;
   const auto& twist = state.odometry.twist;
   nav_msgs::Odometry odom;

@@ -9,6 +9,9 @@ namespace ros_layer {
 
 GuardedTfListener::GuardedTfListener(tf2_ros::Buffer& buffer, const ros::NodeHandle& nh, double future_tolerance)
     : buffer_(buffer), nh_(nh), intake_(future_tolerance) {
+  // Its own thread fills the buffer, as tf2_ros::TransformListener's: lookups with a timeout
+  // may wait (without this, tf2 refuses them with "Do not call canTransform ... with a timeout").
+  buffer_.setUsingDedicatedThread(true);
   nh_.setCallbackQueue(&queue_);
   // The same topics, queue sizes and transport hint as tf2_ros::TransformListener.
   tf_sub_ = nh_.subscribe<tf2_msgs::TFMessage>(

@@ -17,6 +17,13 @@ namespace ros_layer {
 
 using localization::LocalizationConfig;
 
+namespace {
+// [s] tf samples stamped further ahead of their arrival than transform_tolerance + this are
+// dropped: this node's own map -> odom is stamped transform_tolerance ahead (as amcl's), and
+// 0.1 s is the tracking node's default future_stamp_tolerance.
+constexpr double kFutureStampMargin = 0.1;
+}  // namespace
+
 LocalizationConfig loadLocalizationConfig(const ros::NodeHandle& pnh) {
   LocalizationConfig config;
   const std::string error = readParams(pnh, localization::localizationFields(), &config, "", localizationAliases());
@@ -25,7 +32,8 @@ LocalizationConfig loadLocalizationConfig(const ros::NodeHandle& pnh) {
 }
 
 LocalizationNode::LocalizationNode(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : config_(loadLocalizationConfig(pnh)), nh_(nh), pnh_(pnh), listener_(buffer_), updater_(nh, pnh),
+    : config_(loadLocalizationConfig(pnh)), nh_(nh), pnh_(pnh),
+      listener_(buffer_, nh, config_.transform_tolerance + kFutureStampMargin), updater_(nh, pnh),
       engine_(config_.use_map_topic ? nullptr : localization::makeEngine(config_)) {
   if (engine_ && engine_->mapGrows() && !config_.map_file.empty()) {
     // Refused now, not after a whole mapping drive: ~save_map writes there.

@@ -151,13 +151,8 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "test_e2e");
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  // Every case fails when the run published a pose or command as NaN (nan_watcher.h).
-  auto* nan_watcher = new e2e::NanWatcher;
-  testing::UnitTest::GetInstance()->listeners().Append(nan_watcher);
-  int result = RUN_ALL_TESTS();
-  testing::UnitTest::GetInstance()->listeners().Release(nan_watcher);
-  std::printf("NaN watcher: %zu topics watched\n", nan_watcher->watched());
-  delete nan_watcher;  // before ROS goes down (its thread asks the master)
+  // Every case fails when the run published a NaN where none is allowed (nan_watcher.h).
+  int result = e2e::runAllTestsWatchingNaN();
   // A .test file whose --gtest_filter matches no case must not pass silently.
   if (testing::UnitTest::GetInstance()->test_to_run_count() == 0) result = 1;
   std::string command_log;  // the emulator's journal is a per-run /tmp file: remove it

@@ -10,6 +10,7 @@
 
 #include "cmd_vel_log.h"
 #include "node_process.h"
+#include "nan_watcher.h"
 
 using amigobot_test::CmdVelLog;
 using amigobot_test::NodeProcess;
@@ -155,5 +156,5 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(1);
   spinner.start();
-  return RUN_ALL_TESTS();
+  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
 }

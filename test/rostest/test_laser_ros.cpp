@@ -20,6 +20,7 @@
 #include "amigobot_tracking/sensors/scan_source.h"
 #include "child_process.h"
 #include "rosout_log.h"
+#include "nan_watcher.h"
 
 using namespace amigobot_tracking;
 using namespace amigobot_tracking::sensors;
@@ -254,5 +255,5 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "test_laser_ros");
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  return RUN_ALL_TESTS();
+  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
 }

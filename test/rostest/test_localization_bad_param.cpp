@@ -20,6 +20,7 @@
 
 #include "child_process.h"
 #include "synthetic_robot.h"
+#include "nan_watcher.h"
 
 namespace {
 
@@ -117,5 +118,5 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(1);
   spinner.start();
-  return RUN_ALL_TESTS();
+  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
 }

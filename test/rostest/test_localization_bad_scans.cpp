@@ -19,6 +19,7 @@
 #include "one_turn_scan.h"
 #include "rosout_log.h"
 #include "synthetic_robot.h"
+#include "nan_watcher.h"
 
 using namespace amigobot_test;
 
@@ -92,5 +93,5 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  return RUN_ALL_TESTS();
+  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
 }

@@ -21,11 +21,14 @@
 #include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_msgs/TFMessage.h>
+#include <rosgraph_msgs/Log.h>
 #include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
 #include "amigobot_tracking/localization/occupancy_map.h"
 #include "synthetic_robot.h"
+#include "nan_watcher.h"
 
 using namespace amigobot_test;
 
@@ -176,6 +179,47 @@ TEST(LocalizationNodelet, LocalisesOnAKnownMap) {
   std::filesystem::remove(map_file.substr(0, map_file.size() - 5) + ".pgm");
 }
 
+namespace {
+
+// tf is judged where it enters the Localization nodelet, as the tracking node's
+// (ros/guarded_tf_listener.h): an odom -> base_footprint sample stamped 30 s ahead and 1 m off,
+// and one with a NaN x, are each dropped with a WARN naming the frames and why. (A plain tf2
+// listener took the one ahead as the frame's latest and said nothing; the NaN one tf2 refused
+// with TF_NAN_INPUT, which names no listener.)
+void expectBadTfDroppedByName() {
+  ros::NodeHandle nh;
+  std::mutex log_mutex;
+  std::string log;
+  ros::Subscriber rosout = nh.subscribe<rosgraph_msgs::Log>("/rosout", 100, [&](const rosgraph_msgs::Log::ConstPtr& m) {
+    std::lock_guard<std::mutex> lock(log_mutex);
+    log += m->msg + "\n";
+  });
+  ros::WallDuration(0.5).sleep();  // the subscription connected
+  tf2_ros::TransformBroadcaster injector;
+  geometry_msgs::TransformStamped t;
+  t.header.frame_id = "odom";
+  t.child_frame_id = "base_footprint";
+  t.header.stamp = ros::Time::now() + ros::Duration(30.0);
+  t.transform.translation.x = 1.0;
+  t.transform.rotation.w = 1.0;
+  injector.sendTransform(t);
+  t.header.stamp = ros::Time::now();
+  t.transform.translation.x = std::numeric_limits<double>::quiet_NaN();
+  injector.sendTransform(t);
+  const auto named = [&](const std::string& why) {
+    std::lock_guard<std::mutex> lock(log_mutex);
+    const std::size_t at = log.find("tf odom -> base_footprint from ");  // intra-process: "unknown_publisher"
+    return at != std::string::npos && log.find(why, at) != std::string::npos;
+  };
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(5.0);
+  while (ros::WallTime::now() < end && !(named("dropped: stamped 30.") && named("dropped: translation x is nan")))
+    ros::WallDuration(0.05).sleep();
+  EXPECT_TRUE(named("dropped: stamped 30.")) << "the sample 30 s ahead was not dropped by name; the log:\n" << log;
+  EXPECT_TRUE(named("dropped: translation x is nan")) << "the NaN sample was not dropped by name; the log:\n" << log;
+}
+
+}  // namespace
+
 // /initialpose is checked where it enters: NaN x, a NaN quaternion, the all-zero quaternion of
 // a hand-written message, another frame, a pose far outside the map are each refused; the
 // estimate stays where the scans put it and nothing is published as NaN (the old node took
@@ -238,6 +282,7 @@ TEST(LocalizationNodelet, BadInitialPosesAreRefused) {
   }
   EXPECT_EQ(nan_transforms.load(), 0) << "tf published as NaN";
   EXPECT_EQ(nan_poses.load(), 0) << "~pose published as NaN";
+  expectBadTfDroppedByName();
   robot.scans(true);
   EXPECT_TRUE(loader.unload("/localization"));
   std::filesystem::remove(map_file);
@@ -279,5 +324,5 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  return RUN_ALL_TESTS();
+  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
 }

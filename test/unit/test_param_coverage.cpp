@@ -260,10 +260,10 @@ TEST(ParamCoverage, TheCfgHasExactlyTheLiveFields) {
   expectCfgIsTheLiveRows("cfg/Tracking.cfg", core::controllerFields());
 }
 
-// The driver's dynamic_reconfigure is the live rows of the client's table (ros/reconfigure_mapping.h):
+// The driver's dynamic_reconfigure is the live rows of its table (the client's and stamp_offset):
 // Driver.cfg lists exactly those, with their defaults, and no entry names anything else.
 TEST(ParamCoverage, DriverCfgIsTheClientsLiveRowsWithTheirDefaults) {
-  expectCfgIsTheLiveRows("cfg/Driver.cfg", aria::clientFields());
+  expectCfgIsTheLiveRows("cfg/Driver.cfg", ros_layer::driverFields());
   for (const auto& [name, def] : cfgEntries("cfg/Driver.cfg"))
     EXPECT_TRUE(driverRows().count(name)) << "cfg/Driver.cfg entry " << name << " names no driver field";
 }

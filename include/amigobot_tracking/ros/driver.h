@@ -49,6 +49,10 @@ struct DriverParams {
   std::string cmd_vel_source;
   // [s] ROS master unreachable this long: stop, motors disabled until enable_motors.
   double master_timeout = 0.5;
+  // [s] A TEST AID, 0 on a robot: added to every stamp the driver publishes (odometry, tf,
+  // sonar, state topics), so one machine's driver emulates a clock this far ahead (+) or
+  // behind (-) of the others (the two-machine test's skewed target). Live (reconfigure).
+  double stamp_offset = 0.0;
 
   // "" or "key: reason": the table's bounds, non-empty frames, then client.validate() (with
   // client.robot and client.command_mode already chosen from robot_model/robot_params/command_mode).
@@ -81,6 +85,9 @@ class AmigobotDriver {
   // dynamic_reconfigure: "" when the client took the set, else why it refused it (then the
   // limits in force stay and the reconfigure call fails with the reason).
   std::string onReconfigure(const amigobot_tracking::DriverConfig& requested);
+  // params_ with what reconfigure changed: the client's limits in force and stamp_offset_.
+  DriverParams liveParams() const;
+  void warnStampOffset() const;  // a WARN while ~stamp_offset is not 0
   // motors_state, latched, published on change only; publish_mutex_ held.
   void publishMotorsStateLocked(bool enabled);
   // Without a link the motors are not enabled, whatever the last SIP said (SIP period).
@@ -105,6 +112,7 @@ class AmigobotDriver {
   ros::WallTimer master_timer_;  // wall clock: a paused /clock must not hide a dead master
   std::shared_ptr<MasterWatch> master_;
   std::atomic<bool> master_stop_{false};  // set by checkMaster, read by onCmdVel
+  std::atomic<double> stamp_offset_{0.0};  // params_.stamp_offset as reconfigured (read per SIP)
   std::uint64_t master_registrations_ = 0;
   bool one_way_reported_ = false;
   std::mutex publish_mutex_;

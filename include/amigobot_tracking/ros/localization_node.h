@@ -28,10 +28,10 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
-#include <tf2_ros/transform_listener.h>
 
 #include "amigobot_tracking/SaveMap.h"
 #include "amigobot_tracking/localization/engine.h"
+#include "amigobot_tracking/ros/guarded_tf_listener.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
 #include "amigobot_tracking/ros/refusal_log.h"
 #include "amigobot_tracking/ros/stamp_gate.h"
@@ -94,7 +94,9 @@ class LocalizationNode {
   localization::LocalizationConfig config_;
   ros::NodeHandle nh_, pnh_;
   tf2_ros::Buffer buffer_;
-  tf2_ros::TransformListener listener_;
+  // Judges every tf sample before buffer_ sees it (NaN, non-unit rotation, stamped ahead), as
+  // the tracking node's: one sample stamped 30 s ahead would otherwise hide odom for 30 s.
+  GuardedTfListener listener_;
   tf2_ros::TransformBroadcaster broadcaster_;
   StampGate tf_gate_;  // map -> odom only when its stamp advances (use_sim_time replays)
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;

@@ -1,6 +1,6 @@
 // dynamic_reconfigure <-> any config struct, by field name through the struct's field table
 // (its live rows): the .cfg names the fields (cfg/Tracking.cfg: core::controllerFields();
-// cfg/Driver.cfg: aria::clientFields()), nothing else lists them, and test_param_coverage
+// cfg/Driver.cfg: ros_layer::driverFields(), the client's rows and stamp_offset), nothing else lists them, and test_param_coverage
 // checks that every .cfg entry is a live row of the same type and default, and the other way.
 #pragma once
 

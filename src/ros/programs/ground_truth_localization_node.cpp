@@ -21,6 +21,7 @@
 #include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/ground_truth.h"
+#include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/node_command_line.h"
 
 using namespace amigobot_tracking;
@@ -33,6 +34,8 @@ const ros_layer::NodeHelp kHelp{
 int main(int argc, char** argv) {
   ros_layer::initNode(argc, argv, "ground_truth_localization", kHelp);
   ros::NodeHandle nh, pnh("~");
+  // A restarted master learns this node's topics again, as the nodelets' (ros/master_watch.h).
+  const auto master_watch = ros_layer::MasterWatch::shared();
   ros_layer::GroundTruthConfig config;
   const std::string error = ros_layer::loadGroundTruthConfig(pnh, &config);
   if (!ros_layer::configLoaded("ground_truth_localization", error)) return 1;

@@ -22,6 +22,7 @@
 #include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/core/waypoint_reference.h"
 #include "amigobot_tracking/ros/conversions.h"
+#include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/node_command_line.h"
 #include "amigobot_tracking/ros/param_reader.h"
 
@@ -131,6 +132,8 @@ const amigobot_tracking::ros_layer::NodeHelp kHelp{
 int main(int argc, char** argv) {
   amigobot_tracking::ros_layer::initNode(argc, argv, "reference_publisher", kHelp);
   ros::NodeHandle pnh("~");
+  // A restarted master learns this node's topics again, as the nodelets' (ros/master_watch.h).
+  const auto master_watch = amigobot_tracking::ros_layer::MasterWatch::shared();
   PublisherConfig config;
   std::unique_ptr<Reference> reference;
   Eigen::Vector2d origin(0.0, 0.0);

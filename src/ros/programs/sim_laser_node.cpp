@@ -15,6 +15,7 @@
 #include "amigobot_tracking/ros/emulator_clock.h"
 #include "amigobot_tracking/ros/sim_laser.h"
 #include "amigobot_tracking/world/world.h"
+#include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/node_command_line.h"
 
 using namespace amigobot_tracking;
@@ -27,6 +28,8 @@ const ros_layer::NodeHelp kHelp{
 int main(int argc, char** argv) {
   ros_layer::initNode(argc, argv, "sim_laser", kHelp);
   ros::NodeHandle nh, pnh("~");
+  // A restarted master learns this node's topics again, as the nodelets' (ros/master_watch.h).
+  const auto master_watch = ros_layer::MasterWatch::shared();
   ros_layer::SimLaserConfig config;
   if (!ros_layer::configLoaded("sim_laser", ros_layer::loadSimLaserConfig(pnh, &config))) return 1;
   world::World room;

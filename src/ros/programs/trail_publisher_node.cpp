@@ -7,6 +7,7 @@
 
 #include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/trail.h"
+#include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/node_command_line.h"
 
 using namespace amigobot_tracking;
@@ -18,6 +19,8 @@ const ros_layer::NodeHelp kHelp{
 int main(int argc, char** argv) {
   ros_layer::initNode(argc, argv, "trail_publisher", kHelp);
   ros::NodeHandle nh, pnh("~");
+  // A restarted master learns this node's topics again, as the nodelets' (ros/master_watch.h).
+  const auto master_watch = ros_layer::MasterWatch::shared();
   ros_layer::TrailNodeConfig params;
   const std::string error = ros_layer::readParams(pnh, ros_layer::trailNodeFields(), &params);
   if (!ros_layer::configLoaded("trail_publisher", error)) return 1;

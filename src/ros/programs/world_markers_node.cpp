@@ -8,6 +8,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/TimeReference.h>
 
+#include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/node_command_line.h"
 #include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/world_markers.h"
@@ -22,6 +23,8 @@ const ros_layer::NodeHelp kHelp{
 int main(int argc, char** argv) {
   ros_layer::initNode(argc, argv, "world_markers", kHelp);
   ros::NodeHandle nh, pnh("~");
+  // A restarted master learns this node's topics again, as the nodelets' (ros/master_watch.h).
+  const auto master_watch = ros_layer::MasterWatch::shared();
   ros_layer::WorldMarkersConfig config;
   if (!ros_layer::configLoaded("world_markers", ros_layer::readParams(pnh, ros_layer::worldMarkersFields(), &config))) {
     return 1;
