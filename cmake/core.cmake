@@ -8,6 +8,11 @@ amigobot_add_library(amigobot_tracking_core
   src/core/band_implicit.cpp
   src/core/prescribed_performance.cpp
   src/core/controller.cpp
+  src/core/performance_envelope.cpp
+  src/core/paper_controller.cpp
+  src/core/recommended_controller.cpp
+  src/core/proportional_controller.cpp
+  src/core/law_registry.cpp
   src/core/navigation_field.cpp
   src/core/safety_filter.cpp
   src/core/recommended_law.cpp

@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "amigobot_tracking/core/law_registry.h"
 #include "amigobot_tracking/sim/gain_tuner.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
@@ -165,6 +166,7 @@ int runTuner(const CLI::App& app, const std::string& suite_path, const std::stri
 }  // namespace
 
 int main(int argc, char** argv) {
+  sim_mrpt::provideReactiveLaw();  // the registry's mrpt_reactive
   CLI::App app{"Offline simulator: a scenario file through the core's closed loop (no ROS)", "amigobot_sim"};
   std::string scenario_path, out, benchmark_json;
   std::vector<std::string> sets;
@@ -246,7 +248,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "amigobot_sim: %s\n", e.what());
     return 2;
   }
-  scenario.setup.external_law = sim_mrpt::reactiveLawFactory();  // used by variant mrpt_reactive
   // Monte Carlo's base seed: --seed, else 1 (not the file's simulation.seed).
   const std::uint64_t seed = app.count("--seed") ? scenario.setup.sensor.seed : 1;
   if (benchmark > 0) return runBenchmark(scenario, benchmark, benchmark_json);
@@ -273,8 +274,7 @@ int main(int argc, char** argv) {
     sim::writeText(out + "/metrics.json", sim::metricsJson(scenario, result));
     const sim::RunMetrics& m = result.summary.metrics;
     char ratio[32] = "- (no rho)";
-    if (scenario.setup.law == sim::ControlLaw::kPaper || scenario.setup.law == sim::ControlLaw::kFixedRho ||
-        scenario.setup.law == sim::ControlLaw::kRecommended)
+    if (core::findLaw(scenario.setup.law)->has_rho_bound)
       std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
     const core::ControllerConfig& c = scenario.setup.controller;
     std::string beyond;  // the switches beyond the paper that are on
@@ -284,7 +284,7 @@ int main(int argc, char** argv) {
                                    {c.compensate_pose_age, "compensate_pose_age"}})
       if (on) beyond += std::string(", ") + name;
     std::printf("%s [%s, estimator %s, body_safe %s%s]: ASE %.5f AAE %.5f TEC %.4f max|e|/rho %s\n",
-                scenario.name.c_str(), sim::toString(scenario.setup.law).c_str(),
+                scenario.name.c_str(), scenario.setup.law.c_str(),
                 sim::toString(scenario.setup.velocity_source).c_str(), c.body_safe ? "true" : "false",
                 beyond.c_str(), m.ase, m.aae, m.tec, ratio);
     std::printf("  true error (true target, true robot): ASE %.5f, peak %.4f m; longest stall %.2f s\n", m.true_ase,

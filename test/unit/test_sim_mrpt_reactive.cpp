@@ -38,8 +38,8 @@ sim::ClosedLoopSetup staticSetup() {
   setup.obstacles = {core::Disk{{2.0, 0.05}, 0.3}};  // between the start and the goal
   setup.duration = 40.0;
   setup.control_period = 0.01;
-  setup.law = sim::ControlLaw::kMrptReactive;
-  setup.external_law = sim_mrpt::reactiveLawFactory();
+  setup.law = "mrpt_reactive";
+  sim_mrpt::provideReactiveLaw();  // the registry's mrpt_reactive
   return setup;
 }
 
@@ -69,7 +69,7 @@ TEST(MrptReactive, MovingTargetGivesFiniteMetricsInsideTheDiamond) {
   sim::Scenario scenario =
       sim::loadScenario(std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/saddle_line.yaml",
                         {"controller.variant=mrpt_reactive"});
-  scenario.setup.external_law = sim_mrpt::reactiveLawFactory();
+  sim_mrpt::provideReactiveLaw();
   const core::DiamondSet diamond(scenario.setup.controller.v_max, scenario.setup.controller.w_max);
   int outside = 0, moving = 0;
   const auto reference = scenario.makeReference();
@@ -91,9 +91,9 @@ TEST(MrptReactive, MovingTargetGivesFiniteMetricsInsideTheDiamond) {
 
 TEST(MrptReactive, RefusedWithoutTheLibraryAndRestoresMrptsClock) {
   sim::ClosedLoopSetup setup = staticSetup();
-  setup.external_law = nullptr;
+  const core::LawFactory registered = core::provideLaw("mrpt_reactive", nullptr);
   EXPECT_THROW(sim::runClosedLoop(setup, StaticGoal({1.0, 0.0})), std::invalid_argument);
-  setup = staticSetup();
+  core::provideLaw("mrpt_reactive", registered);
   setup.duration = 0.2;
   sim::runClosedLoop(setup, StaticGoal({1.0, 0.0}));
   EXPECT_EQ(mrpt::Clock::getActiveClock(), mrpt::Clock::Realtime);
