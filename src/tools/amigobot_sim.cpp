@@ -45,7 +45,7 @@ struct Shorthand {
 };
 constexpr Shorthand kShorthands[] = {
     {"--variant", "controller.variant",
-     "control law recommended|paper|fixed_rho|proportional|mrpt_reactive (default: the file's, else recommended)"},
+     "control law (default: the file's, else recommended)"},
     {"--estimator", "controller.estimator", "target velocity source paper|finite_difference|kalman"},
     {"--body-safe", "controller.body_safe", "effective radius R + r in (10) (true|false)"},
     {"--tangential", "controller.tangential_avoidance", "tangential escape (true|false)"},
@@ -188,7 +188,9 @@ int main(int argc, char** argv) {
   app.add_option("--set", sets, "section.key=value: any scenario key (repeatable), checked like the file");
   std::map<std::string, std::string> shorthand_values;
   for (const Shorthand& s : kShorthands)
-    app.add_option(s.flag, shorthand_values[s.flag], std::string(s.help) + " (= --set " + s.key + "=...)");
+    app.add_option(s.flag, shorthand_values[s.flag],
+                   std::string(s.help) + (std::string(s.key) == "controller.variant" ? ": " + core::lawNameList(core::lawNames()) : "") +
+                       " (= --set " + s.key + "=...)");
   app.add_option("--monte-carlo", monte_carlo, "N randomised variants; writes DIR/monte_carlo.json")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--obstacle-speed", obstacle_speed, "Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s")
