@@ -5,7 +5,6 @@ amigobot_add_library(amigobot_tracking_sim
   src/sim/step_size.cpp
   src/sim/target_sensor.cpp
   src/sim/metrics.cpp
-  src/sim/baseline_controller.cpp
   src/sim/baseline_estimators.cpp
   src/sim/scenario.cpp
   src/sim/scenario_check.cpp

@@ -5,6 +5,7 @@
 
 #include "amigobot_tracking/core/band_implicit.h"
 #include "amigobot_tracking/core/diamond.h"
+#include "amigobot_tracking/core/law_registry.h"
 
 namespace amigobot_tracking {
 namespace core {
@@ -33,7 +34,7 @@ FieldTable<ControllerConfig> makeTable() {
             "longest gap between steps the relaxation term of (13) spans (stalls)", duration()),
       field("max_rho_rate", &C::max_rho_rate, "m/s",
             "cap of the relaxation term's rate in (13) (band chattering); 0 = none, the paper", nonNegative()),
-      field("law", &C::law, "-", "control law: paper (eqs. 9-13) or recommended (field, safety filter, 13')",
+      field("law", &C::law, "-", "control law: paper (eqs. 9-13), fixed_rho (paper without adaptation) or recommended (field, safety filter, 13')",
             oneOf(controlLawNames())),
       field("barrier_rate", &C::barrier_rate, "1/s",
             "recommended law: barrier rate gamma, clearance' >= -gamma (clearance - min_margin)", positive()),
@@ -68,7 +69,7 @@ FieldTable<ControllerConfig> makeTable() {
 }  // namespace
 
 const std::vector<std::string>& controlLawNames() {
-  static const std::vector<std::string> names = {"paper", "recommended"};
+  static const std::vector<std::string> names = robotLawNames();
   return names;
 }
 

@@ -5,6 +5,7 @@
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/core/law_registry.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/world/geometry.h"
@@ -14,11 +15,11 @@ namespace ros_layer {
 
 namespace {
 
-// The laws a run is recorded with: the controller's `law` values and "escape" (the paper's
-// law with tangential_avoidance), which is no value of `law` but a switch of the paper's.
+// The laws a run is recorded with: the laws the robot runs and the registry's aliases
+// ("escape": the paper's law with tangential_avoidance, a switch of the paper's, not a law).
 std::vector<std::string> recordedLaws() {
-  std::vector<std::string> laws = core::controlLawNames();
-  laws.push_back("escape");
+  std::vector<std::string> laws = core::robotLawNames();
+  for (const core::LawAlias& alias : core::lawAliases()) laws.push_back(alias.name);
   return laws;
 }
 
@@ -28,11 +29,7 @@ bool isRecordedLaw(const std::string& law) {
   return false;
 }
 
-std::string recordedLawList() {
-  std::string list;
-  for (const std::string& name : recordedLaws()) list += (list.empty() ? "" : ", ") + name;
-  return list;
-}
+std::string recordedLawList() { return core::lawNameList(recordedLaws()); }
 
 }  // namespace
 
@@ -227,7 +224,8 @@ std::string recordedRunJson(const RecordedRunSummary& summary, const RecordedRun
   using sim::jsonNumber;
   sim::Json j = summary;
   j["law"] = config.law;
-  j["variant"] = config.law == "escape" ? "tangential_avoidance" : config.law;
+  const core::LawAlias* alias = core::findLawAlias(config.law);
+  j["variant"] = alias ? alias->variant : config.law;
   sim::Json& tracking = j["tracking"];
   tracking["rho_inf"] = jsonNumber(config.verdict.rho_inf);
   tracking["tolerance"] = jsonNumber(config.verdict.tolerance);

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/sim/baseline_controller.h"
+#include "amigobot_tracking/core/law_registry.h"
 #include "amigobot_tracking/sim/baseline_estimators.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/core/small_angle.h"
@@ -22,42 +22,37 @@ namespace {
 // The duration of a constant-velocity motion's one leg [s]: longer than any run (about 30 years).
 constexpr double kForever = 1e9;
 
-// The selected law behind one step() call.
+// The setup's law, chosen once from the registry. A law the robot runs (LawEntry::on_robot)
+// runs inside the tracking nodelet's own loop, as on the robot; the others run bare.
 class Law {
  public:
   explicit Law(const ClosedLoopSetup& setup) {
-    if (setup.law == ControlLaw::kMrptReactive) {
-      if (!setup.external_law)
-        throw std::invalid_argument("controller.variant: mrpt_reactive is provided by the sim_mrpt library; "
-                                    "set ClosedLoopSetup::external_law (amigobot_sim does)");
-      external_ = setup.external_law(setup);
-    } else if (setup.law == ControlLaw::kProportional) {
-      proportional_ = std::make_unique<ProportionalController>(setup.controller, setup.baseline.k_p);
-    } else {
-      core::ControllerConfig config = setup.controller;
-      const bool recommended = setup.law == ControlLaw::kRecommended;
-      config.law = recommended ? "recommended" : "paper";  // the variant names the law
-      config.adaptive_rho = setup.law != ControlLaw::kFixedRho && config.adaptive_rho;
-      // The band-implicit step treats (10), which the recommended law does not use.
-      implicit_band_ = !recommended && setup.integrator != Integrator::kExplicit && !config.moving_obstacles;
-      config.estimator.bdf2 = implicit_band_ && setup.integrator == Integrator::kSecondOrder;
-      // The tracking nodelet's own loop, with inputs that never go stale: the scene's
-      // disks are the operator's (never dropped), the start is the paper's (no restart, no
-      // ramp) unless the setup asks for the robot's resume.
-      core::TrackingLoopConfig loop;
-      loop.controller = config;
-      loop.supervisor.pose_timeout = loop.supervisor.scan_timeout = std::numeric_limits<double>::infinity();
-      loop.supervisor.require_scan = false;
-      loop.supervisor.control_period = setup.control_period;
-      loop.supervisor.ramp = setup.resume_ramp;
-      paper_ = std::make_unique<core::TrackingLoop>(loop);
-      paper_->enable(setup.resume_at_start);
+    const core::LawEntry* entry = core::findLaw(setup.law);
+    if (!entry) throw std::invalid_argument("controller.variant: unknown law '" + setup.law + "'");
+    core::ControllerConfig config = setup.controller;
+    if (!entry->on_robot) {
+      bare_ = core::makeLaw(setup.law, core::LawSetup{config, setup.baseline.k_p});
+      return;
     }
+    config.law = setup.law;  // the variant names the law
+    // The band-implicit step treats (10), which only some laws use.
+    implicit_band_ = entry->band_implicit && setup.integrator != Integrator::kExplicit && !config.moving_obstacles;
+    config.estimator.bdf2 = implicit_band_ && setup.integrator == Integrator::kSecondOrder;
+    // The tracking nodelet's own loop, with inputs that never go stale: the scene's
+    // disks are the operator's (never dropped), the start is the paper's (no restart, no
+    // ramp) unless the setup asks for the robot's resume.
+    core::TrackingLoopConfig loop;
+    loop.controller = config;
+    loop.supervisor.pose_timeout = loop.supervisor.scan_timeout = std::numeric_limits<double>::infinity();
+    loop.supervisor.require_scan = false;
+    loop.supervisor.control_period = setup.control_period;
+    loop.supervisor.ramp = setup.resume_ramp;
+    loop_ = std::make_unique<core::TrackingLoop>(loop);
+    loop_->enable(setup.resume_at_start);
   }
   core::ControllerOutput step(double t, const core::PoseSample& robot, const core::TargetSample& sample,
-                        const std::vector<core::Disk>& obstacles) {
-    if (external_) return external_->step(t, robot, sample, obstacles);
-    if (!paper_) return proportional_->step(t, robot.pose, sample, obstacles);
+                              const std::vector<core::Disk>& obstacles) {
+    if (bare_) return bare_->step(t, robot, sample, obstacles);
     core::TrackingLoopInputs in;
     in.t = t;
     in.supervisor.have_pose = in.supervisor.have_target = true;
@@ -66,28 +61,24 @@ class Law {
     in.supervisor.target_age = t - sample.stamp;
     in.target = sample;
     in.virtual_disks = &obstacles;
-    const core::TrackingLoopResult r = paper_->step(in);
+    const core::TrackingLoopResult r = loop_->step(in);
     core::ControllerOutput out = r.output;
     out.u = r.u;  // what was sent (a zero when the supervisor refused the step)
     return out;
   }
-  const core::DiamondSet& diamond() const {
-    if (external_) return external_->diamond();
-    return paper_ ? paper_->controller().diamond() : proportional_->diamond();
-  }
+  const core::DiamondSet& diamond() const { return bare_ ? bare_->diamond() : loop_->controller().diamond(); }
   // The setup's integrator applies (otherwise the loop runs kExplicit).
   bool implicitBand() const { return implicit_band_; }
   void setImplicitHorizon(double h) {
-    if (paper_) paper_->controller().setImplicitHorizon(h);
+    if (implicit_band_) loop_->controller().setImplicitHorizon(h);
   }
   void setImplicitHorizon(double h, const core::Pose2& start, const Eigen::Vector2d& start_heading) {
-    if (paper_) paper_->controller().setImplicitHorizon(h, start, start_heading);
+    if (implicit_band_) loop_->controller().setImplicitHorizon(h, start, start_heading);
   }
 
  private:
-  std::unique_ptr<core::TrackingLoop> paper_;  // the paper and fixed-rho laws
-  std::unique_ptr<ProportionalController> proportional_;
-  std::unique_ptr<StepLaw> external_;
+  std::unique_ptr<core::TrackingLoop> loop_;  // a robot law, in the nodelet's loop
+  std::unique_ptr<core::ControlLaw> bare_;    // any other law
   bool implicit_band_ = false;
 };
 

@@ -65,7 +65,7 @@ std::vector<VariantResult> runVariants(const Scenario& base, const MonteCarloOpt
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::lock_guard<std::mutex> lock(print);
       std::fprintf(stderr, "\r%s [%s]: %d/%d runs, %.0f s elapsed, about %.0f s left   ", base.name.c_str(),
-                   toString(base.setup.law).c_str(), finished, runs, elapsed, elapsed / finished * (runs - finished));
+                   base.setup.law.c_str(), finished, runs, elapsed, elapsed / finished * (runs - finished));
       if (finished == runs) std::fputc('\n', stderr);
     }
   };
@@ -154,7 +154,7 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
   MonteCarloSummary sum;
   sum.scenario = base.file;
   sum.options = options;
-  sum.variant = toString(base.setup.law);
+  sum.variant = base.setup.law;
   sum.body_safe = base.setup.controller.body_safe;
   sum.tangential_avoidance = base.setup.controller.tangential_avoidance;
   sum.moving_obstacles = base.setup.controller.moving_obstacles;

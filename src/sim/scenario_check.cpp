@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "amigobot_tracking/core/law_registry.h"
 #include "amigobot_tracking/core/offset_point.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/scenario_fields.h"
@@ -44,8 +45,8 @@ void checkScenario(const Scenario& scenario) {
     throw ScenarioError(msg.str());
   }
   const double e0 = (p_d - p_r).norm();
-  const bool has_rho = setup.law == sim::ControlLaw::kPaper || setup.law == sim::ControlLaw::kFixedRho ||
-                       setup.law == sim::ControlLaw::kRecommended;
+  const core::LawEntry* law = core::findLaw(setup.law);
+  const bool has_rho = law && law->has_rho_bound;
   if (has_rho && !(e0 < setup.controller.rho_0)) {
     std::ostringstream msg;
     msg << scenario.file << ": controller.rho_0: " << setup.controller.rho_0

@@ -1,8 +1,9 @@
-// The YAML names of the scenario enumerations (controller.variant, controller.estimator,
-// simulation.integrator).
+// The YAML names of the scenario enumerations (controller.estimator, simulation.integrator)
+// and the check of controller.variant against the law registry.
 #include <stdexcept>
 #include <string>
 
+#include "amigobot_tracking/core/law_registry.h"
 #include "amigobot_tracking/sim/scenario.h"
 
 namespace amigobot_tracking {
@@ -16,9 +17,6 @@ struct Named {
   E value;
 };
 
-constexpr Named<sim::ControlLaw> kLaws[] = {
-    {"recommended", sim::ControlLaw::kRecommended}, {"paper", sim::ControlLaw::kPaper}, {"fixed_rho", sim::ControlLaw::kFixedRho},
-    {"proportional", sim::ControlLaw::kProportional}, {"mrpt_reactive", sim::ControlLaw::kMrptReactive}};
 constexpr Named<sim::VelocitySource> kSources[] = {
     {"paper", sim::VelocitySource::kPaperEstimator}, {"finite_difference", sim::VelocitySource::kFiniteDifference},
     {"kalman", sim::VelocitySource::kKalman}};
@@ -46,10 +44,13 @@ std::string nameOf(const Named<E> (&table)[N], E value) {
 
 }  // namespace
 
-sim::ControlLaw parseControlLaw(const std::string& name) { return byName(kLaws, name, "controller variant"); }
+std::string parseControlLaw(const std::string& name) {
+  if (!core::findLaw(name))
+    throw std::invalid_argument("unknown controller variant '" + name + "' (" + core::lawNameList(core::lawNames()) + ")");
+  return name;
+}
 sim::VelocitySource parseVelocitySource(const std::string& name) { return byName(kSources, name, "estimator"); }
 sim::Integrator parseIntegrator(const std::string& name) { return byName(kIntegrators, name, "integrator"); }
-std::string toString(sim::ControlLaw law) { return nameOf(kLaws, law); }
 std::string toString(sim::VelocitySource source) { return nameOf(kSources, source); }
 std::string toString(sim::Integrator integrator) { return nameOf(kIntegrators, integrator); }
 

@@ -74,7 +74,7 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   s["file"] = scenario.file;
   s["controller"] = c;
   s["reference"] = scenario.reference.type;
-  s["variant"] = toString(setup.law);
+  s["variant"] = setup.law;
   s["estimator"] = toString(setup.velocity_source);
   s["body_safe"] = c.body_safe;
   s["tangential_avoidance"] = c.tangential_avoidance;

@@ -171,7 +171,7 @@ class QuietNavigator : public mrpt::nav::CReactiveNavigationSystem {
   }
 };
 
-class ReactiveLaw : public sim::StepLaw {
+class ReactiveLaw : public core::ControlLaw {
  public:
   ReactiveLaw(const core::ControllerConfig& config, const ReactiveLawOptions& options)
       : config_(config),
@@ -218,6 +218,17 @@ class ReactiveLaw : public sim::StepLaw {
   }
 
   const core::DiamondSet& diamond() const override { return diamond_; }
+  // MRPT's navigator cannot be copied: a copy is a fresh law with the same configuration.
+  std::unique_ptr<core::ControlLaw> clone() const override { return std::make_unique<ReactiveLaw>(config_, options_); }
+  std::string name() const override { return "mrpt_reactive"; }
+  // The navigator's state is MRPT's: a reset re-targets at the next step as a fresh law does.
+  void reset() override {
+    started_ = false;
+    last_t_ = next_update_ = 0.0;
+  }
+  // The navigator is configured once (its limits and robot shape are in its INI text).
+  void setConfig(const core::ControllerConfig& config) override { (void)config; }
+  const core::ControllerConfig& config() const override { return config_; }
 
  private:
   // Re-target at the target's latest position and run one navigation step.
@@ -271,14 +282,18 @@ class ReactiveLaw : public sim::StepLaw {
 
 }  // namespace
 
-std::unique_ptr<sim::StepLaw> makeReactiveLaw(const sim::ClosedLoopSetup& setup, const ReactiveLawOptions& options) {
+std::unique_ptr<core::ControlLaw> makeReactiveLaw(const core::LawSetup& setup, const ReactiveLawOptions& options) {
   if (!(options.period > 0.0) || options.beams < 8 || !(options.range_max > 0.0) || !(options.ref_distance > 0.0))
     throw std::invalid_argument("sim_mrpt: period, ref_distance and range_max must be > 0 and beams >= 8");
   return std::make_unique<ReactiveLaw>(setup.controller, options);
 }
 
-sim::StepLawFactory reactiveLawFactory(const ReactiveLawOptions& options) {
-  return [options](const sim::ClosedLoopSetup& setup) { return makeReactiveLaw(setup, options); };
+core::LawFactory reactiveLawFactory(const ReactiveLawOptions& options) {
+  return [options](const core::LawSetup& setup) { return makeReactiveLaw(setup, options); };
+}
+
+core::LawFactory provideReactiveLaw(const ReactiveLawOptions& options) {
+  return core::provideLaw("mrpt_reactive", reactiveLawFactory(options));
 }
 
 }  // namespace sim_mrpt

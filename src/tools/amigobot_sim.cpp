@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "amigobot_tracking/core/law_registry.h"
 #include "amigobot_tracking/sim/actuator_fit.h"
 #include "amigobot_tracking/sim/gain_tuner.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
@@ -47,7 +48,7 @@ struct Shorthand {
 };
 constexpr Shorthand kShorthands[] = {
     {"--variant", "controller.variant",
-     "control law recommended|paper|fixed_rho|proportional|mrpt_reactive (default: the file's, else recommended)"},
+     "control law (default: the file's, else recommended)"},
     {"--estimator", "controller.estimator", "target velocity source paper|finite_difference|kalman"},
     {"--body-safe", "controller.body_safe", "effective radius R + r in (10) (true|false)"},
     {"--tangential", "controller.tangential_avoidance", "tangential escape (true|false)"},
@@ -196,6 +197,7 @@ int runIdentify(const std::string& run_path, const std::string& out_path, double
 }  // namespace
 
 int main(int argc, char** argv) {
+  sim_mrpt::provideReactiveLaw();  // the registry's mrpt_reactive
   CLI::App app{"Offline simulator: a scenario file through the core's closed loop (no ROS)", "amigobot_sim"};
   std::string scenario_path, out, benchmark_json;
   std::vector<std::string> sets;
@@ -224,7 +226,9 @@ int main(int argc, char** argv) {
   app.add_option("--set", sets, "section.key=value: any scenario key (repeatable), checked like the file");
   std::map<std::string, std::string> shorthand_values;
   for (const Shorthand& s : kShorthands)
-    app.add_option(s.flag, shorthand_values[s.flag], std::string(s.help) + " (= --set " + s.key + "=...)");
+    app.add_option(s.flag, shorthand_values[s.flag],
+                   std::string(s.help) + (std::string(s.key) == "controller.variant" ? ": " + core::lawNameList(core::lawNames()) : "") +
+                       " (= --set " + s.key + "=...)");
   app.add_option("--monte-carlo", monte_carlo, "N randomised variants; writes DIR/monte_carlo.json")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--obstacle-speed", obstacle_speed, "Monte Carlo: moving obstacles at speeds drawn in [0, S] m/s")
@@ -291,7 +295,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "amigobot_sim: %s\n", e.what());
     return 2;
   }
-  scenario.setup.external_law = sim_mrpt::reactiveLawFactory();  // used by variant mrpt_reactive
   // Monte Carlo's base seed: --seed, else 1 (not the file's simulation.seed).
   const std::uint64_t seed = app.count("--seed") ? scenario.setup.sensor.seed : 1;
   if (benchmark > 0) return runBenchmark(scenario, benchmark, benchmark_json);
@@ -318,8 +321,7 @@ int main(int argc, char** argv) {
     sim::writeText(out + "/metrics.json", sim::metricsJson(scenario, result));
     const sim::RunMetrics& m = result.summary.metrics;
     char ratio[32] = "- (no rho)";
-    if (scenario.setup.law == sim::ControlLaw::kPaper || scenario.setup.law == sim::ControlLaw::kFixedRho ||
-        scenario.setup.law == sim::ControlLaw::kRecommended)
+    if (core::findLaw(scenario.setup.law)->has_rho_bound)
       std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
     const core::ControllerConfig& c = scenario.setup.controller;
     std::string beyond;  // the switches beyond the paper that are on
@@ -329,7 +331,7 @@ int main(int argc, char** argv) {
                                    {c.compensate_pose_age, "compensate_pose_age"}})
       if (on) beyond += std::string(", ") + name;
     std::printf("%s [%s, estimator %s, body_safe %s%s]: ASE %.5f AAE %.5f TEC %.4f max|e|/rho %s\n",
-                scenario.name.c_str(), sim::toString(scenario.setup.law).c_str(),
+                scenario.name.c_str(), scenario.setup.law.c_str(),
                 sim::toString(scenario.setup.velocity_source).c_str(), c.body_safe ? "true" : "false",
                 beyond.c_str(), m.ase, m.aae, m.tec, ratio);
     std::printf("  true error (true target, true robot): ASE %.5f, peak %.4f m; longest stall %.2f s\n", m.true_ase,

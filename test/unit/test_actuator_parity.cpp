@@ -17,6 +17,7 @@
 
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/aria/emulator.h"
+#include "amigobot_tracking/core/law_registry.h"
 #include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/sim/closed_loop.h"
 #include "aria_packets.h"
@@ -45,9 +46,12 @@ core::Twist2 commandAt(double t) {
   return {};
 }
 
-// The simulator's law: the sequence, whatever the target.
-class Replay : public sim::StepLaw {
+// The simulator's law: the sequence, whatever the target. It stands in the registry's
+// mrpt_reactive slot (a law above core, built by a provided factory) for this test only.
+class Replay : public core::ControlLaw {
  public:
+  std::unique_ptr<core::ControlLaw> clone() const override { return std::make_unique<Replay>(); }
+  std::string name() const override { return "mrpt_reactive"; }
   core::ControllerOutput step(double t, const core::PoseSample&, const core::TargetSample&,
                               const std::vector<core::Disk>&) override {
     core::ControllerOutput out;
@@ -55,9 +59,13 @@ class Replay : public sim::StepLaw {
     out.u = commandAt(t);
     return out;
   }
+  void reset() override {}
+  void setConfig(const core::ControllerConfig& config) override { config_ = config; }
+  const core::ControllerConfig& config() const override { return config_; }
   const core::DiamondSet& diamond() const override { return diamond_; }
 
  private:
+  core::ControllerConfig config_;
   core::DiamondSet diamond_{10.0, 10.0};
 };
 
@@ -85,13 +93,15 @@ std::vector<core::Pose2> simulatorTrajectory(bool ideal, bool no_delay = false) 
   setup.controller.v_max = setup.controller.w_max = 10.0;
   setup.duration = kDuration;
   setup.control_period = kPeriod;
-  setup.law = sim::ControlLaw::kMrptReactive;  // the external-law slot
-  setup.external_law = [](const sim::ClosedLoopSetup&) { return std::make_unique<Replay>(); };
+  setup.law = "mrpt_reactive";  // the slot Replay is provided in
+  const core::LawFactory before =
+      core::provideLaw("mrpt_reactive", [](const core::LawSetup&) { return std::make_unique<Replay>(); });
   setup.dynamics.ideal = ideal;  // firmware: the AmigoBot's values, as the emulator's
   if (no_delay) setup.dynamics.limits.cycle = setup.dynamics.limits.latency = 0.0;
   const core::CircleReference reference({0.0, 0.0}, 0.5, 10.0);
   std::vector<core::Pose2> poses;
   sim::runClosedLoop(setup, reference, [&](const sim::ClosedLoopStep& step) { poses.push_back(step.pose); });
+  core::provideLaw("mrpt_reactive", before);
   return poses;
 }
 

@@ -4,12 +4,11 @@
 
 #include <cmath>
 
-#include "amigobot_tracking/sim/baseline_controller.h"
 #include "amigobot_tracking/core/controller.h"
+#include "amigobot_tracking/core/proportional_controller.h"
 #include "amigobot_tracking/core/offset_point.h"
 
 using namespace amigobot_tracking::core;
-using namespace amigobot_tracking::sim;
 
 namespace {
 
@@ -29,7 +28,7 @@ TEST(ProportionalController, IsFeedbackLinearisationWithAProportionalGain) {
   TargetSample target{0.0, {1.0, 0.5}};
   target.has_velocity = true;
   target.velocity = {0.2, -0.1};
-  const ControllerOutput out = law.step(0.0, pose, target, {});
+  const ControllerOutput out = law.step(0.0, PoseSample{0.0, pose}, target, {});
   ASSERT_TRUE(out.valid);
   const Eigen::Vector2d e = target.position - offsetPoint(pose, 0.3);
   const Eigen::Vector2d u_r = target.velocity + 2.0 * e;
@@ -44,11 +43,11 @@ TEST(ProportionalController, SaturatesIntoTheDiamondAndRefusesNonFiniteInput) {
   c.v_max = 0.3;
   c.w_max = 0.8;
   ProportionalController law(c, 50.0);
-  const ControllerOutput out = law.step(0.0, {0.0, 0.0, 0.0}, {0.0, {5.0, 3.0}}, {});
+  const ControllerOutput out = law.step(0.0, PoseSample{0.0, {0.0, 0.0, 0.0}}, {0.0, {5.0, 3.0}}, {});
   ASSERT_TRUE(out.valid);
   EXPECT_TRUE(out.active.saturated);
   EXPECT_TRUE(law.diamond().contains(out.u, 1e-12));
-  const ControllerOutput bad = law.step(0.1, {NAN, 0.0, 0.0}, {0.1, {5.0, 3.0}}, {});
+  const ControllerOutput bad = law.step(0.1, PoseSample{0.1, {NAN, 0.0, 0.0}}, {0.1, {5.0, 3.0}}, {});
   EXPECT_FALSE(bad.valid);
   EXPECT_EQ(bad.u.v, 0.0);
 }
@@ -60,7 +59,7 @@ TEST(ProportionalController, RepelsFromAnObstacleLikeThePaperLaw) {
   ProportionalController law(c, 1.0);
   const Pose2 pose{0.0, 0.0, 0.0};  // p_r = (0.3, 0)
   const std::vector<Disk> obstacles = {{{0.3, 0.6}, 0.3}};  // 0.05 m from p_r's disk, inside delta
-  const ControllerOutput out = law.step(0.0, pose, {0.0, {0.3, 0.0}}, obstacles);
+  const ControllerOutput out = law.step(0.0, PoseSample{0.0, pose}, {0.0, {0.3, 0.0}}, obstacles);
   EXPECT_EQ(out.detected_obstacles, 1);
   EXPECT_LT(out.u_c.y(), 0.0);  // pushed away (down)
   EXPECT_NEAR(out.u_r.y(), c.k_o * out.u_c.y(), 1e-12);

@@ -38,7 +38,7 @@ struct Jumps {
 // suite's pillar class without its spread): the largest per-step command change.
 Jumps noisyPillar(double rise_time) {
   sim::ClosedLoopSetup setup;
-  setup.law = sim::ControlLaw::kRecommended;
+  setup.law = "recommended";
   setup.controller.command_rise_time = rise_time;
   setup.controller.body_safe = true;
   core::Disk pillar;

@@ -26,7 +26,7 @@ struct Outcome {
 // The target drives along y = 0 over a disk of radius `radius` at x = 2.5, at 0.2 m/s.
 Outcome overADisk(double radius, double lookahead) {
   sim::ClosedLoopSetup setup;
-  setup.law = sim::ControlLaw::kRecommended;
+  setup.law = "recommended";
   setup.controller.field_lookahead = lookahead;
   setup.controller.body_safe = true;
   setup.initial_pose = {0.0, 0.0, 0.0};
@@ -78,7 +78,7 @@ TEST(FieldLookahead, TracksAsBeforeInFreeSpace) {
   const Outcome ahead = overADisk(0.2, 2.0), off = overADisk(0.2, 0.0);
   auto free_run = [&](double lookahead) {
     sim::ClosedLoopSetup s;
-    s.law = sim::ControlLaw::kRecommended;
+    s.law = "recommended";
     s.controller.field_lookahead = lookahead;
     s.duration = 20.0;
     s.control_period = 0.05;

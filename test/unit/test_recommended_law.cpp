@@ -33,7 +33,7 @@ struct Outcome {
   double jump = 0.0;  // largest one-step command change, as a share of the diamond: max(|dv|/v_bar, |dw|/w_bar)
 };
 
-sim::ClosedLoopSetup setupOf(const Scene& scene, sim::ControlLaw law) {
+sim::ClosedLoopSetup setupOf(const Scene& scene, const std::string& law) {
   sim::ClosedLoopSetup setup;
   setup.controller.v_max = scene.v_max;
   setup.controller.w_max = scene.w_max;
@@ -48,7 +48,7 @@ sim::ClosedLoopSetup setupOf(const Scene& scene, sim::ControlLaw law) {
   return setup;
 }
 
-Outcome run(const Scene& scene, sim::ControlLaw law) {
+Outcome run(const Scene& scene, const std::string& law) {
   const sim::ClosedLoopSetup setup = setupOf(scene, law);
   const core::SplineReference reference(scene.waypoints, scene.spline_duration);
   std::vector<double> winding(scene.disks.size(), 0.0), last_angle(scene.disks.size(), NAN);
@@ -125,8 +125,8 @@ std::string joined(const std::vector<std::string>& v) {
 TEST(RecommendedLaw, PassesEveryClutterClassWhereThePaperLawFails) {
   std::map<std::string, std::vector<std::string>> paper_failures;
   for (const Scene& scene : clutter_scenes::clutterScenes()) {
-    const Outcome paper = run(scene, sim::ControlLaw::kPaper);
-    const Outcome mine = run(scene, sim::ControlLaw::kRecommended);
+    const Outcome paper = run(scene, "paper");
+    const Outcome mine = run(scene, "recommended");
     std::printf("%-12s ASE paper %.4f recommended %.4f | widenings %llu / %llu | flips %d / %d | turns %.2f / %.2f"
                 " | jump %.2f / %.2f\n", scene.name.c_str(), paper.true_ase, mine.true_ase,
                 (unsigned long long)paper.widenings, (unsigned long long)mine.widenings, paper.side_flips,
@@ -223,7 +223,7 @@ TEST(RecommendedLaw, DrivesAtLeastAtTheSteadyStateGainWhileRhoIsWide) {
   EXPECT_EQ(c.shortfall, 0.0);
 
   // Closed loop: 0.2 m behind the start of a straight course driven at 0.1 m/s, no obstacles.
-  auto ase = [](sim::ControlLaw law) {
+  auto ase = [](const std::string& law) {
     sim::ClosedLoopSetup setup;
     setup.initial_pose = {-0.2, 0.0, 0.0};
     setup.duration = 12.0;
@@ -234,7 +234,7 @@ TEST(RecommendedLaw, DrivesAtLeastAtTheSteadyStateGainWhileRhoIsWide) {
     EXPECT_EQ(s.envelope_widenings, 0u);
     return s.metrics.true_ase;
   };
-  const double recommended = ase(sim::ControlLaw::kRecommended), paper = ase(sim::ControlLaw::kPaper);
+  const double recommended = ase("recommended"), paper = ase("paper");
   std::printf("off-course start: true ASE recommended %.4f, paper %.4f\n", recommended, paper);
   EXPECT_LT(recommended, 0.6 * paper);
 }
@@ -251,7 +251,7 @@ TEST(RecommendedLaw, FeedForwardFollowsTheTargetNotTheNoise) {
     setup.initial_pose = {0.0, 0.0, 0.0};
     setup.duration = 20.0;
     setup.control_period = 0.05;
-    setup.law = sim::ControlLaw::kRecommended;
+    setup.law = "recommended";
     setup.controller.estimator.max_acceleration = a_max;
     setup.controller.command_rise_time = 0.0;  // the feed-forward's bound alone (test_command_rate_box: the box's)
     setup.sensor.sample_period = 0.1;
@@ -279,11 +279,11 @@ TEST(RecommendedLaw, FeedForwardFollowsTheTargetNotTheNoise) {
 TEST(RecommendedLaw, RhoLawKeepsTheErrorInsideWithoutTheGuard) {
   for (const Scene& scene : clutter_scenes::clutterScenes()) {
     if (scene.name != "fast_target") continue;
-    for (sim::ControlLaw law : {sim::ControlLaw::kRecommended, sim::ControlLaw::kPaper}) {
+    for (const std::string law : {"recommended", "paper"}) {
       sim::ClosedLoopSetup setup = setupOf(scene, law);
       const core::SplineReference reference(scene.waypoints, scene.spline_duration);
       const sim::ClosedLoopSummary s = sim::runClosedLoop(setup, reference);
-      if (law == sim::ControlLaw::kRecommended) {
+      if (law == "recommended") {
         EXPECT_EQ(s.envelope_widenings, 0u);
         EXPECT_LT(s.max_error_ratio, 0.99);
       } else {
@@ -324,7 +324,7 @@ TEST(RecommendedLaw, RhoDoesNotJumpWithAThinBandAt20Hz) {
 TEST(RecommendedLaw, DrivesThroughADoorTheBodyPassesButTheEffectiveDiskDoesNot) {
   Scene door{"door", {clutter_scenes::disk(2.5, 0.45, 0.1), clutter_scenes::disk(2.5, -0.45, 0.1)}, {},
              {{0.6, 0.0}, {5.0, 0.0}}, 25.0, 30.0};
-  const sim::ClosedLoopSetup setup = setupOf(door, sim::ControlLaw::kRecommended);
+  const sim::ClosedLoopSetup setup = setupOf(door, "recommended");
   const core::SplineReference reference(door.waypoints, door.spline_duration);
   double crossing_y = NAN;  // where the centre crosses the door's line
   double last_x = 0.0, last_y = 0.0;

@@ -39,8 +39,8 @@ sim::ClosedLoopSetup staticSetup() {
   setup.obstacles = {core::Disk{{2.0, 0.05}, 0.3}};  // between the start and the goal
   setup.duration = 40.0;
   setup.control_period = 0.01;
-  setup.law = sim::ControlLaw::kMrptReactive;
-  setup.external_law = sim_mrpt::reactiveLawFactory();
+  setup.law = "mrpt_reactive";
+  sim_mrpt::provideReactiveLaw();  // the registry's mrpt_reactive
   return setup;
 }
 
@@ -49,7 +49,7 @@ sim::ClosedLoopSetup staticSetup() {
 sim::Scenario deadEnd(const sim_mrpt::ReactiveLawOptions& options) {
   sim::Scenario scenario = sim::loadScenario(std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/dead_end_away.yaml",
                                              {"controller.variant=mrpt_reactive"});
-  scenario.setup.external_law = sim_mrpt::reactiveLawFactory(options);
+  sim_mrpt::provideReactiveLaw(options);
   return scenario;
 }
 
@@ -117,7 +117,7 @@ TEST(MrptReactive, MovingTargetGivesFiniteMetricsInsideTheDiamond) {
   sim::Scenario scenario =
       sim::loadScenario(std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/saddle_line.yaml",
                         {"controller.variant=mrpt_reactive"});
-  scenario.setup.external_law = sim_mrpt::reactiveLawFactory();
+  sim_mrpt::provideReactiveLaw();
   const core::DiamondSet diamond(scenario.setup.controller.v_max, scenario.setup.controller.w_max);
   int outside = 0, moving = 0;
   const auto reference = scenario.makeReference();
@@ -139,9 +139,9 @@ TEST(MrptReactive, MovingTargetGivesFiniteMetricsInsideTheDiamond) {
 
 TEST(MrptReactive, RefusedWithoutTheLibraryAndRestoresMrptsClock) {
   sim::ClosedLoopSetup setup = staticSetup();
-  setup.external_law = nullptr;
+  const core::LawFactory registered = core::provideLaw("mrpt_reactive", nullptr);
   EXPECT_THROW(sim::runClosedLoop(setup, StaticGoal({1.0, 0.0})), std::invalid_argument);
-  setup = staticSetup();
+  core::provideLaw("mrpt_reactive", registered);
   setup.duration = 0.2;
   sim::runClosedLoop(setup, StaticGoal({1.0, 0.0}));
   EXPECT_EQ(mrpt::Clock::getActiveClock(), mrpt::Clock::Realtime);
@@ -153,7 +153,7 @@ TEST(MrptReactive, ABatchGivesTheSameFiguresOnOneOrTwoJobsAndRestoresTheClock) {
   sim::Scenario scenario =
       sim::loadScenario(std::string(AMIGOBOT_SOURCE_DIR) + "/config/scenarios/pedestrians/crossing_ahead.yaml",
                         {"controller.variant=mrpt_reactive"});
-  scenario.setup.external_law = sim_mrpt::reactiveLawFactory();
+  sim_mrpt::provideReactiveLaw();
   sim::MonteCarloOptions batch;
   batch.runs = 4;
   batch.jobs = 1;

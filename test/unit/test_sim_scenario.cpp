@@ -53,7 +53,7 @@ TEST(SimScenario, AcceptsTheIssueMinimumExactly) {
   EXPECT_DOUBLE_EQ(s.setup.obstacles[0].radius, 0.15);
   EXPECT_DOUBLE_EQ(s.setup.duration, 6.283);
   EXPECT_DOUBLE_EQ(s.setup.initial_pose.theta, 1.5708);
-  EXPECT_EQ(s.setup.law, sim::ControlLaw::kPaper);
+  EXPECT_EQ(s.setup.law, "paper");
   EXPECT_EQ(s.name, "min");
 }
 
@@ -88,7 +88,7 @@ TEST(SimScenario, ReadsOptionalKeys) {
   text = replaced(text, "center: [1.5, 0.0]", "center: [1.5, 0.5]");  // p_r(0) outside the body-safe zone
   const sim::Scenario s = sim::parseScenario(text, "opt.yaml");
   EXPECT_TRUE(s.setup.controller.body_safe);
-  EXPECT_EQ(s.setup.law, sim::ControlLaw::kProportional);
+  EXPECT_EQ(s.setup.law, "proportional");
   EXPECT_EQ(s.setup.velocity_source, sim::VelocitySource::kKalman);
   EXPECT_DOUBLE_EQ(s.setup.baseline.k_p, 7.0);
   EXPECT_DOUBLE_EQ(s.setup.control_period, 0.002);

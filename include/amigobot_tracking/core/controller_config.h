@@ -49,7 +49,8 @@ struct ControllerConfig {
   double max_rho_rate = 0.0;
   EstimatorConfig estimator;
 
-  // Which law: "paper" ((9)-(13) as published, with the switches below) or "recommended"
+  // Which law: a robot law of the registry (law_registry.h): "paper" ((9)-(13) as published,
+  // with the switches below), "fixed_rho" (the same without (13)'s adaptation) or "recommended"
   // (recommended_law.h: a navigation field, a safety filter over the diamond and (13'); the
   // switches tangential_avoidance, k_t, tangential_hysteresis and obstacle_horizon do not apply).
   std::string law = "paper";
@@ -80,7 +81,6 @@ struct ControllerConfig {
   bool compensate_pose_age = false;    // move the pose forward along the commands applied over its age
   double max_prediction = 0.5;         // [s] ages beyond this are not extrapolated further
 
-  bool recommended() const { return law == "recommended"; }
   // The radius used in (10): R, or R + r when body_safe.
   double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
   // Empty when valid, otherwise "key: reason" naming the first bad field (the table's
@@ -88,7 +88,7 @@ struct ControllerConfig {
   std::string validate() const;
 };
 
-// The values of `law` (the field table's oneOf and every tool that names a law read this).
+// The values of `law`: the registry's laws that the tracking node runs (law_registry.h).
 const std::vector<std::string>& controlLawNames();
 
 // Every field read from parameters and scenarios, the estimator's under "estimator/"

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "amigobot_tracking/core/actuator_limits.h"
@@ -15,23 +16,12 @@
 #include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/reference.h"
 #include "amigobot_tracking/core/resume_ramp.h"
-#include "amigobot_tracking/sim/step_law.h"
 #include "amigobot_tracking/sim/step_size.h"
 #include "amigobot_tracking/sim/target_sensor.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
 namespace sim {
-
-// Which control law closes the loop.
-enum class ControlLaw {
-  kPaper,         // eqs. (9)-(13)
-  kRecommended,   // the recommended law (core/recommended_law.h): field, safety filter, (13')
-  kFixedRho,      // (9)-(12) with rho following the prescribed decay only (no adaptation)
-  kProportional,  // feedback linearisation + k_p e + the same u_c and saturation (baseline_controller.h)
-  kMrptReactive,  // MRPT's CReactiveNavigationSystem re-targeted at the target (sim_mrpt library,
-                  // through ClosedLoopSetup::external_law)
-};
 
 // Where the v_hat of the law comes from.
 enum class VelocitySource {
@@ -56,7 +46,7 @@ enum class Integrator {
 };
 
 struct BaselineParams {
-  double k_p = 30.0;             // [1/s] gain of kProportional
+  double k_p = 30.0;             // [1/s] gain of the proportional law
   double lowpass_tau = 0.05;     // [s] time constant of kFiniteDifference
   double kalman_accel_std = 10.0;       // [m/s^2] process noise of kKalman
   double kalman_measurement_std = 0.01; // [m] measurement noise of kKalman (> 0)
@@ -91,8 +81,9 @@ struct ClosedLoopSetup {
   Integrator integrator = Integrator::kExplicit;
   TargetSensorConfig sensor;     // noise, delay, jumps (its sample_period is replaced by the one above)
   PoseSensorConfig pose_sensor;  // how late and how often the robot's own pose arrives
-  ControlLaw law = ControlLaw::kPaper;
-  // The paper and fixed-rho laws run core::TrackingLoop (the nodelet's cycle) with inputs
+  // Which law closes the loop: a name of the law registry (core/law_registry.h).
+  std::string law = "paper";
+  // The robot's laws (LawEntry::on_robot) run core::TrackingLoop (the nodelet's cycle) with inputs
   // that never go stale. resume_at_start: start as the robot resumes (controller restart,
   // the command leaving zero on resume_ramp) instead of the paper's start.
   bool resume_at_start = false;
@@ -100,9 +91,6 @@ struct ClosedLoopSetup {
   VelocitySource velocity_source = VelocitySource::kPaperEstimator;
   BaselineParams baseline;
   double estimator_settle_time = 0.5;  // [s] estimator errors after this count as "settled"
-  // The law of kMrptReactive, from a library above sim (sim_mrpt::reactiveLawFactory(); amigobot_sim
-  // sets it). Without it runClosedLoop refuses that variant.
-  StepLawFactory external_law;
 };
 
 // What an observer sees at every step: the state before the command is applied.
@@ -147,8 +135,8 @@ core::ObstacleMotion constantMotion(const Eigen::Vector2d& start, const Eigen::V
 // The velocity of a motion made by constantMotion; false for any other motion.
 bool isConstantMotion(const core::ObstacleMotion& motion, Eigen::Vector2d* velocity);
 
-// The setup must be valid (validateSetup empty). Throws std::invalid_argument for kMrptReactive
-// without external_law.
+// The setup must be valid (validateSetup empty). Throws std::invalid_argument for a law whose
+// library has not registered it (core::makeLaw: mrpt_reactive without sim_mrpt::provideReactiveLaw).
 ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Reference& reference,
                                 const ClosedLoopObserver& observer = {});
 

@@ -57,10 +57,9 @@ Scenario parseScenario(const std::string& text, const std::string& file,
 void checkScenario(const Scenario& scenario);
 
 // Names of the enumerations as in the YAML files.
-sim::ControlLaw parseControlLaw(const std::string& name);          // throws std::invalid_argument
+std::string parseControlLaw(const std::string& name);  // a registry law (law_registry.h); throws std::invalid_argument
 sim::VelocitySource parseVelocitySource(const std::string& name);  // throws std::invalid_argument
 sim::Integrator parseIntegrator(const std::string& name);          // throws std::invalid_argument
-std::string toString(sim::ControlLaw law);
 std::string toString(sim::Integrator integrator);
 std::string toString(sim::VelocitySource source);
 

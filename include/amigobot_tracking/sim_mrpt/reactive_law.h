@@ -15,8 +15,7 @@
 #include <string>
 
 #include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/sim/closed_loop.h"
-#include "amigobot_tracking/sim/step_law.h"
+#include "amigobot_tracking/core/law_registry.h"
 
 namespace amigobot_tracking {
 namespace sim_mrpt {
@@ -41,11 +40,14 @@ std::string reactiveConfigText(const core::ControllerConfig& config, const React
 
 // A navigator error (MRPT's NAV_ERROR: an exception inside it, an emergency stop) makes step()
 // throw std::runtime_error naming MRPT's reason: the run fails instead of scoring a robot that
-// stopped. One law per run (not thread-safe: it switches MRPT's process-wide clock while it lives).
-std::unique_ptr<sim::StepLaw> makeReactiveLaw(const sim::ClosedLoopSetup& setup,
-                                              const ReactiveLawOptions& options = ReactiveLawOptions());
-// What ClosedLoopSetup::external_law takes.
-sim::StepLawFactory reactiveLawFactory(const ReactiveLawOptions& options = ReactiveLawOptions());
+// stopped. Laws may live on several threads (Monte Carlo): MRPT's process-wide clock is
+// simulated while any lives. A core::ControlLaw named mrpt_reactive in the law registry.
+std::unique_ptr<core::ControlLaw> makeReactiveLaw(const core::LawSetup& setup,
+                                                  const ReactiveLawOptions& options = ReactiveLawOptions());
+core::LawFactory reactiveLawFactory(const ReactiveLawOptions& options = ReactiveLawOptions());
+// Registers the factory as the registry's mrpt_reactive (core::provideLaw): a program that links
+// this library calls it once at its start (amigobot_sim does); returns the factory it replaces.
+core::LawFactory provideReactiveLaw(const ReactiveLawOptions& options = ReactiveLawOptions());
 
 }  // namespace sim_mrpt
 }  // namespace amigobot_tracking

@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
   app.add_option("--robot-radius", config.robot_radius, "[m] R")->capture_default_str();
   app.add_option("--offset", config.offset, "[m] r, offset of the controlled point")->capture_default_str();
   app.add_option("--rho-inf", config.rho_inf, "[m] the law's rho_inf (plots, tracking bound)")->capture_default_str();
-  app.add_option("--law", config.law, "paper | escape (tangential_avoidance) | recommended, recorded in metrics.json")
+  app.add_option("--law", config.law, "a robot law of core/law_registry (paper | fixed_rho | recommended) or its alias escape (paper + tangential_avoidance), recorded in metrics.json")
       ->capture_default_str();
   app.add_option("--body-safe", config.body_safe, "the run's body_safe (effective radius R + r)")->capture_default_str();
   app.add_option("--delta", config.verdict.band, "[m] detection band: obstacle episode while a clearance < delta")

@@ -1,19 +1,32 @@
-#include "amigobot_tracking/sim/baseline_controller.h"
+#include "amigobot_tracking/core/proportional_controller.h"
 
 #include <cmath>
 
 #include "amigobot_tracking/core/avoidance.h"
 #include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/performance_envelope.h"
 
 namespace amigobot_tracking {
-namespace sim {
+namespace core {
 
-ProportionalController::ProportionalController(const core::ControllerConfig& config, double k_p)
+ProportionalController::ProportionalController(const ControllerConfig& config, double k_p)
     : config_(config), k_p_(k_p), diamond_(config.v_max, config.w_max), estimator_(config.estimator) {}
 
-core::ControllerOutput ProportionalController::step(double t, const core::Pose2& pose, const core::TargetSample& target,
-                                              const std::vector<core::Disk>& obstacles) {
-  core::ControllerOutput out;
+void ProportionalController::reset() {
+  estimator_ = VelocityEstimator(config_.estimator);
+  started_ = false;
+}
+
+void ProportionalController::setConfig(const ControllerConfig& config) {
+  reconfigureEstimator(config_.estimator, config.estimator, &estimator_);
+  config_ = config;
+  diamond_ = DiamondSet(config.v_max, config.w_max);
+}
+
+ControllerOutput ProportionalController::step(double t, const PoseSample& robot, const TargetSample& target,
+                                              const std::vector<Disk>& obstacles) {
+  const Pose2& pose = robot.pose;
+  ControllerOutput out;
   out.t = t;
   if (!std::isfinite(t) || !pose.isFinite() || !std::isfinite(target.stamp) || !target.position.allFinite() ||
       (started_ && t < last_t_)) {
@@ -26,24 +39,24 @@ core::ControllerOutput ProportionalController::step(double t, const core::Pose2&
     estimator_.update(target.stamp, target.position);
   }
   out.valid = true;
-  out.p_r = core::offsetPoint(pose, config_.offset);
+  out.p_r = offsetPoint(pose, config_.offset);
   out.p_d = target.position;
   out.e = out.p_d - out.p_r;
   out.v_hat = target.has_velocity ? target.velocity : estimator_.velocity();
   const Eigen::Vector2d heading(std::cos(pose.theta), std::sin(pose.theta));
-  const core::AvoidanceResult avoidance =
-      core::repulsiveTerm(out.p_r, obstacles, config_.effectiveRadius(), config_.delta, heading, config_.min_margin);
+  const AvoidanceResult avoidance =
+      repulsiveTerm(out.p_r, obstacles, config_.effectiveRadius(), config_.delta, heading, config_.min_margin);
   out.u_c = avoidance.u_c;
   out.detected_obstacles = avoidance.detected;
   out.min_clearance = avoidance.min_clearance;
   out.active.avoiding = avoidance.detected > 0;
   out.u_r = out.v_hat + k_p_ * out.e + config_.k_o * out.u_c;
-  out.u_d = core::offsetVelocityToTwist(out.u_r, pose.theta, config_.offset);
+  out.u_d = offsetVelocityToTwist(out.u_r, pose.theta, config_.offset);
   const auto saturated = diamond_.saturate(out.u_d);
   if (!saturated) {
     out.valid = false;
     out.error = "desired command is not finite";
-    out.u = core::Twist2();
+    out.u = Twist2();
     return out;
   }
   out.u = *saturated;
@@ -52,5 +65,5 @@ core::ControllerOutput ProportionalController::step(double t, const core::Pose2&
   return out;
 }
 
-}  // namespace sim
+}  // namespace core
 }  // namespace amigobot_tracking
