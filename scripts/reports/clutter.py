@@ -7,13 +7,13 @@ Usage: scripts/reports/clutter.py --sim PATH/amigobot_sim [--runs N] [--jobs J] 
        [--classes a,b] [--out out/clutter] [--docs docs]      (`make clutter`)
 --quick: 4 variants per batch (the test's mode). Default: 50 variants per class and law.
 """
-import argparse
 import json
 import os
 import subprocess
 import sys
 import time
 
+import batch_cli
 import markdown
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -160,19 +160,5 @@ def main(sim, out_root, docs, runs=50, jobs=None, classes=None, quick=False, law
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--sim", required=True)
-    parser.add_argument("--out", default=os.path.join(ROOT, "out", "clutter"))
-    parser.add_argument("--docs", default=os.path.join(ROOT, "docs"))
-    parser.add_argument("--runs", type=int, default=50)
-    parser.add_argument("--jobs", type=int, default=None, help="threads per batch (default: every core)")
-    parser.add_argument("--classes", default="", help="comma-separated subset of the classes")
-    parser.add_argument("--quick", action="store_true", help=f"{QUICK_RUNS} variants per batch")
-    parser.add_argument("--laws", default="", help="comma-separated subset of the laws")
-    args = parser.parse_args()
-    unknown = [c for c in args.classes.split(",") if c and c not in CLASSES]
-    if unknown:
-        sys.exit(f"clutter.py: unknown class {', '.join(unknown)}; known: {', '.join(CLASSES)}")
-    main(os.path.abspath(args.sim), os.path.abspath(args.out), os.path.abspath(args.docs),
-         QUICK_RUNS if args.quick else args.runs, args.jobs, [c for c in args.classes.split(",") if c], args.quick,
-         [law for law in args.laws.split(",") if law])
+    args = batch_cli.parse(__doc__, "clutter.py", "clutter", ROOT, CLASSES, LAWS, QUICK_RUNS)
+    main(args.sim, args.out, args.docs, args.runs, args.jobs, args.classes, args.quick, args.laws)

@@ -9,7 +9,6 @@ Usage: scripts/reports/pedestrians.py --sim PATH/amigobot_sim [--runs N] [--jobs
        [--classes a,b] [--laws a,b] [--set section.key=value ...] [--out out/pedestrians] [--docs docs]
 --quick: QUICK_RUNS variants per class (the test's mode). Default: 50.   (`make pedestrians`)
 """
-import argparse
 import concurrent.futures
 import json
 import math
@@ -19,6 +18,7 @@ import subprocess
 import sys
 import time
 
+import batch_cli
 import markdown
 import scenario_yaml
 
@@ -262,22 +262,7 @@ def main(sim, out_root, docs, runs=50, jobs=None, classes=None, quick=False, law
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--sim", required=True)
-    parser.add_argument("--out", default=os.path.join(ROOT, "out", "pedestrians"))
-    parser.add_argument("--docs", default=os.path.join(ROOT, "docs"))
-    parser.add_argument("--runs", type=int, default=50)
-    parser.add_argument("--jobs", type=int, default=None, help="runs at once (default: every core)")
-    parser.add_argument("--classes", default="", help="comma-separated subset of the classes")
-    parser.add_argument("--laws", default="", help="comma-separated subset of the laws")
-    parser.add_argument("--set", action="append", default=[], help="section.key=value for every run (repeatable)")
-    parser.add_argument("--quick", action="store_true", help=f"{QUICK_RUNS} variants per class")
-    args = parser.parse_args()
-    names = [c for c in args.classes.split(",") if c]
-    chosen = [law for law in args.laws.split(",") if law]
-    unknown = [c for c in names if c not in CLASSES] + [law for law in chosen if law not in LAWS]
-    if unknown:
-        sys.exit(f"pedestrians.py: unknown class or law {', '.join(unknown)}; classes: {', '.join(CLASSES)}; "
-                 f"laws: {', '.join(LAWS)}")
-    main(os.path.abspath(args.sim), os.path.abspath(args.out), os.path.abspath(args.docs),
-         QUICK_RUNS if args.quick else args.runs, args.jobs, names, args.quick, chosen, args.set)
+    args = batch_cli.parse(__doc__, "pedestrians.py", "pedestrians", ROOT, CLASSES, LAWS, QUICK_RUNS,
+                           lambda p: p.add_argument("--set", action="append", default=[],
+                                                    help="section.key=value for every run (repeatable)"))
+    main(args.sim, args.out, args.docs, args.runs, args.jobs, args.classes, args.quick, args.laws, args.set)
