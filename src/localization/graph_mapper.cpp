@@ -17,6 +17,14 @@ namespace localization {
 namespace {
 
 constexpr int kLocalKeyframes = 8;         // the front end aligns against this many last keyframes
+// A new keyframe is matched against the 3 nearest old places (keyframes more than 2 x kLoopSpan
+// apart), not only the nearest: on the ACES building the loops went from 47 to 121 and the
+// smoothed ATE from 0.113 m to 0.096 m (with the corridor edges below).
+constexpr int kLoopCandidates = 3;
+// Shifts probed in this many directions over half a turn, to find a corridor's axis.
+constexpr int kProbeDirections = 8;
+// [m] a corridor's loop edge: the position along it as uncertain as this (across it, 5 cm).
+constexpr double kAlongCorridor = 3.0;
 constexpr int kLoopSpan = 3;               // a loop is matched against the old keyframe and 3 each side
 constexpr double kKeyframeRotation = 0.35;  // [rad] turn that makes a keyframe
 constexpr double kProbe = 0.3;             // [m] shifts of a loop match that must fit worse
@@ -104,17 +112,33 @@ void GraphMapper::addKeyframe(const RangeScan& scan, const std::vector<Eigen::Ve
 
 bool GraphMapper::closeLoop(int k) {
   const core::Pose2 current = graph_.nodes()[static_cast<std::size_t>(k)];
-  // The nearest old keyframe within the loop radius.
-  int best = -1;
-  double nearest = config_.graph.loop_radius;
+  // Old keyframes within the loop radius, nearest first.
+  std::vector<std::pair<double, int>> near;
   for (int j = 0; j + config_.graph.loop_min_gap <= k; ++j) {
     const double d = travel(graph_.nodes()[static_cast<std::size_t>(j)], current);
-    if (d <= nearest) {
-      nearest = d;
-      best = j;
-    }
+    if (d <= config_.graph.loop_radius) near.emplace_back(d, j);
   }
-  if (best < 0) return false;
+  std::sort(near.begin(), near.end());
+  std::vector<int> tried;
+  int added = 0;
+  for (const auto& candidate : near) {
+    if (static_cast<int>(tried.size()) >= kLoopCandidates) break;
+    const int best = candidate.second;
+    if (std::any_of(tried.begin(), tried.end(), [&](int t) { return std::abs(t - best) <= 2 * kLoopSpan; })) continue;
+    tried.push_back(best);
+    PoseGraphEdge edge;
+    if (!matchLoop(k, best, &edge)) continue;
+    graph_.addEdge(edge);
+    ++added;
+  }
+  if (added == 0) return false;
+  graph_.optimize(10);
+  loops_ += added;
+  return true;
+}
+
+bool GraphMapper::matchLoop(int k, int best, PoseGraphEdge* edge) const {
+  const core::Pose2 current = graph_.nodes()[static_cast<std::size_t>(k)];
   mrpt::maps::CSimplePointsMap old_points;
   collectPoints(best - kLoopSpan, std::min(best + kLoopSpan, k - config_.graph.loop_min_gap), &old_points);
   const std::vector<Eigen::Vector2d>& points = keyframes_[static_cast<std::size_t>(k)].points;
@@ -126,23 +150,36 @@ bool GraphMapper::closeLoop(int k) {
   aligned = align(old_points, points, aligned, config_.icp.max_correspondence, &covariance, &goodness);
   const double fraction = matchFraction(old_points, points, aligned);
   if (goodness < kMinGoodness || fraction < config_.graph.loop_min_match) return false;
-  // A corridor matches as well a little further along: such a match fixes no position.
-  double ambiguity = 0.0;
-  for (const core::Pose2& shift : {core::Pose2{kProbe, 0, 0}, core::Pose2{-kProbe, 0, 0}, core::Pose2{0, kProbe, 0}, core::Pose2{0, -kProbe, 0},
-                                   core::Pose2{0, 0, kProbeTurn}, core::Pose2{0, 0, -kProbeTurn}})
-    ambiguity = std::max(ambiguity, matchFraction(old_points, points, compose(aligned, shift)) / fraction);
-  // ... and a correction larger than the front end can have drifted since is a wrong match.
+  auto ratio = [&](const core::Pose2& shift) { return matchFraction(old_points, points, compose(aligned, shift)) / fraction; };
+  // A turn that fits as well: the match fixes nothing.
+  if (std::max(ratio({0, 0, kProbeTurn}), ratio({0, 0, -kProbeTurn})) > kMaxAmbiguity) return false;
+  // The direction along which a shift fits best (a corridor's axis), and the one across it.
+  double slide = 0.0, slide_angle = 0.0;
+  for (int i = 0; i < kProbeDirections; ++i) {
+    const double a = M_PI * i / kProbeDirections, c = kProbe * std::cos(a), s = kProbe * std::sin(a);
+    const double r = std::max(ratio({c, s, 0}), ratio({-c, -s, 0}));
+    if (r > slide) {
+      slide = r;
+      slide_angle = a;
+    }
+  }
+  edge->information = edgeInformation();
+  if (slide > kMaxAmbiguity) {
+    const double a = slide_angle + M_PI / 2, c = kProbe * std::cos(a), s = kProbe * std::sin(a);
+    if (std::max(ratio({c, s, 0}), ratio({-c, -s, 0})) > kMaxAmbiguity) return false;  // open space: nothing fixed
+    // A corridor: the match fixes the position across it and the heading, not along it.
+    Eigen::Matrix2d r;
+    r << std::cos(slide_angle), -std::sin(slide_angle), std::sin(slide_angle), std::cos(slide_angle);
+    const Eigen::Matrix2d local = Eigen::Vector2d(1.0 / (kAlongCorridor * kAlongCorridor), 1.0 / (0.05 * 0.05)).asDiagonal();
+    edge->information.topLeftCorner<2, 2>() = r * local * r.transpose();
+  }
+  // A correction larger than the front end can have drifted since is a wrong match.
   const double path = path_[static_cast<std::size_t>(k)] - path_[static_cast<std::size_t>(best)];
-  if (ambiguity > kMaxAmbiguity || travel(aligned, current) > std::max(0.2, kMaxDrift * path)) return false;
-  PoseGraphEdge edge;
-  edge.from = best;
-  edge.to = k;
-  edge.measurement = compose(inverse(graph_.nodes()[static_cast<std::size_t>(best)]), aligned);
-  edge.information = edgeInformation();
-  edge.robust = true;
-  graph_.addEdge(edge);
-  graph_.optimize(10);
-  ++loops_;
+  if (travel(aligned, current) > std::max(0.2, kMaxDrift * path)) return false;
+  edge->from = best;
+  edge->to = k;
+  edge->measurement = compose(inverse(graph_.nodes()[static_cast<std::size_t>(best)]), aligned);
+  edge->robust = true;
   return true;
 }
 

@@ -1,12 +1,14 @@
 // Mapping that closes loops: a pose graph of keyframes. Each scan is aligned by ICP (MRPT's
 // CICP) against the points of the last keyframes, from the odometry-predicted pose; every
 // graph/keyframe_travel of travel (or 0.35 rad of turn) it becomes a keyframe, joined to the
-// previous one by the aligned motion. A new keyframe is then matched against old keyframes
-// within graph/loop_radius (at least graph/loop_min_gap keyframes back): an ICP alignment on
-// which at least graph/loop_min_match of its points lie within match_distance of the old
-// keyframes' points, that fits clearly worse when shifted 0.3 m or turned 0.1 rad (not a
-// corridor's slide) and corrects no more than the front end can have drifted, is a loop edge
-// (Huber-weighted), and the graph is optimised (PoseGraph).
+// previous one by the aligned motion. A new keyframe is then matched against the 3 nearest old
+// places within graph/loop_radius (at least graph/loop_min_gap keyframes back): an ICP alignment
+// on which at least graph/loop_min_match of its points lie within match_distance of the old
+// keyframes' points, that fits clearly worse when turned 0.1 rad and corrects no more than the
+// front end can have drifted, is a loop edge (Huber-weighted). When shifting it 0.3 m fits as
+// well in one direction only (a corridor), the edge fixes the position across that direction
+// and the heading, not along it; when in two directions, it is refused. The graph is then
+// optimised (PoseGraph).
 // The map is drawn from the optimised keyframe poses. Not thread-safe: one caller.
 #pragma once
 
@@ -61,6 +63,8 @@ class GraphMapper {
                        const core::Pose2& pose) const;
   void addKeyframe(const RangeScan& scan, const std::vector<Eigen::Vector2d>& points);
   bool closeLoop(int keyframe);
+  // ICP of keyframe k against old keyframe `old` and its neighbours; true and the edge when it is a loop.
+  bool matchLoop(int k, int old, PoseGraphEdge* edge) const;
 
   LocalizationConfig config_;
   PoseGraph graph_;
