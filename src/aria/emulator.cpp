@@ -50,12 +50,12 @@ void RobotEmulator::close() {
   motors_ = false;
   sonar_on_ = true;
   setTarget(0.0, 0.0);
-  max_v_ = options_.robot.max_velocity;
-  max_w_ = options_.robot.max_rot_velocity;
-  accel_ = options_.robot.trans_accel;
-  decel_ = options_.robot.trans_decel;
-  rot_accel_ = options_.robot.rot_accel;
-  rot_decel_ = options_.robot.rot_decel;
+  max_v_ = options_.robot.dynamics.max_velocity;
+  max_w_ = options_.robot.dynamics.max_rot_velocity;
+  accel_ = options_.robot.dynamics.trans_accel;
+  decel_ = options_.robot.dynamics.trans_decel;
+  rot_accel_ = options_.robot.dynamics.rot_accel;
+  rot_decel_ = options_.robot.dynamics.rot_decel;
   watchdog_tripped_ = false;
   ++counters_.closes;
 }
@@ -136,10 +136,10 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       if (value < 0) decel_ = -value * 1e-3;
       break;
     case Command::kSetV:
-      if (value > 0) max_v_ = std::min(value * 1e-3, options_.robot.max_velocity);
+      if (value > 0) max_v_ = std::min(value * 1e-3, options_.robot.dynamics.max_velocity);
       break;
     case Command::kSetRV:
-      if (value > 0) max_w_ = std::min(value * kDegToRad, options_.robot.max_rot_velocity);
+      if (value > 0) max_w_ = std::min(value * kDegToRad, options_.robot.dynamics.max_rot_velocity);
       break;
     case Command::kSetRA:
       if (value > 0) rot_accel_ = value * kDegToRad;
@@ -227,11 +227,11 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       c.robot_type = "Pioneer";
       c.subtype = options_.robot.model;
       c.serial = "EMU0001";
-      c.rot_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.max_rot_velocity / kDegToRad));
-      c.trans_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.max_velocity * 1e3));
+      c.rot_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.dynamics.max_rot_velocity / kDegToRad));
+      c.trans_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.dynamics.max_velocity * 1e3));
       c.rot_acc_top = c.trans_acc_top = 0;
       c.name = options_.name;
-      c.sip_cycle_ms = static_cast<std::uint8_t>(std::lround(options_.robot.sip_cycle * 1e3));
+      c.sip_cycle_ms = static_cast<std::uint8_t>(std::lround(options_.robot.dynamics.cycle * 1e3));
       c.watchdog = static_cast<std::uint16_t>(std::lround(options_.robot.watchdog * 1e3));
       c.rot_vel_max = static_cast<std::uint16_t>(std::lround(max_w_ / kDegToRad));
       c.trans_vel_max = static_cast<std::uint16_t>(std::lround(max_v_ * 1e3));
@@ -281,8 +281,8 @@ void RobotEmulator::stepPhysics(double dt) {
   // Wheel-speed limit: |v| + b|w| <= max wheel speed, scaled radially.
   const double b = options_.robot.halfTrack();
   const double wheel = std::abs(v_) + b * std::abs(w_);
-  if (wheel > options_.robot.max_velocity) {
-    const double s = options_.robot.max_velocity / wheel;
+  if (wheel > options_.robot.dynamics.max_velocity) {
+    const double s = options_.robot.dynamics.max_velocity / wheel;
     v_ *= s;
     w_ *= s;
   }
@@ -335,8 +335,8 @@ std::vector<std::uint8_t> RobotEmulator::advance(double now) {
   stepTo(now);
   if (!open_) return {};
   if (now < next_sip_) return {};
-  next_sip_ += options_.robot.sip_cycle;
-  if (next_sip_ <= now) next_sip_ = now + options_.robot.sip_cycle;  // fell behind: do not burst
+  next_sip_ += options_.robot.dynamics.cycle;
+  if (next_sip_ <= now) next_sip_ = now + options_.robot.dynamics.cycle;  // fell behind: do not burst
   ++counters_.sips_sent;
   return makeSip();
 }

@@ -97,7 +97,7 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   reset_srv_ = nh_.advertiseService("reset_odometry", &AmigobotDriver::resetOdometry, this);
   updater_.setHardwareID("amigobot " + params_.client.port);
   updater_.add("AmigoBot driver", this, &AmigobotDriver::diagnose);
-  sip_rate_ = std::make_unique<RateMonitor>("SIP rate", "SIP rate [Hz]", 0.5 / params_.client.robot.sip_cycle,
+  sip_rate_ = std::make_unique<RateMonitor>("SIP rate", "SIP rate [Hz]", 0.5 / params_.client.robot.dynamics.cycle,
                                             std::numeric_limits<double>::infinity(), 0.0, 1);
   diagnostics_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.force_update(); });
   if (params_.publish_sonar_tf) publishSonarTransforms();
@@ -112,7 +112,7 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   });
   client_->setSipCallback([this](const aria::RobotState& state) { onSip(state); });
   client_->start();
-  link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.sip_cycle), [this](const ros::TimerEvent&) { checkLink(); });
+  link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.dynamics.cycle), [this](const ros::TimerEvent&) { checkLink(); });
   master_ = MasterWatch::shared();
   master_timer_ = nh_.createWallTimer(ros::WallDuration(MasterWatch::kPollPeriod), [this](const ros::WallTimerEvent&) { checkMaster(); });
   cmd_vel_lock_ = std::make_unique<core::CommandLock>(params_.cmd_vel_source, kCommandLockRelease);

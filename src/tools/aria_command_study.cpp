@@ -26,7 +26,7 @@ Result run(const core::Reference& ref, std::optional<aria::CommandMode> mode, do
   const core::ControllerConfig config;  // the paper's experiment on an AmigoBot
   core::PerformanceController controller(config);
   const aria::RobotParams robot = aria::RobotParams::amigo();
-  const core::DiamondSet diamond(config.v_max, config.w_max);
+  const core::DiamondSet diamond = config.diamond();
   const core::ReferenceState start = ref.at(0.0);
   const double heading = std::atan2(start.velocity.y(), start.velocity.x());
   core::Pose2 pose{start.position.x() - config.offset * std::cos(heading),
