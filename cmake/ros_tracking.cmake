@@ -2,8 +2,8 @@
 # tables through it) and the one dynamic_reconfigure mapping over any field table, the tracking nodelet amigobot_tracking/Tracking and tracking_node over
 # the core, and the reference publisher (a target for simulation and the demo).
 amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp src/ros/param_aliases.cpp src/ros/reconfigure_mapping.cpp
-  src/ros/xmlrpc_call.cpp src/ros/master_watch.cpp)
-target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core ${catkin_LIBRARIES})
+  src/ros/xmlrpc_call.cpp src/ros/master_watch.cpp src/ros/robot_source.cpp)
+target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core amigobot_tracking_aria ${catkin_LIBRARIES})
 
 amigobot_add_library(amigobot_tracking_ros
   src/ros/conversions.cpp

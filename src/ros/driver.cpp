@@ -34,8 +34,6 @@ const core::FieldTable<DriverParams>& driverFields() {
     using D = DriverParams;
     using core::field;
     core::FieldTable<D> t = {
-        field("robot_model", &D::robot_model, "-", "built-in robot parameters", core::oneOf({"amigo", "amigo-sh"})),
-        field("robot_params", &D::robot_params, "-", "robot YAML (config/robots/); overrides robot_model"),
         field("command_mode", &D::command_mode, "-", "VEL+RVEL, or VEL2 (20 mm/s steps: too coarse)",
               core::oneOf({"vel_rvel", "vel2"})),
         field("odom_frame", &D::odom_frame, "-", "odometry frame"),
@@ -54,6 +52,7 @@ const core::FieldTable<DriverParams>& driverFields() {
         field("master_timeout", &D::master_timeout, "s",
               "ROS master unreachable this long: stop, motors disabled until enable_motors", core::boundedTimeout()),
     };
+    core::include(&t, "", &D::robot, robotSourceFields());
     core::include(&t, "", &D::client, aria::clientFields());
     return t;
   }();
@@ -73,12 +72,13 @@ DriverParams loadDriverParams(const ros::NodeHandle& pnh) {
   DriverParams p;
   const std::string error = readFields(pnh, driverFields(), &p, "", rosAriaAliases());
   if (!error.empty()) throw std::runtime_error(error);
-  try {
-    p.client.robot = p.robot_params.empty() ? aria::builtinRobotParams(p.robot_model)
-                                            : aria::loadRobotParams(p.robot_params);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("~robot_model/~robot_params: ") + e.what());
-  }
+  p.client.robot = loadRobot(p.robot);
+  // The diamond's home is the robot file; a driver limit that tightens it still works, named.
+  if (p.client.v_max > 0.0 || p.client.w_max > 0.0)
+    ROS_WARN_STREAM_NAMED("driver", "~v_max " << p.client.v_max << " / ~w_max " << p.client.w_max
+                                              << " (0 = the robot's) tighten the robot's diamond (" << p.client.robot.v_max
+                                              << ", " << p.client.robot.w_max << ") of " << p.client.robot.origin()
+                                              << "; the diamond is set there, these may only make it smaller");
   p.client.command_mode = *aria::parseCommandMode(p.command_mode);  // a choice of the table
   const std::string invalid = p.validate();
   if (!invalid.empty()) throw std::runtime_error("~" + invalid);
