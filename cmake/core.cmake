@@ -18,6 +18,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/recommended_law.cpp
   src/core/controller_config.cpp
   src/core/field_table.cpp
+  src/core/robot_description.cpp
   src/core/input_file.cpp
   src/core/error_text.cpp
   src/core/unicycle.cpp

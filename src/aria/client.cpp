@@ -46,7 +46,7 @@ AriaClient::AriaClient(ClientConfig config, LogFunction log)
       ack_watch_(kAckProbePeriod, config_.command_ack_timeout, kAckProbeSupportWait) {
   const std::string error = config_.validate();
   if (!error.empty()) throw std::invalid_argument("AriaClient: " + error);
-  diamond_ = core::DiamondSet(config_.v_max, config_.w_max);
+  diamond_ = config_.diamond();
   sonar_ranges_.assign(config_.robot.sonars.size(), std::nan(""));
 }
 

@@ -15,8 +15,9 @@ const core::FieldTable<ClientConfig>& clientFields() {
   static const core::FieldTable<C> table = {
       field("port", &C::port, "-", "serial device, or host:port for TCP"),
       field("baud", &C::baud, "baud", "serial only", core::atLeast(1)),
-      live(field("v_max", &C::v_max, "m/s", "diamond half-width in v every command is checked against", positive())),
-      live(field("w_max", &C::w_max, "rad/s", "diamond half-width in omega", positive())),
+      live(field("v_max", &C::v_max, "m/s", "tightens the robot file's v_max, the diamond every command is checked against; 0 = the robot's",
+                 nonNegative())),
+      live(field("w_max", &C::w_max, "rad/s", "tightens the robot file's w_max; 0 = the robot's", nonNegative())),
       live(field("cmd_vel_timeout", &C::command_timeout, "s", "a request older than this becomes a stop; 0 = never",
                  core::boundedTimeoutOrOff())),
       field("command_refresh", &C::command_refresh, "s", "motion command re-sent at least this often", core::duration()),
@@ -52,16 +53,18 @@ const core::FieldTable<ClientConfig>& clientFields() {
   return table;
 }
 
+core::DiamondSet ClientConfig::diamond() const {
+  return core::DiamondSet(v_max > 0.0 ? v_max : robot.v_max, w_max > 0.0 ? w_max : robot.w_max);
+}
+
 std::string ClientConfig::validate() const {
   const std::string bad = core::checkFields(clientFields(), *this);
   if (!bad.empty()) return bad;
   if (port.empty()) return "port: empty (expected /dev/ttyUSB0 or host:port)";
   const std::string robot_error = robot.validate();
   if (!robot_error.empty()) return "robot." + robot_error;
-  if (v_max > robot.max_velocity) return "v_max: exceeds the robot's max_velocity " + std::to_string(robot.max_velocity);
-  if (w_max > robot.max_rot_velocity) {
-    return "w_max: exceeds the robot's max_rot_velocity " + std::to_string(robot.max_rot_velocity);
-  }
+  const std::string wider = core::diamondInsideError(robot, v_max, w_max, "v_max", "w_max", robot.origin());
+  if (!wider.empty()) return wider + ": the robot's diamond is set in its robot file, a driver limit only tightens it";
   if (command_refresh >= robot.watchdog) {
     return "command_refresh: must be well below the robot's " + std::to_string(robot.watchdog) + " s watchdog";
   }

@@ -47,7 +47,7 @@ void AriaClient::applyPendingLimits() {
     if (!limits) return;
     core::copyLiveFields(clientFields(), *limits, &config_);  // command_timeout is read under this mutex
   }
-  diamond_ = core::DiamondSet(limits->v_max, limits->w_max);
+  diamond_ = limits->diamond();
   sent_.reset();  // the next command is re-judged against the new diamond and sent
   sendAccelerations();
   log(LogLevel::kInfo, "motion limits changed: " + core::describeLiveFields(clientFields(), *limits));

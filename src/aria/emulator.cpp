@@ -21,7 +21,7 @@ RobotEmulator::RobotEmulator(EmulatorOptions options)
     : options_(std::move(options)), rng_(options_.seed), pose_(options_.initial_pose) {
   const std::string error = options_.validate();
   if (!error.empty()) throw std::invalid_argument("emulator: " + error);
-  base_.emplace(core::ActuatorLimits{}, options_.robot.halfTrack());
+  base_.emplace(options_.robot.dynamics, options_.robot.halfTrack());
   close();
   counters_.closes = 0;
   if (options_.left_open_at_baud > 0) {
@@ -42,28 +42,25 @@ void RobotEmulator::close() {
   motors_ = false;
   sonar_on_ = true;
   setTarget(0.0, 0.0);
-  max_v_ = options_.robot.max_velocity;
-  max_w_ = options_.robot.max_rot_velocity;
-  accel_ = options_.robot.trans_accel;
-  decel_ = options_.robot.trans_decel;
-  rot_accel_ = options_.robot.rot_accel;
-  rot_decel_ = options_.robot.rot_decel;
+  max_v_ = options_.robot.dynamics.max_velocity;
+  max_w_ = options_.robot.dynamics.max_rot_velocity;
+  accel_ = options_.robot.dynamics.trans_accel;
+  decel_ = options_.robot.dynamics.trans_decel;
+  rot_accel_ = options_.robot.dynamics.rot_accel;
+  rot_decel_ = options_.robot.dynamics.rot_decel;
   syncLimits();
   watchdog_tripped_ = false;
   ++counters_.closes;
 }
 
 void RobotEmulator::syncLimits() {
-  // The robot's ceilings (SETV / SETRV cut the setpoint in setTarget); the latency is the
-  // model's default until the robot description carries one.
-  core::ActuatorLimits l;
+  // The robot description's base (cycle, latency, ceilings) with the ramps SETA / SETRA set
+  // live; SETV / SETRV cut the setpoint in setTarget.
+  core::ActuatorLimits l = options_.robot.dynamics;
   l.trans_accel = accel_;
   l.trans_decel = decel_;
   l.rot_accel = rot_accel_;
   l.rot_decel = rot_decel_;
-  l.max_velocity = options_.robot.max_velocity;
-  l.max_rot_velocity = options_.robot.max_rot_velocity;
-  l.cycle = options_.robot.sip_cycle;
   base_->setLimits(l);
 }
 
@@ -144,10 +141,10 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       syncLimits();
       break;
     case Command::kSetV:
-      if (value > 0) max_v_ = std::min(value * 1e-3, options_.robot.max_velocity);
+      if (value > 0) max_v_ = std::min(value * 1e-3, options_.robot.dynamics.max_velocity);
       break;
     case Command::kSetRV:
-      if (value > 0) max_w_ = std::min(value * kDegToRad, options_.robot.max_rot_velocity);
+      if (value > 0) max_w_ = std::min(value * kDegToRad, options_.robot.dynamics.max_rot_velocity);
       break;
     case Command::kSetRA:
       if (value > 0) rot_accel_ = value * kDegToRad;
@@ -236,11 +233,11 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
       c.robot_type = "Pioneer";
       c.subtype = options_.robot.model;
       c.serial = "EMU0001";
-      c.rot_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.max_rot_velocity / kDegToRad));
-      c.trans_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.max_velocity * 1e3));
+      c.rot_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.dynamics.max_rot_velocity / kDegToRad));
+      c.trans_vel_top = static_cast<std::uint16_t>(std::lround(options_.robot.dynamics.max_velocity * 1e3));
       c.rot_acc_top = c.trans_acc_top = 0;
       c.name = options_.name;
-      c.sip_cycle_ms = static_cast<std::uint8_t>(std::lround(options_.robot.sip_cycle * 1e3));
+      c.sip_cycle_ms = static_cast<std::uint8_t>(std::lround(options_.robot.dynamics.cycle * 1e3));
       c.watchdog = static_cast<std::uint16_t>(std::lround(options_.robot.watchdog * 1e3));
       c.rot_vel_max = static_cast<std::uint16_t>(std::lround(max_w_ / kDegToRad));
       c.trans_vel_max = static_cast<std::uint16_t>(std::lround(max_v_ * 1e3));
@@ -339,8 +336,8 @@ std::vector<std::uint8_t> RobotEmulator::advance(double now) {
   stepTo(now);
   if (!open_) return {};
   if (now < next_sip_) return {};
-  next_sip_ += options_.robot.sip_cycle;
-  if (next_sip_ <= now) next_sip_ = now + options_.robot.sip_cycle;  // fell behind: do not burst
+  next_sip_ += options_.robot.dynamics.cycle;
+  if (next_sip_ <= now) next_sip_ = now + options_.robot.dynamics.cycle;  // fell behind: do not burst
   ++counters_.sips_sent;
   return makeSip();
 }

@@ -18,26 +18,81 @@ SonarPose sonarDeg(double x_mm, double y_mm, double heading_deg) {
   return {x_mm * 1e-3, y_mm * 1e-3, heading_deg * kDeg};
 }
 
-bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
+[[noreturn]] void fail(const std::string& path, const YAML::Node& at, const std::string& what) {
+  throw std::runtime_error(path + ":" + std::to_string(at.Mark().line + 1) + ": " + what);
+}
+
+core::FieldTable<RobotParams> makeRows() {
+  using P = RobotParams;
+  using core::field;
+  using core::positive;
+  core::FieldTable<P> t = {field("model", &P::model, "-", "SYNC2 subclass this set belongs to (ARIA lower-cases it)")};
+  core::includeBase(&t, core::robotDescriptionFields());
+  const core::FieldTable<P> aria = {
+      field("angle_conv_factor", &P::angle_conv_factor, "rad/unit", "THPOS scale (AngleConvFactor)", positive()),
+      field("angle_units_per_turn", &P::angle_units_per_turn, "units", "THPOS wraps modulo this many units per turn",
+            core::atLeast(8)),
+      field("dist_conv_factor", &P::dist_conv_factor, "mm/unit", "XPOS/YPOS scale (DistConvFactor)", positive()),
+      field("vel_conv_factor", &P::vel_conv_factor, "(mm/s)/unit", "L/R VEL scale (VelConvFactor)", positive()),
+      field("range_conv_factor", &P::range_conv_factor, "mm/unit", "sonar range scale (RangeConvFactor)",
+            positive()),
+      field("diff_conv_factor", &P::diff_conv_factor, "1/mm", "w = (R - L)/2 * DiffConvFactor: the wheel track",
+            positive()),
+      field("vel2_divisor", &P::vel2_divisor, "(mm/s)/unit", "VEL2 wheel unit (Vel2Divisor)", positive()),
+      field("watchdog", &P::watchdog, "s", "firmware watchdog: the robot stops after this long without a command",
+            core::duration()),
+      field("switch_to_baud", &P::switch_to_baud, "baud", "SwitchToBaudRate, a HOSTBAUD rate", core::atLeast(1)),
+      field("sonar_max_range", &P::sonar_max_range, "m", "farthest echo a transducer reports", core::boundedRadius()),
+  };
+  t.insert(t.end(), aria.begin(), aria.end());
+  return t;
+}
+
+std::vector<SonarPose> readSonars(const std::string& path, const YAML::Node& list) {
+  if (!list.IsSequence()) fail(path, list, "sonars: expected a list of {x, y, heading_deg}");
+  std::vector<SonarPose> sonars;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const YAML::Node s = list[i];
+    try {
+      sonars.push_back({s["x"].as<double>(), s["y"].as<double>(), s["heading_deg"].as<double>() * kDeg});
+    } catch (const YAML::Exception& e) {
+      fail(path, s, "sonars[" + std::to_string(i) + "]: expected x, y [m] and heading_deg (" + e.msg + ")");
+    }
+  }
+  return sonars;
+}
+
+// One scalar row: the text parsed as the row's type, then its bounds.
+void readRow(const std::string& path, const core::Field<RobotParams>& row, const YAML::Node& node, RobotParams* p) {
+  core::FieldValue value;
+  if (!node.IsScalar() || !core::parseValue(row.type, node.Scalar(), &value))
+    fail(path, node, row.key + ": expected " + core::typeName(row.type) +
+                         (node.IsScalar()  ? ", got '" + node.Scalar() + "'"
+                          : node.IsNull() ? ", got nothing"
+                                          : ", got a list or mapping"));
+  const std::string why = core::checkValue(row.type, row.bounds, value);
+  if (!why.empty()) fail(path, node, row.key + ": " + why);
+  row.set(*p, value);
+}
 
 }  // namespace
 
+const core::FieldTable<RobotParams>& robotParamsFields() {
+  static const core::FieldTable<RobotParams> table = makeRows();
+  return table;
+}
+
+const std::vector<std::string>& robotParamsListKeys() {
+  static const std::vector<std::string> keys = {"sonars", "sonar_polling"};
+  return keys;
+}
+
 std::string RobotParams::validate() const {
-  const std::pair<const char*, double> positive[] = {
-      {"robot_radius", robot_radius},     {"robot_width", robot_width},
-      {"robot_length", robot_length},     {"angle_conv_factor", angle_conv_factor},
-      {"dist_conv_factor", dist_conv_factor}, {"vel_conv_factor", vel_conv_factor},
-      {"range_conv_factor", range_conv_factor}, {"diff_conv_factor", diff_conv_factor},
-      {"vel2_divisor", vel2_divisor},     {"max_velocity", max_velocity},
-      {"max_rot_velocity", max_rot_velocity}, {"trans_accel", trans_accel},
-      {"trans_decel", trans_decel},       {"rot_accel", rot_accel},
-      {"rot_decel", rot_decel},           {"sip_cycle", sip_cycle},
-      {"watchdog", watchdog},             {"sonar_max_range", sonar_max_range}};
-  for (const auto& [name, value] : positive) {
-    if (!positiveFinite(value)) return std::string(name) + ": must be positive and finite, got " + std::to_string(value);
-  }
+  const std::string bad = core::checkFields(robotParamsFields(), *this);
+  if (!bad.empty()) return bad;
+  const std::string description = RobotDescription::validate();
+  if (!description.empty()) return description;
   if (model.empty()) return "model: must not be empty";
-  if (angle_units_per_turn < 8) return "angle_units_per_turn: must be at least 8, got " + std::to_string(angle_units_per_turn);
   if (hostBaudIndex(switch_to_baud) < 0) {
     return "switch_to_baud: must be a HOSTBAUD rate (9600, 19200, 38400, 57600, 115200), got " +
            std::to_string(switch_to_baud);
@@ -55,6 +110,10 @@ std::string RobotParams::validate() const {
     }
   }
   return {};
+}
+
+std::string RobotParams::origin() const {
+  return file.empty() ? "built-in " + model + " set, config/robots/" + model + ".yaml" : file;
 }
 
 RobotParams RobotParams::amigo() {
@@ -94,65 +153,28 @@ RobotParams loadRobotParams(const std::string& path) {
     throw std::runtime_error(path + ":" + std::to_string(big->node.Mark().line + 1) + ": " + big->reason);
   if (!root.IsMap()) throw std::runtime_error(path + ": expected a map of robot parameters");
   RobotParams p = RobotParams::amigo();
-  auto get = [&](const char* key, auto& field) {
-    const YAML::Node node = root[key];
-    if (!node) return;
-    try {
-      field = node.as<std::decay_t<decltype(field)>>();
-    } catch (const YAML::Exception& e) {
-      throw std::runtime_error(path + ":" + std::to_string(node.Mark().line + 1) + ": " + key + ": bad value (" +
-                               e.msg + ")");
-    }
-  };
-  get("model", p.model);
-  get("robot_radius", p.robot_radius);
-  get("robot_width", p.robot_width);
-  get("robot_length", p.robot_length);
-  get("angle_conv_factor", p.angle_conv_factor);
-  get("angle_units_per_turn", p.angle_units_per_turn);
-  get("dist_conv_factor", p.dist_conv_factor);
-  get("vel_conv_factor", p.vel_conv_factor);
-  get("range_conv_factor", p.range_conv_factor);
-  get("diff_conv_factor", p.diff_conv_factor);
-  get("vel2_divisor", p.vel2_divisor);
-  get("max_velocity", p.max_velocity);
-  get("max_rot_velocity", p.max_rot_velocity);
-  get("trans_accel", p.trans_accel);
-  get("trans_decel", p.trans_decel);
-  get("rot_accel", p.rot_accel);
-  get("rot_decel", p.rot_decel);
-  get("sip_cycle", p.sip_cycle);
-  get("watchdog", p.watchdog);
-  get("switch_to_baud", p.switch_to_baud);
-  get("sonar_max_range", p.sonar_max_range);
-  get("sonar_polling", p.sonar_polling);
-  if (const YAML::Node sonars = root["sonars"]) {
-    if (!sonars.IsSequence()) throw std::runtime_error(path + ": sonars: expected a list of {x, y, heading_deg}");
-    p.sonars.clear();
-    for (std::size_t i = 0; i < sonars.size(); ++i) {
-      const YAML::Node s = sonars[i];
-      try {
-        p.sonars.push_back({s["x"].as<double>(), s["y"].as<double>(), s["heading_deg"].as<double>() * kDeg});
-      } catch (const YAML::Exception& e) {
-        throw std::runtime_error(path + ":" + std::to_string(s.Mark().line + 1) + ": sonars[" + std::to_string(i) +
-                                 "]: expected x, y [m] and heading_deg (" + e.msg + ")");
-      }
-    }
-  }
+  std::vector<std::string> known = robotParamsListKeys();
+  for (const auto& row : robotParamsFields()) known.push_back(row.key);
   for (auto it = root.begin(); it != root.end(); ++it) {
-    static const char* known[] = {"model", "robot_radius", "robot_width", "robot_length", "angle_conv_factor",
-                                  "angle_units_per_turn", "dist_conv_factor", "vel_conv_factor",
-                                  "range_conv_factor", "diff_conv_factor", "vel2_divisor", "max_velocity",
-                                  "max_rot_velocity", "trans_accel", "trans_decel", "rot_accel", "rot_decel",
-                                  "sip_cycle", "watchdog", "switch_to_baud", "sonars", "sonar_max_range",
-                                  "sonar_polling"};
-    if (!it->first.IsScalar())
-      throw std::runtime_error(path + ":" + std::to_string(it->first.Mark().line + 1) + ": a key must be a word, not a list or mapping");
+    if (!it->first.IsScalar()) fail(path, it->first, "a key must be a word, not a list or mapping");
     const std::string key = it->first.Scalar();
-    bool found = false;
-    for (const char* k : known) found = found || key == k;
-    if (!found) throw std::runtime_error(path + ":" + std::to_string(it->first.Mark().line + 1) + ": unknown key '" + key + "'");
+    const YAML::Node value = it->second;
+    if (const core::Field<RobotParams>* row = core::findField(robotParamsFields(), key)) {
+      readRow(path, *row, value, &p);
+    } else if (key == "sonars") {
+      p.sonars = readSonars(path, value);
+    } else if (key == "sonar_polling") {
+      try {
+        p.sonar_polling = value.as<std::vector<int>>();
+      } catch (const YAML::Exception& e) {
+        fail(path, value, "sonar_polling: expected a list of transducer numbers (" + e.msg + ")");
+      }
+    } else {
+      const std::string nearest = core::unknownKeys({key}, known).front().nearest;
+      fail(path, it->first, "unknown key '" + key + "'" + (nearest.empty() ? "" : " (nearest: " + nearest + ")"));
+    }
   }
+  p.file = path;
   const std::string error = p.validate();
   if (!error.empty()) throw std::runtime_error(path + ": " + error);
   return p;

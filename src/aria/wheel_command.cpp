@@ -47,13 +47,13 @@ std::optional<QuantizedCommand> quantizeCommand(const core::Twist2& desired, Com
   double second_scale = 0.0;
   if (mode == CommandMode::kVel2) {
     const core::WheelSpeeds w = core::toWheelSpeeds(*inside, params.halfTrack());
-    const int limit = std::min(127, static_cast<int>(params.max_velocity * 1e3 / params.vel2_divisor));
+    const int limit = std::min(127, static_cast<int>(params.dynamics.max_velocity * 1e3 / params.vel2_divisor));
     cmd.first = towardZero(w.left * 1e3 / params.vel2_divisor, limit);
     cmd.second = towardZero(w.right * 1e3 / params.vel2_divisor, limit);
     first_scale = second_scale = 1.0;
   } else {
-    cmd.first = towardZero(inside->v * 1e3, static_cast<int>(params.max_velocity * 1e3));
-    cmd.second = towardZero(inside->omega / kRadPerDeg, static_cast<int>(params.max_rot_velocity / kRadPerDeg));
+    cmd.first = towardZero(inside->v * 1e3, static_cast<int>(params.dynamics.max_velocity * 1e3));
+    cmd.second = towardZero(inside->omega / kRadPerDeg, static_cast<int>(params.dynamics.max_rot_velocity / kRadPerDeg));
     first_scale = 1e-3 / diamond.vMax();
     second_scale = kRadPerDeg / diamond.wMax();
   }

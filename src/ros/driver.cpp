@@ -37,8 +37,6 @@ const core::FieldTable<DriverParams>& driverFields() {
     using D = DriverParams;
     using core::field;
     core::FieldTable<D> t = {
-        field("robot_model", &D::robot_model, "-", "built-in robot parameters", core::oneOf({"amigo", "amigo-sh"})),
-        field("robot_params", &D::robot_params, "-", "robot YAML (config/robots/); overrides robot_model"),
         field("command_mode", &D::command_mode, "-", "VEL+RVEL, or VEL2 (20 mm/s steps: too coarse)",
               core::oneOf({"vel_rvel", "vel2"})),
         field("odom_frame", &D::odom_frame, "-", "odometry frame"),
@@ -60,6 +58,7 @@ const core::FieldTable<DriverParams>& driverFields() {
                          "test aid, 0 on a robot: added to every published stamp (emulates a clock this far ahead/behind)",
                          core::interval(-kMaxStampOffset, false, kMaxStampOffset, false))),
     };
+    core::include(&t, "", &D::robot, robotSourceFields());
     core::include(&t, "", &D::client, aria::clientFields());
     return t;
   }();
@@ -79,12 +78,13 @@ DriverParams loadDriverParams(const ros::NodeHandle& pnh) {
   DriverParams p;
   const std::string error = readFields(pnh, driverFields(), &p, "", rosAriaAliases());
   if (!error.empty()) throw std::runtime_error(error);
-  try {
-    p.client.robot = p.robot_params.empty() ? aria::builtinRobotParams(p.robot_model)
-                                            : aria::loadRobotParams(p.robot_params);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("~robot_model/~robot_params: ") + e.what());
-  }
+  p.client.robot = loadRobot(p.robot);
+  // The diamond's home is the robot file; a driver limit that tightens it still works, named.
+  if (p.client.v_max > 0.0 || p.client.w_max > 0.0)
+    ROS_WARN_STREAM_NAMED("driver", "~v_max " << p.client.v_max << " / ~w_max " << p.client.w_max
+                                              << " (0 = the robot's) tighten the robot's diamond (" << p.client.robot.v_max
+                                              << ", " << p.client.robot.w_max << ") of " << p.client.robot.origin()
+                                              << "; the diamond is set there, these may only make it smaller");
   p.client.command_mode = *aria::parseCommandMode(p.command_mode);  // a choice of the table
   const std::string invalid = p.validate();
   if (!invalid.empty()) throw std::runtime_error("~" + invalid);
@@ -103,7 +103,7 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   reset_srv_ = nh_.advertiseService("reset_odometry", &AmigobotDriver::resetOdometry, this);
   updater_.setHardwareID("amigobot " + params_.client.port);
   updater_.add("AmigoBot driver", this, &AmigobotDriver::diagnose);
-  sip_rate_ = std::make_unique<RateMonitor>("SIP rate", "SIP rate [Hz]", 0.5 / params_.client.robot.sip_cycle,
+  sip_rate_ = std::make_unique<RateMonitor>("SIP rate", "SIP rate [Hz]", 0.5 / params_.client.robot.dynamics.cycle,
                                             std::numeric_limits<double>::infinity(), 0.0, 1);
   diagnostics_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.force_update(); });
   if (params_.publish_sonar_tf) publishSonarTransforms();
@@ -118,7 +118,7 @@ AmigobotDriver::AmigobotDriver(ros::NodeHandle nh, ros::NodeHandle pnh)
   });
   client_->setSipCallback([this](const aria::RobotState& state) { onSip(state); });
   client_->start();
-  link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.sip_cycle), [this](const ros::TimerEvent&) { checkLink(); });
+  link_timer_ = nh_.createTimer(ros::Duration(params_.client.robot.dynamics.cycle), [this](const ros::TimerEvent&) { checkLink(); });
   master_ = MasterWatch::shared();
   master_timer_ = nh_.createWallTimer(ros::WallDuration(MasterWatch::kPollPeriod), [this](const ros::WallTimerEvent&) { checkMaster(); });
   cmd_vel_lock_ = std::make_unique<core::CommandLock>(params_.cmd_vel_source, kCommandLockRelease);

@@ -18,7 +18,7 @@ namespace {
 
 core::SupervisorConfig supervisorConfigOf(const TrackingNodeConfig& node) {
   core::SupervisorConfig c;
-  c.max_speed = node.robot_v_max;
+  c.max_speed = node.description.dynamics.max_velocity;
   c.pose_timeout = node.pose_timeout;
   c.scan_timeout = node.scan_timeout;
   c.require_scan = node.require_scan;

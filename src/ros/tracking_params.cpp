@@ -48,7 +48,8 @@ const core::FieldTable<TrackingNodeConfig>& trackingNodeFields() {
   using N = TrackingNodeConfig;
   using core::field;
   using core::positive;
-  static const core::FieldTable<N> table = {
+  static const core::FieldTable<N> table = [] {
+    core::FieldTable<N> t = {
       field("global_frame", &N::global_frame, "-", "frame of poses, obstacles and markers"),
       field("base_frame", &N::base_frame, "-", "the robot being controlled (REP 105)"),
       field("target_frame", &N::target_frame, "-", "the tracked target (reference publisher or another robot)"),
@@ -73,8 +74,6 @@ const core::FieldTable<TrackingNodeConfig>& trackingNodeFields() {
       field("autostart", &N::autostart, "-", "enable tracking at start (else call ~enable)"),
       field("clicked_point_radius", &N::clicked_point_radius, "m", "radius of a disk added by rviz Publish Point",
             core::boundedRadius()),
-      field("robot_v_max", &N::robot_v_max, "m/s", "the robot's own limit: v_max never exceeds it", positive()),
-      field("robot_w_max", &N::robot_w_max, "rad/s", "the robot's own limit: w_max never exceeds it", positive()),
       field("target_exclusion_radius", &N::target_exclusion_radius, "m",
             "laser disks this close to the target are the followed robot (0 = off)", core::boundedRadiusOrOff()),
       field("resume_v_accel", &N::resume_v_accel, "m/s^2", "after a stop, v leaves zero at most this fast",
@@ -83,7 +82,10 @@ const core::FieldTable<TrackingNodeConfig>& trackingNodeFields() {
             positive()),
       field("robot_description_param", &N::robot_description_param, "-", "parameter holding the URDF"),
       field("urdf_offset_link", &N::urdf_offset_link, "-", "URDF link fixed ahead of base_frame: its x is r"),
-  };
+    };
+    core::include(&t, "", &N::robot, robotSourceFields());
+    return t;
+  }();
   return table;
 }
 
@@ -124,7 +126,25 @@ std::string readUrdfGeometry(const std::string& xml, const std::string& base_lin
 
 std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* c) {
   ROS_INFO_STREAM_NAMED("tracking", "tracking node parameters:");
-  return readParams(pnh, trackingNodeFields(), c);
+  std::string error = readParams(pnh, trackingNodeFields(), c);
+  if (!error.empty()) return error;
+  try {
+    c->description = loadRobot(c->robot);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return retiredRobotLimitError(pnh, *c);
+}
+
+std::string retiredRobotLimitError(const ros::NodeHandle& pnh, const TrackingNodeConfig& node) {
+  for (const char* key : {"robot_v_max", "robot_w_max"}) {
+    noteParamKey(pnh, key);
+    if (pnh.hasParam(key))
+      return std::string("~") + key + ": no longer a parameter: the robot's limits are v_max and w_max of its robot file (" +
+             node.description.origin() +
+             ", ~robot_params); set them there, or tighten tracking's own ~v_max/~w_max";
+  }
+  return "";
 }
 
 std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeConfig& node,
@@ -150,6 +170,9 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
     ROS_INFO_STREAM_NAMED("tracking", "  no URDF '" << description_param << "' on the parameter server"
                                                       << ": robot_radius and offset come from parameters/defaults");
   }
+  // Tracking's diamond defaults to the robot's (its robot file), and may only be smaller.
+  c->v_max = node.description.v_max;
+  c->w_max = node.description.w_max;
   const std::string error = readParams(pnh, core::controllerFields(), c);
   if (!error.empty()) return error;
   std::ostringstream err;
@@ -164,13 +187,7 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
 }
 
 std::string robotLimitError(const TrackingNodeConfig& node, const core::ControllerConfig& c) {
-  std::ostringstream err;
-  if (c.v_max > node.robot_v_max) {
-    err << "v_max must be <= robot_v_max = " << node.robot_v_max << " m/s, got " << c.v_max;
-  } else if (c.w_max > node.robot_w_max) {
-    err << "w_max must be <= robot_w_max = " << node.robot_w_max << " rad/s, got " << c.w_max;
-  }
-  return err.str();
+  return core::diamondInsideError(node.description, c.v_max, c.w_max, "v_max", "w_max", node.description.origin());
 }
 
 std::string loadObstacleTrackerConfig(const ros::NodeHandle& pnh, core::ObstacleTrackerConfig* c) {

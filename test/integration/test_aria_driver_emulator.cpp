@@ -27,8 +27,8 @@ std::string ptyLink(const std::string& tag) {
 
 ClientConfig clientConfig(const std::string& port) {
   ClientConfig c = emulatorClientConfig(port);
-  c.v_max = 0.5;
-  c.w_max = 2.0;
+  c.robot.v_max = 0.5;  // a robot file with a wider diamond (the driver may only tighten it)
+  c.robot.w_max = 2.0;
   return c;
 }
 

@@ -3,6 +3,9 @@
 // with --gtest_filter): keys and rate, the key timeout, a zero and the terminal restored on
 // SIGINT, and the refusals (no terminal, a bad parameter) that publish nothing.
 #include <gtest/gtest.h>
+#include <unistd.h>
+#include <cstdio>
+#include <fstream>
 
 #include <cmath>
 
@@ -146,6 +149,26 @@ TEST(KeyboardTeleopNode, RefusesWithoutTerminalOrWithBadParameterAndPublishesNot
     EXPECT_EQ(node.waitExit(30.0), 1);
     EXPECT_NE(node.output().find("~speed: must be <= speed_max"), std::string::npos) << node.output();
   }
+  // A robot file with a smaller diamond: the keys' ceilings default to it, and may not exceed it.
+  const std::string slow = "/tmp/amigobot_teleop_slow_" + std::to_string(::getpid()) + ".yaml";
+  std::ofstream(slow) << "v_max: 0.2\nw_max: 0.5\n";
+  {
+    NodeProcess node;  // the old default speed_max 0.3, above this robot's 0.2
+    node.start({KEYBOARD_TELEOP, "__name:=keyboard_teleop_wide", "_robot_params:=" + slow, "_speed_max:=0.3"},
+               NodeProcess::Terminal::kPty);
+    EXPECT_EQ(node.waitExit(30.0), 1);
+    EXPECT_NE(node.output().find("~speed_max: must be <= the robot's v_max 0.2 m/s (" + slow + "), got 0.3"),
+              std::string::npos)
+        << node.output();
+  }
+  {
+    NodeProcess node;  // no speed_max: the robot's 0.2 is the ceiling the start speed must keep
+    node.start({KEYBOARD_TELEOP, "__name:=keyboard_teleop_slow", "_robot_params:=" + slow, "_speed:=0.25"},
+               NodeProcess::Terminal::kPty);
+    EXPECT_EQ(node.waitExit(30.0), 1);
+    EXPECT_NE(node.output().find("~speed: must be <= speed_max (0.2)"), std::string::npos) << node.output();
+  }
+  std::remove(slow.c_str());
   ros::WallDuration(0.5).sleep();
   EXPECT_TRUE(log.since(t).empty());
 }

@@ -85,7 +85,7 @@ double entry(const dynamic_reconfigure::Config& config, const std::string& name)
 
 }  // namespace
 
-// The case: v_max 2, w_max 10 against a robot limit of 0.5 m/s. Before, v_max was
+// The case: v_max 2, w_max 10 against the robot file's 0.3 m/s. Before, v_max was
 // capped to robot_v_max without a word, w_max taken, and the call answered success.
 TEST(TrackingNodelet, ReconfigureBeyondTheRobotLimitIsRefusedAndFails) {
   ASSERT_TRUE(ros::service::waitForService("tracking/set_parameters", ros::Duration(kTimeout)));
@@ -105,7 +105,7 @@ TEST(TrackingNodelet, ReconfigureBeyondTheRobotLimitIsRefusedAndFails) {
   std::string printed;
   const int status = amigobot_test::runCommand("PATH=/usr/bin:$PATH rosrun dynamic_reconfigure dynparam set /tracking \"{v_max: 2.0, w_max: 10.0}\"", &printed);
   EXPECT_NE(status, 0) << printed;
-  EXPECT_NE(printed.find("robot_v_max"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("the robot's v_max"), std::string::npos) << printed;
   // A set inside the limits is taken and answered with the values in force.
   dynamic_reconfigure::Config answer;
   ASSERT_TRUE(reconfigureTracking({{"v_max", 0.25}}, &answer));

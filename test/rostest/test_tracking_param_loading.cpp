@@ -3,6 +3,11 @@
 // the shipped config files loading to what they say.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+
 #include <string>
 #include <vector>
 
@@ -26,17 +31,18 @@ TEST(TrackingParams, LoadersNameTheBadParameter) {
   pnh.deleteParam("autostart");
 
   core::ControllerConfig controller;
-  pnh.setParam("v_max", 0.9);  // above robot_v_max
+  pnh.setParam("v_max", 0.9);  // above the robot's diamond
   node = ros_layer::TrackingNodeConfig();
-  node.robot_v_max = 0.5;
-  EXPECT_NE(ros_layer::loadControllerConfig(pnh, node, &controller).find("v_max"), std::string::npos);
+  node.description.v_max = 0.5;
+  EXPECT_NE(ros_layer::loadControllerConfig(pnh, node, &controller).find("v_max: must be <= the robot's v_max 0.5"),
+            std::string::npos);
   pnh.setParam("v_max", 0.3);
   pnh.setParam("estimator/rho_o", -1.0);
   controller = core::ControllerConfig();
   EXPECT_NE(ros_layer::loadControllerConfig(pnh, node, &controller).find("rho_o"), std::string::npos);
   pnh.deleteParam("estimator");
   // Table 1's band (16 mm) at 20 Hz and 5 m/s: p_r moves up to 25 cm per period.
-  node.robot_v_max = node.robot_w_max = 5.0;
+  node.description.v_max = node.description.w_max = node.description.dynamics.max_velocity = 5.0;
   pnh.setParam("v_max", 5.0);
   pnh.setParam("w_max", 5.0);
   pnh.setParam("delta", 0.016);
@@ -46,7 +52,7 @@ TEST(TrackingParams, LoadersNameTheBadParameter) {
   EXPECT_NE(band.find("control_rate = 20"), std::string::npos) << band;
   for (const char* key : {"v_max", "w_max", "delta"}) pnh.deleteParam(key);
   node = ros_layer::TrackingNodeConfig();
-  node.robot_v_max = 0.5;
+  node.description.v_max = 0.5;
 
   core::ScanObstacleConfig scan;
   pnh.setParam("scan/max_disk_radius", 0.0);
@@ -113,9 +119,40 @@ TEST(TrackingParams, ShippedSimControllerLoads) {
   core::ControllerConfig controller;
   ASSERT_TRUE(shipped.hasParam("k_d"));
   EXPECT_EQ(ros_layer::loadNodeConfig(shipped, &node), "");
+  // Refused on the AmigoBot's file (Table 1's diamond is 17x wider); loads on a robot file that holds it.
+  EXPECT_NE(ros_layer::loadControllerConfig(shipped, node, &controller).find("v_max: must be <= the robot's v_max 0.3"),
+            std::string::npos);
+  node.description.v_max = node.description.w_max = node.description.dynamics.max_velocity = 5.0;
+  controller = core::ControllerConfig();
   EXPECT_EQ(ros_layer::loadControllerConfig(shipped, node, &controller), "");
   EXPECT_DOUBLE_EQ(controller.k_d, 3.0);
   EXPECT_DOUBLE_EQ(controller.v_max, 5.0);
   EXPECT_DOUBLE_EQ(controller.delta, 0.4);  // Table 1's 0.016 m is crossed in one 20 Hz period (1.5x jitter)
   EXPECT_DOUBLE_EQ(controller.rho_0, 1.84);
+}
+
+// The robot's limits live in its robot file: tracking's diamond defaults to it, a smaller
+// file's diamond is the ceiling, and the old ~robot_v_max is refused naming the file.
+TEST(TrackingParams, TheRobotFilesDiamondIsTrackingsDefaultAndCeiling) {
+  ros::NodeHandle pnh("~robot_file");
+  const std::string file = "/tmp/amigobot_tracking_slow_" + std::to_string(::getpid()) + ".yaml";
+  std::ofstream(file) << "v_max: 0.2\nw_max: 0.5\n";
+  pnh.setParam("robot_params", file);
+  ros_layer::TrackingNodeConfig node;
+  ASSERT_EQ(ros_layer::loadNodeConfig(pnh, &node), "");
+  core::ControllerConfig controller;
+  ASSERT_EQ(ros_layer::loadControllerConfig(pnh, node, &controller), "");
+  EXPECT_DOUBLE_EQ(controller.v_max, 0.2);
+  EXPECT_DOUBLE_EQ(controller.w_max, 0.5);
+  pnh.setParam("v_max", 0.3);  // the old default: wider than this robot's diamond
+  controller = core::ControllerConfig();
+  EXPECT_EQ(ros_layer::loadControllerConfig(pnh, node, &controller),
+            "parameter ~v_max: must be <= the robot's v_max 0.2 m/s (" + file + "), got 0.3");
+  pnh.setParam("robot_v_max", 1.0);
+  node = ros_layer::TrackingNodeConfig();
+  const std::string retired = ros_layer::loadNodeConfig(pnh, &node);
+  EXPECT_NE(retired.find("~robot_v_max: no longer a parameter"), std::string::npos) << retired;
+  EXPECT_NE(retired.find(file), std::string::npos) << retired;
+  for (const char* key : {"robot_params", "v_max", "robot_v_max"}) pnh.deleteParam(key);
+  std::remove(file.c_str());
 }

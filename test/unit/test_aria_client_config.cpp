@@ -6,6 +6,7 @@
 
 #include "amigobot_tracking/aria/client.h"
 #include "amigobot_tracking/aria/transport.h"
+#include "temp_dir.h"
 
 using namespace amigobot_tracking::aria;
 
@@ -58,9 +59,13 @@ TEST(AriaClientConfig, BadFieldsAreNamed) {
 TEST(AriaClientConfig, RunTimeLimitsAreCheckedLikeTheConfigAndNameTheField) {
   AriaClient client(ClientConfig{}, [](LogLevel, const std::string&) {});
   ClientConfig limits = client.motionLimits();
-  EXPECT_DOUBLE_EQ(limits.v_max, 0.3);
-  limits.v_max = 1.5;  // amigo max_velocity 1.0
-  EXPECT_NE(client.setMotionLimits(limits).find("v_max: exceeds"), std::string::npos);
+  EXPECT_DOUBLE_EQ(limits.v_max, 0.0);  // the robot's diamond
+  EXPECT_DOUBLE_EQ(limits.diamond().vMax(), 0.3);
+  limits.v_max = 0.35;  // above the amigo file's diamond (0.3), below its ceiling
+  EXPECT_NE(client.setMotionLimits(limits).find("v_max: must be <= the robot's v_max 0.3 m/s (built-in amigo set, "
+                                                "config/robots/amigo.yaml)"),
+            std::string::npos)
+      << client.setMotionLimits(limits);
   limits.v_max = 0.2;
   limits.rot_accel = -1.0;
   EXPECT_NE(client.setMotionLimits(limits).find("rot_accel"), std::string::npos);
@@ -86,4 +91,29 @@ TEST(AriaClientConfig, CalibrationOutsideTheFirmwareRangeIsRefused) {
   EXPECT_NE(c.validate().find("rev_count"), std::string::npos);
   c.rev_count = 16384;
   EXPECT_EQ(c.validate(), "");
+}
+
+// The diamond lives in the robot file: a file with a smaller one is what every command is
+// judged against, with no driver parameter set; a driver limit may tighten it, not widen it.
+class AriaRobotFileDiamond : public TempDirTest {};
+
+TEST_F(AriaRobotFileDiamond, IsWhatEveryCommandIsJudgedAgainst) {
+  const std::string file = write("slow.yaml", "model: amigo\nv_max: 0.2\nw_max: 0.5\n");
+  ClientConfig c;
+  c.robot = loadRobotParams(file);
+  ASSERT_EQ(c.validate(), "");
+  EXPECT_DOUBLE_EQ(c.diamond().vMax(), 0.2);
+  EXPECT_DOUBLE_EQ(c.diamond().wMax(), 0.5);
+  const auto fast = quantizeCommand({0.3, 0.0}, c.command_mode, c.robot, c.diamond());
+  ASSERT_TRUE(fast);
+  EXPECT_LE(fast->first, 200) << "VEL in mm/s";
+  const auto turn = quantizeCommand({0.0, 0.8}, c.command_mode, c.robot, c.diamond());
+  ASSERT_TRUE(turn);
+  EXPECT_LE(turn->twist.omega, 0.5 + 1e-9);
+  c.v_max = 0.1;  // tightens
+  EXPECT_EQ(c.validate(), "");
+  EXPECT_DOUBLE_EQ(c.diamond().vMax(), 0.1);
+  c.v_max = 0.3;  // the old default, now wider than this robot's diamond
+  EXPECT_EQ(c.validate(), "v_max: must be <= the robot's v_max 0.2 m/s (" + file +
+                              "), got 0.3: the robot's diamond is set in its robot file, a driver limit only tightens it");
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 
 #include "amigobot_tracking/aria/robot_params.h"
 
@@ -16,20 +17,8 @@ std::string robotFile(const std::string& model) {
 }
 
 void expectSame(const RobotParams& a, const RobotParams& b) {
-  EXPECT_EQ(a.model, b.model);
-  EXPECT_DOUBLE_EQ(a.dist_conv_factor, b.dist_conv_factor);
-  EXPECT_DOUBLE_EQ(a.vel_conv_factor, b.vel_conv_factor);
-  EXPECT_DOUBLE_EQ(a.angle_conv_factor, b.angle_conv_factor);
-  EXPECT_EQ(a.angle_units_per_turn, b.angle_units_per_turn);
-  EXPECT_DOUBLE_EQ(a.range_conv_factor, b.range_conv_factor);
-  EXPECT_DOUBLE_EQ(a.diff_conv_factor, b.diff_conv_factor);
-  EXPECT_DOUBLE_EQ(a.vel2_divisor, b.vel2_divisor);
-  EXPECT_DOUBLE_EQ(a.robot_radius, b.robot_radius);
-  EXPECT_DOUBLE_EQ(a.max_velocity, b.max_velocity);
-  EXPECT_DOUBLE_EQ(a.watchdog, b.watchdog);
-  EXPECT_DOUBLE_EQ(a.sonar_max_range, b.sonar_max_range);
+  for (const auto& row : robotParamsFields()) EXPECT_EQ(row.get(a), row.get(b)) << row.key;
   EXPECT_EQ(a.sonar_polling, b.sonar_polling);
-  EXPECT_EQ(a.switch_to_baud, b.switch_to_baud);
   ASSERT_EQ(a.sonars.size(), b.sonars.size());
   for (std::size_t i = 0; i < a.sonars.size(); ++i) {
     EXPECT_NEAR(a.sonars[i].x, b.sonars[i].x, 1e-12) << i;
@@ -96,7 +85,7 @@ TEST(AriaRobotParams, BadValuesNameTheKeyAndLine) {
 
 TEST(AriaRobotParams, ValidateNamesTheField) {
   RobotParams p = RobotParams::amigo();
-  p.sip_cycle = std::nan("");
+  p.dynamics.cycle = std::nan("");
   EXPECT_NE(p.validate().find("sip_cycle"), std::string::npos);
   p = RobotParams::amigo();
   p.angle_units_per_turn = 0;
@@ -111,4 +100,54 @@ TEST(AriaRobotParams, SonarAndBaudKeysAreCheckedByName) {
   const std::string baud = loadError("switch_to_baud: 14400\n");
   EXPECT_NE(baud.find("switch_to_baud: must be a HOSTBAUD rate"), std::string::npos) << baud;
   EXPECT_DOUBLE_EQ(RobotParams::amigo().sonar_max_range, 4.335);
+}
+
+// One table drives the loader: every row (and nothing else) is a key of the shipped files,
+// a bad key is named with its file:line and the nearest row, bounds are the table's.
+TEST(AriaRobotParams, TheFieldTableIsTheFilesKeys) {
+  for (const char* model : {"amigo", "amigo-sh"}) {
+    std::ifstream in(robotFile(model));
+    std::set<std::string> keys;
+    for (std::string line; std::getline(in, line);) {
+      const std::size_t colon = line.find(':');
+      if (line.empty() || line[0] == '#' || line[0] == ' ' || colon == std::string::npos) continue;
+      keys.insert(line.substr(0, colon));
+    }
+    std::set<std::string> rows(robotParamsListKeys().begin(), robotParamsListKeys().end());
+    for (const auto& row : robotParamsFields()) rows.insert(row.key);
+    EXPECT_EQ(keys, rows) << model;
+  }
+}
+
+TEST(AriaRobotParams, TheLoaderNamesFileLineKeyAndBound) {
+  const std::string path = writeTemp("model: amigo\ntrans_accel: 0.3\nlatncy: 0.2\n");
+  try {
+    loadRobotParams(path);
+    ADD_FAILURE() << "a misspelt key was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":3: unknown key 'latncy' (nearest: latency)");
+  }
+  std::remove(path.c_str());
+  EXPECT_NE(loadError("\nlatency: -0.1\n").find(":2: latency: must be a finite number in [0, 86400], got -0.1"), std::string::npos)
+      << loadError("\nlatency: -0.1\n");
+  EXPECT_NE(loadError("v_max: [1]\n").find(":1: v_max: expected a number, got a list or mapping"), std::string::npos);
+  EXPECT_NE(loadError("robot_radius: 1e308\n").find("robot_radius: must be a finite number in (0, 100]"), std::string::npos)
+      << loadError("robot_radius: 1e308\n");
+  // The diamond lies inside the ceiling.
+  EXPECT_NE(loadError("v_max: 1.5\n").find(": v_max: must be <= max_velocity 1 m/s, got 1.5"), std::string::npos)
+      << loadError("v_max: 1.5\n");
+}
+
+TEST(AriaRobotParams, TheDescriptionHoldsDynamicsLatencyAndDiamond) {
+  const std::string path = writeTemp("trans_accel: 0.5\nsip_cycle: 0.05\nlatency: 0.2\nv_max: 0.25\nw_max: 0.6\n");
+  const RobotParams p = loadRobotParams(path);
+  std::remove(path.c_str());
+  EXPECT_DOUBLE_EQ(p.dynamics.trans_accel, 0.5);
+  EXPECT_DOUBLE_EQ(p.dynamics.cycle, 0.05);
+  EXPECT_DOUBLE_EQ(p.dynamics.latency, 0.2);
+  EXPECT_DOUBLE_EQ(p.v_max, 0.25);
+  EXPECT_DOUBLE_EQ(p.w_max, 0.6);
+  EXPECT_EQ(p.file, path);
+  EXPECT_DOUBLE_EQ(RobotParams::amigo().dynamics.latency, 0.1);
+  EXPECT_DOUBLE_EQ(RobotParams::amigo().v_max, 0.3);
 }

@@ -74,7 +74,7 @@ TEST(AriaWheelCommand, Vel2UsesTwentyMillimetreStepsTowardZero) {
 
 TEST(AriaWheelCommand, Vel2NeverSendsPlus128) {
   RobotParams p = RobotParams::amigo();
-  p.max_velocity = 5.0;  // a fast robot: 5000 mm/s / 20 = 250 units would overflow a byte
+  p.dynamics.max_velocity = 5.0;  // a fast robot: 5000 mm/s / 20 = 250 units would overflow a byte
   const DiamondSet d(5.0, 5.0 / p.halfTrack());
   const auto cmd = quantizeCommand({4.0, 0.0}, CommandMode::kVel2, p, d);
   ASSERT_TRUE(cmd);

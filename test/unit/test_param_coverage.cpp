@@ -20,6 +20,7 @@
 #include "amigobot_tracking/localization/localization_config.h"
 #include "amigobot_tracking/ros/driver.h"
 #include "amigobot_tracking/ros/laser_scan.h"
+#include "amigobot_tracking/ros/robot_source.h"
 #include "amigobot_tracking/ros/tracking_params.h"
 #include "amigobot_tracking/teleop/joystick.h"
 #include "amigobot_tracking/teleop/keyboard.h"
@@ -197,6 +198,7 @@ TEST(ParamCoverage, EveryTeleopFieldIsInItsYamlAndTheReadme) {
   const std::set<std::string> readme = readmeNames();
   std::map<std::string, Row> rows;
   add(&rows, "keyboard_teleop/", teleop::keyboardFields());
+  add(&rows, "keyboard_teleop/", ros_layer::robotSourceFields());  // read by the program beside its table
   add(&rows, "joystick_teleop/", teleop::joystickFields());
   for (const auto& [key, row] : rows) {
     const auto it = keys.find(key);

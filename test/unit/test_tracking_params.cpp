@@ -29,8 +29,7 @@ TEST(TrackingParams, ValidateNamesTheBadField) {
       {"scan_timeout", [](TrackingNodeConfig& c) { c.scan_timeout = 1e308; }},
       {"clicked_point_radius", [](TrackingNodeConfig& c) { c.clicked_point_radius = 1e6; }},
       {"target_exclusion_radius", [](TrackingNodeConfig& c) { c.target_exclusion_radius = 101.0; }},
-      {"robot_v_max", [](TrackingNodeConfig& c) { c.robot_v_max = std::numeric_limits<double>::quiet_NaN(); }},
-      {"robot_w_max", [](TrackingNodeConfig& c) { c.robot_w_max = -2.0; }},
+      {"robot_model", [](TrackingNodeConfig& c) { c.robot.robot_model = "pioneer"; }},
       {"resume_v_accel", [](TrackingNodeConfig& c) { c.resume_v_accel = 0.0; }},
       {"resume_w_accel", [](TrackingNodeConfig& c) { c.resume_w_accel = std::numeric_limits<double>::quiet_NaN(); }},
   };

@@ -34,8 +34,10 @@ struct ClientConfig {
                                       // the link moves to robot.switch_to_baud if the robot allows
   RobotParams robot = RobotParams::amigo();
   CommandMode command_mode = CommandMode::kVelRvel;
-  double v_max = 0.3;                 // [m/s] diamond half-width in v
-  double w_max = 0.8;                 // [rad/s] diamond half-width in w
+  // The diamond every command is checked against is the robot description's (robot.v_max,
+  // robot.w_max: the robot file); these may tighten it (0 = the robot's), never widen it.
+  double v_max = 0.0;                 // [m/s] diamond half-width in v; 0 = robot.v_max
+  double w_max = 0.0;                 // [rad/s] diamond half-width in w; 0 = robot.w_max
   double command_timeout = 0.6;       // [s] a request older than this becomes a stop; 0 = never
   double command_refresh = 0.5;       // [s] motion command re-sent at least this often (watchdog 2 s)
   double min_command_interval = 0.05; // [s] at most one motion command per this (serial bandwidth)
@@ -63,6 +65,8 @@ struct ClientConfig {
   // Empty when valid, otherwise "key: reason" for the first bad field (the table's bounds,
   // then the robot's limits, its watchdog and the back-off order).
   std::string validate() const;
+  // The diamond in force: v_max/w_max where set, else the robot's.
+  core::DiamondSet diamond() const;
 };
 
 // The plain fields (robot and command_mode are chosen by name: see ros/driver.h). Keys are the

@@ -1,10 +1,13 @@
 // One robot model's parameters (AriaCoda params/<model>.p plus the firmware defaults the
-// emulator needs). Conversion factors stay in ARIA units because they are applied only at
-// the driver's edge; everything else is SI. Loaded from config/robots/<model>.yaml.
+// emulator needs): the robot description of the robot file config/robots/<model>.yaml.
+// Conversion factors stay in ARIA units because they are applied only at the driver's edge;
+// everything else is SI.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "amigobot_tracking/core/robot_description.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -15,12 +18,11 @@ struct SonarPose {
   double yaw = 0.0;  // [rad]
 };
 
-struct RobotParams {
+// The robot description (core/robot_description.h: geometry, dynamics, the diamond) plus
+// what only the ARIA driver and the robot emulator need: the protocol's conversion factors,
+// the firmware's watchdog and baud, and the sonar table.
+struct RobotParams : core::RobotDescription {
   std::string model = "amigo";       // SYNC2 subclass this set belongs to
-  // Geometry.
-  double robot_radius = 0.18;        // [m]
-  double robot_width = 0.279;        // [m]
-  double robot_length = 0.33;        // [m]
   // Conversion factors (ARIA units).
   double angle_conv_factor = 0.001534;  // [rad/unit] THPOS; 2*pi/4096
   int angle_units_per_turn = 4096;      // [units] THPOS wraps modulo this (360 for the manual's degree reading)
@@ -29,21 +31,17 @@ struct RobotParams {
   double range_conv_factor = 1.0;       // [mm/unit] sonar ranges
   double diff_conv_factor = 0.011;      // [1/mm] w = (R - L)/2 * DiffConv
   double vel2_divisor = 20.0;           // [(mm/s)/unit] VEL2 wheel units
-  // Limits (SI).
-  double max_velocity = 1.0;            // [m/s] ARIA MaxVelocity, also the wheel speed limit
-  double max_rot_velocity = 5.236;      // [rad/s] ARIA MaxRVelocity 300 deg/s
-  double trans_accel = 0.3;             // [m/s^2]
-  double trans_decel = 0.75;            // [m/s^2]
-  double rot_accel = 1.745;             // [rad/s^2] 100 deg/s^2
-  double rot_decel = 1.745;             // [rad/s^2]
   // Firmware.
-  double sip_cycle = 0.1;               // [s]
   double watchdog = 2.0;                // [s]
   int switch_to_baud = 38400;           // [baud]
   std::vector<SonarPose> sonars;
   double sonar_max_range = 4.335;       // [m] farthest echo a transducer reports (amigo.p: 4335 mm)
   std::vector<int> sonar_polling;       // POLLING firing order (transducer numbers); empty: the
                                         // firmware's own order (ARIA sends no POLLING)
+  std::string file;                     // the robot file this set was loaded from; "" = built in
+
+  // Where the set comes from, for messages: the file, or "built-in amigo set (config/robots/amigo.yaml)".
+  std::string origin() const;
 
   // Half the wheel separation b [m], from DiffConvFactor (w = (R - L) / (2 b)).
   double halfTrack() const { return 1e-3 / diff_conv_factor; }
@@ -59,6 +57,12 @@ struct RobotParams {
 // set. Throws std::runtime_error naming the file and the key on a bad value or an invalid
 // set.
 RobotParams loadRobotParams(const std::string& path);
+// The scalar rows of the robot file: the description's, then the ARIA ones (the lists
+// `sonars` and `sonar_polling` are read beside them). Drives the loader, validate() and the
+// docs' row list.
+const core::FieldTable<RobotParams>& robotParamsFields();
+// The list keys of the robot file, read beside the table's rows.
+const std::vector<std::string>& robotParamsListKeys();
 // Built-in set by model name ("amigo" | "amigo-sh"); throws std::invalid_argument otherwise.
 RobotParams builtinRobotParams(const std::string& model);
 

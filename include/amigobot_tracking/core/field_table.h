@@ -130,6 +130,18 @@ void include(FieldTable<C>* into, const std::string& prefix, S C::*member, const
   }
 }
 
+// Appends the rows of B, a base class of C that C extends (the robot description that
+// aria::RobotParams extends), keys unchanged.
+template <class C, class B>
+void includeBase(FieldTable<C>* into, const FieldTable<B>& base) {
+  for (const Field<B>& b : base) {
+    Field<C> f = {b.key, b.unit, b.meaning, b.type, b.bounds, b.live, {}, {}};
+    f.get = [get = b.get](const C& c) { return get(static_cast<const B&>(c)); };
+    f.set = [set = b.set](C& c, const FieldValue& v) { set(static_cast<B&>(c), v); };
+    into->push_back(std::move(f));
+  }
+}
+
 // "a number", "an integer", "true or false", "a text".
 std::string typeName(FieldType type);
 // "> 0", "in (0, 1]", "one of a, b", "" for any value.

@@ -26,14 +26,14 @@
 #include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/rate_monitor.h"
+#include "amigobot_tracking/ros/robot_source.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
 struct DriverParams {
   aria::ClientConfig client;
-  std::string robot_model = "amigo";     // built-in robot parameters: amigo | amigo-sh
-  std::string robot_params;              // robot YAML (config/robots/); overrides robot_model
+  RobotSource robot;                     // ~robot_model / ~robot_params (ros/robot_source.h)
   std::string command_mode = "vel_rvel";  // vel_rvel | vel2
   std::string odom_frame = "odom";
   std::string base_frame = "base_link";

@@ -11,6 +11,7 @@
 
 #include "amigobot_tracking/TrackingState.h"
 #include "amigobot_tracking/sim/metrics.h"
+#include "amigobot_tracking/core/robot_description.h"
 #include "amigobot_tracking/core/types.h"
 #include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/sim/simulator.h"
@@ -22,11 +23,11 @@ namespace ros_layer {
 
 struct RecordedRunConfig {
   world::World world;             // physical obstacles (the emulator's world file)
-  double robot_radius = 0.18;     // [m] R
+  double robot_radius = core::RobotDescription().robot_radius;  // [m] R
   double offset = 0.3;            // [m] r, offset of the controlled point p_r
   double rho_inf = 0.1;           // [m] for the plots' metadata
-  double v_max = 0.3;             // [m/s] diamond half-width
-  double w_max = 0.8;             // [rad/s]
+  double v_max = core::RobotDescription().v_max;  // [m/s] the robot's diamond (its robot file)
+  double w_max = core::RobotDescription().w_max;  // [rad/s]
   double settle_time = 0.5;       // [s] estimator transient left out of its "settled" figure
   bool body_safe = true;          // the run's body_safe: effective radius R + r around p_r
   double velocity_window = 1.0;   // [s] the target's true velocity: central difference over this span

@@ -14,6 +14,7 @@
 #include "amigobot_tracking/core/obstacle_tracker.h"
 #include "amigobot_tracking/core/scan_obstacles.h"
 #include "amigobot_tracking/core/virtual_obstacles.h"
+#include "amigobot_tracking/ros/robot_source.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -35,8 +36,10 @@ struct TrackingNodeConfig {
   double expected_scan_rate = 0.0;      // [Hz] > 0: the laser's rate, instead of each scan's scan_time
   bool autostart = false;
   double clicked_point_radius = 0.2;
-  double robot_v_max = 1.0;
-  double robot_w_max = 5.24;  // ARIA: 300 deg/s
+  RobotSource robot;  // ~robot_model / ~robot_params: the robot description (ros/robot_source.h)
+  // Read by loadNodeConfig from `robot` (not a parameter): the diamond tracking's own v_max,
+  // w_max default to and never exceed, and the ceiling the supervisor explains motion with.
+  aria::RobotParams description;
   double target_exclusion_radius = 0.0;
   // Resume ramp (core/resume_ramp.h): after a zero command of the nodelet's own (inputs lost,
   // disabled, a refused step) the command grows by at most these per second; stops are
@@ -64,6 +67,10 @@ struct UrdfGeometry {
 std::string readUrdfGeometry(const std::string& xml, const std::string& base_link, const std::string& offset_link,
                              UrdfGeometry* out);
 
+// The robot's limits were node parameters once; now they live in the robot file. Names the
+// file when ~robot_v_max or ~robot_w_max is still set (refused: a value there would widen
+// nothing and hide where the limit is), else "".
+std::string retiredRobotLimitError(const ros::NodeHandle& pnh, const TrackingNodeConfig& node);
 // Loaders: read ~params over the struct's defaults through param_reader.h, log every value,
 // return "" or "~key: reason" (wrong type, bounds, or the struct's validate()).
 std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* config);
@@ -72,8 +79,8 @@ std::string loadNodeConfig(const ros::NodeHandle& pnh, TrackingNodeConfig* confi
 // the log says which.
 std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeConfig& node,
                                  core::ControllerConfig* config);
-// "" when the diamond (v_max, w_max) lies inside the robot's (robot_v_max, robot_w_max: the
-// launch files give the driver's clamp), else "v_max must be <= robot_v_max = ..., got ...".
+// "" when the diamond (v_max, w_max) lies inside the robot's (node.description: its robot
+// file's v_max, w_max, the driver's diamond), else "v_max: must be <= the robot's v_max ...".
 // The one rule for the start-up parameters and a live reconfigure.
 std::string robotLimitError(const TrackingNodeConfig& node, const core::ControllerConfig& config);
 std::string loadScanObstacleConfig(const ros::NodeHandle& pnh, core::ScanObstacleConfig* config);

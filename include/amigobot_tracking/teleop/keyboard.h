@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/robot_description.h"
 #include "amigobot_tracking/core/types.h"
 
 namespace amigobot_tracking {
@@ -18,8 +19,10 @@ namespace teleop {
 struct KeyboardConfig {
   double speed = 0.15;        // [m/s] linear speed at start
   double turn = 0.4;          // [rad/s] angular speed at start
-  double speed_max = 0.3;     // [m/s] q/w never raise the linear speed above this
-  double turn_max = 0.8;      // [rad/s] q/e never raise the angular speed above this
+  // q/w, q/e never raise the speeds above these; keyboard_teleop sets them to the robot
+  // file's diamond before reading its parameters (may be smaller, never larger).
+  double speed_max = core::RobotDescription().v_max;  // [m/s]
+  double turn_max = core::RobotDescription().w_max;   // [rad/s]
   double rate = 20.0;         // [Hz] cmd_vel publication rate (>= 10)
   double key_timeout = 0.7;   // [s] no key for this long -> zero; 0 = never (not for a real robot)
   bool enable_motors = false; // call the driver's enable_motors service at start

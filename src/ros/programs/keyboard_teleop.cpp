@@ -14,6 +14,7 @@
 
 #include "amigobot_tracking/ros/node_command_line.h"
 #include "amigobot_tracking/ros/param_reader.h"
+#include "amigobot_tracking/ros/robot_source.h"
 #include "amigobot_tracking/ros/teleop_node.h"
 #include "amigobot_tracking/teleop/keyboard.h"
 #include "amigobot_tracking/teleop/terminal.h"
@@ -44,9 +45,26 @@ int main(int argc, char** argv) {
   ros_layer::initNode(argc, argv, "keyboard_teleop", kHelp, ros::init_options::NoSigintHandler);
   ros_layer::installStopSignals();
   ros::NodeHandle nh, pnh("~");
+  // The speed ceilings default to the robot file's diamond and may only be smaller.
+  ros_layer::RobotSource source;
+  std::string error = ros_layer::readFields(pnh, ros_layer::robotSourceFields(), &source);
+  aria::RobotParams robot;
+  if (error.empty()) {
+    try {
+      robot = ros_layer::loadRobot(source);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
   teleop::KeyboardConfig config;
-  if (!ros_layer::configLoaded("keyboard_teleop", ros_layer::readParams(pnh, teleop::keyboardFields(), &config)))
-    return 1;
+  config.speed_max = robot.v_max;
+  config.turn_max = robot.w_max;
+  if (error.empty()) error = ros_layer::readParams(pnh, teleop::keyboardFields(), &config);
+  if (error.empty()) {
+    error = core::diamondInsideError(robot, config.speed_max, config.turn_max, "speed_max", "turn_max", robot.origin());
+    if (!error.empty()) error = "~" + error;
+  }
+  if (!ros_layer::configLoaded("keyboard_teleop", error)) return 1;
   std::unique_ptr<teleop::RawTerminal> terminal;
   try {
     terminal = std::make_unique<teleop::RawTerminal>(STDIN_FILENO);
