@@ -55,6 +55,13 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(test_aria_emulator_status amigobot_tracking_aria)
   target_compile_definitions(test_aria_emulator_status PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
   add_dependencies(test_aria_emulator_status amigobot_emulator)
+
+  # One command sequence through the emulator's firmware and the simulator's body: one trajectory.
+  amigobot_add_unit_test(test_actuator_parity test/unit/test_actuator_parity.cpp)
+  target_link_libraries(test_actuator_parity amigobot_tracking_aria amigobot_tracking_sim)
+  # amigobot_sim --identify's fitter on emulator runs with non-default firmware values.
+  amigobot_add_unit_test(test_actuator_fit test/unit/test_actuator_fit.cpp)
+  target_link_libraries(test_actuator_fit amigobot_tracking_aria amigobot_tracking_sim)
 endif()
 
 # The libFuzzer target of the packet parser is built by scripts/test/run_fuzz.sh with clang.

@@ -16,6 +16,8 @@ amigobot_add_library(amigobot_tracking_sim
   src/sim/gain_tuner.cpp
   src/sim/json.cpp
   src/sim/tracking_verdict.cpp
+  src/sim/robot_description.cpp
+  src/sim/actuator_fit.cpp
 )
 target_include_directories(amigobot_tracking_sim PUBLIC include)
 target_link_libraries(amigobot_tracking_sim PUBLIC amigobot_tracking_core ${YAML_CPP_LIBRARIES} nlohmann_json::nlohmann_json)
@@ -28,7 +30,7 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(test_${unit} amigobot_tracking_sim)
   endforeach()
   # Scenario files and whole simulated runs read the shipped config/scenarios.
-  foreach(unit sim_scenario sim_closed_loop sim_extensions recommended_law field_lookahead command_rate_box gain_tuner)
+  foreach(unit sim_scenario sim_closed_loop sim_extensions recommended_law field_lookahead command_rate_box gain_tuner sim_dynamics)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_sim)
     target_compile_definitions(test_${unit} PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

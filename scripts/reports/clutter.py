@@ -127,7 +127,8 @@ def write_page(path, results, runs, seconds, quick):
          "Scenes: config/scenarios/clutter/ (body-safe, Section 5.3's gains and limits, 20 Hz). "
          "Each variant shifts the obstacles and the start, draws the target noise in [0, 3 cm] and a "
          "sample period of 50 or 100 ms (classes with a precise geometry shift their disks less: "
-         "config/scenarios/clutter_suite.txt).")
+         "config/scenarios/clutter_suite.txt). Robot dynamics: the scenes' default, the AmigoBot's "
+         "firmware (ramps, 0.1 s cycle and latency, wheel-speed limit; robot.dynamics, docs/simulation.md).")
     page("")
     page("True ASE/ISE use the true target and robot. Stall: target reachable (beyond its best standoff) "
          "but not approached (docs/simulation.md). Orbit turns: the largest |angle| / 2π of the offset "

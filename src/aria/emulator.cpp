@@ -15,21 +15,13 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
-// Moves `value` toward `target` by at most rate * dt; `rate_up` applies when the speed
-// grows in magnitude, `rate_down` when it shrinks.
-double approach(double value, double target, double rate_up, double rate_down, double dt) {
-  const bool speeding_up = std::abs(target) > std::abs(value) && value * target >= 0.0;
-  const double step = (speeding_up ? rate_up : rate_down) * dt;
-  if (std::abs(target - value) <= step) return target;
-  return value + (target > value ? step : -step);
-}
-
 }  // namespace
 
 RobotEmulator::RobotEmulator(EmulatorOptions options)
     : options_(std::move(options)), rng_(options_.seed), pose_(options_.initial_pose) {
   const std::string error = options_.validate();
   if (!error.empty()) throw std::invalid_argument("emulator: " + error);
+  base_.emplace(core::ActuatorLimits{}, options_.robot.halfTrack());
   close();
   counters_.closes = 0;
   if (options_.left_open_at_baud > 0) {
@@ -56,8 +48,23 @@ void RobotEmulator::close() {
   decel_ = options_.robot.trans_decel;
   rot_accel_ = options_.robot.rot_accel;
   rot_decel_ = options_.robot.rot_decel;
+  syncLimits();
   watchdog_tripped_ = false;
   ++counters_.closes;
+}
+
+void RobotEmulator::syncLimits() {
+  // The robot's ceilings (SETV / SETRV cut the setpoint in setTarget); the latency is the
+  // model's default until the robot description carries one.
+  core::ActuatorLimits l;
+  l.trans_accel = accel_;
+  l.trans_decel = decel_;
+  l.rot_accel = rot_accel_;
+  l.rot_decel = rot_decel_;
+  l.max_velocity = options_.robot.max_velocity;
+  l.max_rot_velocity = options_.robot.max_rot_velocity;
+  l.cycle = options_.robot.sip_cycle;
+  base_->setLimits(l);
 }
 
 void RobotEmulator::clientDisconnected() {
@@ -134,6 +141,7 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
     case Command::kSetA:
       if (value > 0) accel_ = value * 1e-3;
       if (value < 0) decel_ = -value * 1e-3;
+      syncLimits();
       break;
     case Command::kSetV:
       if (value > 0) max_v_ = std::min(value * 1e-3, options_.robot.max_velocity);
@@ -144,6 +152,7 @@ std::vector<std::uint8_t> RobotEmulator::handle(const Packet& packet, double now
     case Command::kSetRA:
       if (value > 0) rot_accel_ = value * kDegToRad;
       if (value < 0) rot_decel_ = -value * kDegToRad;
+      syncLimits();
       break;
     case Command::kSetO:
       odo_x_mm_ = odo_y_mm_ = odo_th_ = 0.0;
@@ -276,23 +285,18 @@ void RobotEmulator::stepPhysics(double dt) {
   const bool drive = motors_ && !watchdog_stop;
   const double tv = drive ? target_v_ : 0.0;
   const double tw = drive ? target_w_ : 0.0;
-  v_ = approach(v_, tv, accel_, decel_, dt);
-  w_ = approach(w_, tw, rot_accel_, rot_decel_, dt);
-  // Wheel-speed limit: |v| + b|w| <= max wheel speed, scaled radially.
+  // The firmware's cycle, latency, ramps and wheel-speed limit: the one actuator model.
+  const core::Twist2 mean = base_->step({tv, tw}, dt);
+  v_ = base_->velocity().v;
+  w_ = base_->velocity().omega;
+  pose_ = core::integrateUnicycle(pose_, mean, dt);
   const double b = options_.robot.halfTrack();
-  const double wheel = std::abs(v_) + b * std::abs(w_);
-  if (wheel > options_.robot.max_velocity) {
-    const double s = options_.robot.max_velocity / wheel;
-    v_ *= s;
-    w_ *= s;
-  }
-  pose_ = core::integrateUnicycle(pose_, {v_, w_}, dt);
   // The firmware's odometry integrates its (noisy) wheel speeds in its own frame, counting
   // encoder ticks with its working calibration: a TicksMM above the encoders' true one
   // shrinks every distance, a larger RevCount every turn, DriftFactor scales the right wheel.
   const double distance_scale = static_cast<double>(options_.ticks_mm) / ticks_mm_;
   const double turn_scale = static_cast<double>(options_.rev_count) / rev_count_;
-  double left = v_ - b * w_, right = (v_ + b * w_) * (1.0 + drift_factor_ / 8192.0);
+  double left = mean.v - b * mean.omega, right = (mean.v + b * mean.omega) * (1.0 + drift_factor_ / 8192.0);
   if (options_.odometry_noise > 0.0) {
     std::normal_distribution<double> noise(0.0, options_.odometry_noise);
     left *= 1.0 + noise(rng_);

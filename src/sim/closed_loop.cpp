@@ -137,6 +137,10 @@ std::string validateSetup(const ClosedLoopSetup& setup) {
   if (!pose_sensor.empty()) return pose_sensor;
   const std::string ramp = setup.resume_ramp.validate();
   if (!ramp.empty()) return "resume_ramp: " + ramp;
+  if (!setup.dynamics.ideal) {
+    const std::string limits = core::validateActuatorLimits(setup.dynamics.limits, setup.dynamics.half_track);
+    if (!limits.empty()) return "robot dynamics: " + limits;
+  }
   if (!setup.initial_pose.isFinite()) err << "initial_pose must be finite";
   else if (!(std::isfinite(setup.duration) && setup.duration > 0.0)) err << "duration must be > 0, got " << setup.duration;
   else if (!(std::isfinite(setup.control_period) && setup.control_period > 0.0))
@@ -186,6 +190,9 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Refere
   summary.min_clearance_offset = summary.min_clearance_body = std::numeric_limits<double>::infinity();
   MetricsAccumulator metrics;
   core::Pose2 pose = setup.initial_pose;
+  // The firmware's base (ramps, cycle, latency, wheel limit) unless the setup is ideal.
+  std::unique_ptr<core::ActuatorModel> base;
+  if (!setup.dynamics.ideal) base = std::make_unique<core::ActuatorModel>(setup.dynamics.limits, setup.dynamics.half_track);
   std::vector<core::Disk> obstacles = setup.obstacles;
   const auto fixed_steps = static_cast<std::uint64_t>(std::llround(setup.duration / setup.control_period));
   double t = 0.0;
@@ -315,11 +322,12 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Refere
       step.p_r_true = p_r;
       step.clearance_offset = clearance_offset;
       step.clearance_body = clearance_body;
+      step.body_velocity = base ? base->velocity() : out.u;
       step.obstacles = &obstacles;
       observer(step);
     }
     if (last) break;
-    pose = core::integrateUnicycle(pose, heading, out.u, h);
+    pose = base ? core::driveBody(base.get(), pose, out.u, h) : core::integrateUnicycle(pose, heading, out.u, h);
     if (!fixed_step) t += h;
   }
   summary.metrics = metrics.result();

@@ -1,4 +1,5 @@
 #include "amigobot_tracking/sim/scenario.h"
+#include "amigobot_tracking/sim/robot_description.h"
 
 #include <cmath>
 #include <set>
@@ -170,8 +171,17 @@ void readScenarioFields(Section& s, const std::string& section, Scenario& scenar
   });
 }
 
-void parseRobot(Section s, sim::ClosedLoopSetup& setup) {
+void parseRobot(Section s, Scenario& scenario) {
+  sim::ClosedLoopSetup& setup = scenario.setup;
   readControllerFields(s, "robot", setup.controller);
+  readScenarioFields(s, "robot", scenario);
+  if (!scenario.robot_description.empty()) {
+    std::string path = scenario.robot_description;
+    const size_t slash = scenario.file.find_last_of('/');
+    if (path[0] != '/' && slash != std::string::npos) path = scenario.file.substr(0, slash + 1) + path;
+    setup.dynamics = loadRobotDynamics(path);
+  }
+  setup.dynamics.ideal = scenario.dynamics == "ideal";
   const std::vector<double> pose = s.numbers("initial_pose", 3);
   setup.initial_pose = {pose[0], pose[1], pose[2]};
   s.finish();
@@ -334,7 +344,7 @@ Scenario parseScenario(const std::string& text, const std::string& file, const s
   scenario.file = file;
   scenario.name = stem(file);
   Section top(root, "", file);
-  parseRobot(Section(top.required("robot"), "robot", file), scenario.setup);
+  parseRobot(Section(top.required("robot"), "robot", file), scenario);
   parseController(Section(top.required("controller"), "controller", file), scenario.setup);
   scenario.reference = parseReference(Section(top.required("reference"), "reference", file));
   const YAML::Node obstacles = top.optional("obstacles");

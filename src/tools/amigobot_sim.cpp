@@ -6,6 +6,7 @@
 //   amigobot_sim --scenario FILE.yaml --benchmark N [--benchmark-json F]  (real-time factor)
 //   amigobot_sim --scenario FILE.yaml --out DIR --set controller.k_d=2 --set target.delay=0.1
 //   amigobot_sim --scenario FILE.yaml --out DIR --monte-carlo N --seed S [--jobs J]
+//   amigobot_sim --identify RUN.csv --identify-out ROBOT.yaml  (scripts/tools/identify_robot.py: from a bag)
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -24,8 +25,10 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "amigobot_tracking/sim/actuator_fit.h"
 #include "amigobot_tracking/sim/gain_tuner.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
+#include "amigobot_tracking/sim/robot_description.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"
 #include "amigobot_tracking/sim_mrpt/reactive_law.h"
@@ -162,6 +165,34 @@ int runTuner(const CLI::App& app, const std::string& suite_path, const std::stri
   }
 }
 
+// --identify: the actuator model fitted to a recorded run, written as a robot YAML that
+// scenarios name with robot.description (and --tune with --set robot.description=FILE).
+int runIdentify(const std::string& run_path, const std::string& out_path, double half_track) {
+  if (run_path.size() > 4 && run_path.compare(run_path.size() - 4, 4, ".bag") == 0) {
+    std::fprintf(stderr, "amigobot_sim: --identify reads a CSV; for a bag run scripts/tools/identify_robot.py %s\n",
+                 run_path.c_str());
+    return 2;
+  }
+  try {
+    sim::ActuatorRecording run = sim::readActuatorCsv(run_path);
+    run.half_track = half_track;
+    const sim::ActuatorFit fit = sim::fitActuator(run);
+    char origin[200];
+    std::snprintf(origin, sizeof(origin), "fitted by amigobot_sim --identify from %zu commands and %zu odometry samples "
+                  "(rms velocity error %.4f m/s)", run.commands.size(), run.odometry.size(), fit.rms_error);
+    std::string yaml = sim::robotDynamicsYaml(fit.dynamics, std::string(origin) + " of " + run_path);
+    for (const std::string& note : fit.notes) yaml = "# Note: " + note + ".\n" + yaml;
+    const std::filesystem::path parent = std::filesystem::path(out_path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    sim::writeText(out_path, yaml);
+    std::printf("%swrote %s\n", yaml.c_str(), out_path.c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "amigobot_sim: --identify %s: %s\n", run_path.c_str(), e.what());
+    return 2;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -176,12 +207,19 @@ int main(int argc, char** argv) {
   bool no_plot = false;
   std::string tune_suite, tune_out;
   int tune_evaluations = 30;
+  std::string identify_run, identify_out;
+  double half_track = core::kAmigoHalfTrack;
   app.add_option("--scenario", scenario_path, "scenario file (config/scenarios/*.yaml); required but with --tune");
   app.add_option("--tune", tune_suite, "tune the law's gains on this suite (config/scenarios/*_suite.txt): "
                  "--monte-carlo N variants per scenario (8), writes --tune-out");
   app.add_option("--tune-out", tune_out, "with --tune: the YAML of the tuned gains (default OUT/tuned_gains.yaml)");
   app.add_option("--tune-evaluations", tune_evaluations, "with --tune: candidates judged, the start included")
       ->check(CLI::Range(1, 100000));
+  app.add_option("--identify", identify_run, "fit the robot's dynamics (ramps, latency, wheel limit) to a recorded run: "
+                 "CSV lines cmd|odom,t,v,w (scripts/tools/identify_robot.py makes one from a bag); writes --identify-out");
+  app.add_option("--identify-out", identify_out, "with --identify: the robot YAML (default OUT/robot.yaml)");
+  app.add_option("--half-track", half_track, "with --identify: half the wheel track [m] (default the AmigoBot's)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--out", out, "output folder: trajectory.csv, metrics.json, figures");
   app.add_option("--set", sets, "section.key=value: any scenario key (repeatable), checked like the file");
   std::map<std::string, std::string> shorthand_values;
@@ -216,6 +254,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;  // --help: 0; a bad command line: 2, as a bad scenario
+  }
+  if (!identify_run.empty()) {
+    if (out.empty() && identify_out.empty()) {
+      std::fprintf(stderr, "amigobot_sim: --identify needs --out DIR or --identify-out FILE\n");
+      return 2;
+    }
+    return runIdentify(identify_run, identify_out.empty() ? out + "/robot.yaml" : identify_out, half_track);
   }
   if (!tune_suite.empty()) {
     if (out.empty() && tune_out.empty()) {

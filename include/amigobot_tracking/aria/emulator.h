@@ -1,10 +1,11 @@
 // The robot side of the protocol as an AmigoBot's firmware does it, without I/O: a
-// kinematic stub (unicycle with wheel-speed and acceleration limits), the firmware's own
+// kinematic stub (a unicycle behind core::ActuatorModel: ramps, cycle, latency, wheel limit), the firmware's own
 // odometry in its units and wrap, sonar from the world (disks, walls, polygons), the 2 s watchdog. With
 // `simulator_mode` it reproduces a MobileSim-like ARIA simulator instead.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <ostream>
 #include <string>
@@ -14,6 +15,7 @@
 #include "amigobot_tracking/aria/packet.h"
 #include "amigobot_tracking/aria/robot_params.h"
 #include "amigobot_tracking/aria/sip.h"
+#include "amigobot_tracking/core/actuator_model.h"
 #include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/core/types.h"
 #include "amigobot_tracking/world/world.h"
@@ -110,6 +112,7 @@ class RobotEmulator {
   void close();
   std::vector<std::uint8_t> makeSip();
   void setTarget(double v, double w);
+  void syncLimits();  // the firmware's current accelerations into base_
 
   EmulatorOptions options_;
   std::mt19937 rng_;
@@ -124,8 +127,9 @@ class RobotEmulator {
   std::ostream* command_log_ = nullptr;
   TeleportMailbox* teleports_ = nullptr;
   double max_v_, max_w_;  // SETV / SETRV
-  double accel_, decel_, rot_accel_, rot_decel_;
-  double v_ = 0.0, w_ = 0.0;  // actual
+  double accel_, decel_, rot_accel_, rot_decel_;  // SETA / SETRA, reported in the CONFIGpac
+  std::optional<core::ActuatorModel> base_;  // the wheels: ramps, cycle, latency, wheel limit
+  double v_ = 0.0, w_ = 0.0;  // actual (base_'s velocity)
   core::Pose2 pose_;          // ground truth
   double odo_x_mm_ = 0.0, odo_y_mm_ = 0.0, odo_th_ = 0.0;  // firmware odometry
   double left_ticks_ = 0.0, right_ticks_ = 0.0;  // encoder counts (ENCODER answers them)

@@ -8,6 +8,8 @@
 #include <functional>
 #include <vector>
 
+#include "amigobot_tracking/core/actuator_limits.h"
+#include "amigobot_tracking/core/actuator_model.h"
 #include "amigobot_tracking/core/controller.h"
 #include "amigobot_tracking/sim/metrics.h"
 #include "amigobot_tracking/core/reference.h"
@@ -59,9 +61,20 @@ struct BaselineParams {
   double kalman_measurement_std = 0.01; // [m] measurement noise of kKalman (> 0)
 };
 
+// What the robot's base does to the law's command (core/actuator_model.h).
+struct RobotDynamics {
+  // true: the command moves the body at once (the paper's unicycle; Section 5 stays exact).
+  // A setup built in code is ideal unless it says otherwise; a scenario file is `firmware`
+  // (ideal = false) unless it says `robot.dynamics: ideal`.
+  bool ideal = true;
+  core::ActuatorLimits limits;                 // the AmigoBot's (config/robots/amigo.yaml)
+  double half_track = core::kAmigoHalfTrack;   // [m] b of the wheel-speed limit
+};
+
 struct ClosedLoopSetup {
   core::ControllerConfig controller;
   core::Pose2 initial_pose;
+  RobotDynamics dynamics;        // the base between the law's command and the body
   std::vector<core::Disk> obstacles;
   // Obstacle velocities [m/s], one per obstacle (centre(t) = centre + velocity t); empty: static.
   // The controller is given them (Disk::velocity, ground truth; used with moving_obstacles).
@@ -103,6 +116,7 @@ struct ClosedLoopStep {
                                                       // the controller's belief)
   double clearance_offset = 0.0;   // disk of radius R around the true p_r to the nearest obstacle [m]
   double clearance_body = 0.0;     // disk of radius R around the centre p [m]
+  core::Twist2 body_velocity;      // what the body does now (== output.u with ideal dynamics)
   const std::vector<core::Disk>* obstacles = nullptr;  // where the obstacles are at t
 };
 

@@ -38,6 +38,8 @@ struct Scenario {
   sim::ClosedLoopSetup setup;
   ReferenceSpec reference;
   double log_period = 0.0;  // [s] CSV row spacing; 0 = every step
+  std::string dynamics = "firmware";  // robot.dynamics: firmware | ideal (setup.dynamics.ideal)
+  std::string robot_description;      // robot.description: a robot YAML for the firmware's values
 
   std::unique_ptr<core::Reference> makeReference() const;
 };
