@@ -107,7 +107,8 @@ std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const Nav
   return zones;
 }
 
-std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double horizon) {
+std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double horizon, const Eigen::Vector2d& from,
+                                     double speed, double reach) {
   std::vector<Disk> out = obstacles;
   if (!(horizon > 0.0)) return out;
   for (const Disk& o : obstacles) {
@@ -117,7 +118,9 @@ std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double 
     const int copies = std::min(kMaxPathCopies, static_cast<int>(std::ceil(travel / spacing)));
     for (int k = 1; k <= copies; ++k) {
       Disk ahead = o;
-      ahead.center = o.center + o.velocity * (horizon * k / copies);
+      const double t = horizon * k / copies;
+      ahead.center = o.center + o.velocity * t;
+      if (t + (reach + o.radius) / o.velocity.norm() < (ahead.center - from).norm() / speed) continue;  // gone by then
       out.push_back(ahead);
     }
   }

@@ -45,7 +45,7 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // The field routes round where a moving disk will be, not only where it is: its path over
   // obstacle_lookahead (withPredictedPaths), so the robot passes behind a person crossing its way
   // and steps out of the way of one coming from behind instead of fleeing ahead of them.
-  const std::vector<Disk> seen = withPredictedPaths(held, config.obstacle_lookahead);
+  const std::vector<Disk> seen = withPredictedPaths(held, config.obstacle_lookahead, in.p_r, config.v_max, radius);
 
   NavigationFieldConfig field;
   field.robot_radius = radius;

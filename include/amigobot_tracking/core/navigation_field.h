@@ -67,7 +67,11 @@ std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const Nav
 // ahead of them, and out of the path of one coming from behind. Static disks as they are;
 // horizon 0: the disks unchanged. Continuous in v except where a copy is added, which lies
 // inside the others' union then (its zone adds nothing new at that instant).
-std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double horizon);
+// A copy the robot cannot reach before the disk has walked past it (t + R_j / |v_j| <
+// |c_j(t) - from| / speed, R_j = `reach` + r_j the zone's radius) is left out: the person will
+// have gone by then, so the robot may pass behind them.
+std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double horizon, const Eigen::Vector2d& from,
+                                     double speed, double reach);
 constexpr int kMaxPathCopies = 40;
 
 // Where the field aims when `goal` lies on a moving disk's path: moved out of each such path
