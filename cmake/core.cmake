@@ -46,7 +46,8 @@ target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
 if(CATKIN_ENABLE_TESTING)
   foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance disk_clusters band_implicit controller_config controller_guards
           obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference input_age command_lock body_intrusion safety_filter tracking_loop
-          rho_noise_headroom transform_intake scan_health obstacle_motion actuator_model law_registry)
+          rho_noise_headroom transform_intake scan_health obstacle_motion actuator_model law_registry
+          obstacle_paths)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_core)
   endforeach()

@@ -48,6 +48,11 @@ FieldTable<ControllerConfig> makeTable() {
       live(field("command_rise_time", &C::command_rise_time, "s",
                  "recommended law: the command moves by at most (v_max, w_max) h / this per step (0: no bound)",
                  durationOrZero())),
+      field("plan_braking", &C::plan_braking, "-",
+            "recommended law: barrier rows bound the approach speed by the base's braking (ramps, latency)"),
+      field("obstacle_lookahead", &C::obstacle_lookahead, "s",
+            "recommended law: the field sees a moving disk along its path over this long (0: where it is)",
+            durationOrZero()),
       // Beyond the paper: each default is the paper's law.
       field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
       field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),

@@ -107,6 +107,49 @@ std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const Nav
   return zones;
 }
 
+std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double horizon, const Eigen::Vector2d& from,
+                                     double speed, double reach) {
+  std::vector<Disk> out = obstacles;
+  if (!(horizon > 0.0)) return out;
+  for (const Disk& o : obstacles) {
+    const double travel = o.velocity.norm() * horizon;
+    if (!(travel > 0.0) || !std::isfinite(travel)) continue;
+    const double spacing = std::max(0.5 * o.radius, 0.05);
+    const int copies = std::min(kMaxPathCopies, static_cast<int>(std::ceil(travel / spacing)));
+    for (int k = 1; k <= copies; ++k) {
+      Disk ahead = o;
+      const double t = horizon * k / copies;
+      ahead.center = o.center + o.velocity * t;
+      if (t + (reach + o.radius) / o.velocity.norm() < (ahead.center - from).norm() / speed) continue;  // gone by then
+      out.push_back(ahead);
+    }
+  }
+  return out;
+}
+
+Eigen::Vector2d goalOutOfPaths(const Eigen::Vector2d& goal, const Eigen::Vector2d& side_hint,
+                               const std::vector<Disk>& obstacles, double horizon, double robot_radius, double margin) {
+  Eigen::Vector2d out = goal;
+  if (!(horizon > 0.0)) return out;
+  for (const Disk& o : obstacles) {
+    const Eigen::Vector2d path = o.velocity * horizon;
+    const double length2 = path.squaredNorm();
+    if (!(length2 > 1e-12) || !path.allFinite()) continue;
+    const double s = std::clamp((out - o.center).dot(path) / length2, 0.0, 1.0);
+    const Eigen::Vector2d nearest = o.center + s * path;
+    Eigen::Vector2d off = out - nearest;
+    const double zone = robot_radius + o.radius + margin;
+    const double distance = off.norm();
+    if (distance >= zone) continue;
+    if (distance < 1e-9) {  // on the path line: to p_r's side (left when that is on it too)
+      const Eigen::Vector2d normal(-path.y(), path.x());
+      off = (side_hint - o.center).dot(normal) < 0.0 ? Eigen::Vector2d(-normal) : normal;
+    }
+    out = nearest + zone * off.normalized();
+  }
+  return out;
+}
+
 NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,
                                         const Eigen::Vector2d& goal, const std::vector<Disk>& sensed,
                                         const NavigationFieldConfig& config) {

@@ -42,6 +42,10 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // sideways; it needs the room to turn away. Continuous in the disk's speed.
   std::vector<Disk> held = obstacles;
   for (Disk& o : held) o.radius += config.offset * std::min(1.0, o.velocity.norm() / config.v_max);
+  // The field routes round where a moving disk will be, not only where it is: its path over
+  // obstacle_lookahead (withPredictedPaths), so the robot passes behind a person crossing its way
+  // and steps out of the way of one coming from behind instead of fleeing ahead of them.
+  const std::vector<Disk> seen = withPredictedPaths(held, config.obstacle_lookahead, in.p_r, config.v_max, radius);
 
   NavigationFieldConfig field;
   field.robot_radius = radius;
@@ -59,9 +63,14 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   Eigen::Vector2d ahead = config.field_lookahead * in.v_smooth;
   if (!ahead.allFinite()) ahead.setZero();
   if (ahead.norm() > error_norm) ahead *= error_norm / ahead.norm();
-  const double q_d = segmentClearance(p_d, p_d + ahead, held, radius);
+  const double q_d = segmentClearance(p_d, p_d + ahead, seen, radius);
   const double target_blocked = std::clamp(1.0 - q_d / field.margin, 0.0, 1.0);
-  const NavigationDirection nav = navigationDirection(in.p_r, p_d, p_d + target_blocked * ahead, held, field);
+  // A target on a person's path (where they walk within obstacle_lookahead): the field aims
+  // beside that path, so the robot steps aside and lets them pass (goalOutOfPaths; the person's
+  // own radius: the widened one of `held` would send it up to r farther aside than it needs).
+  const Eigen::Vector2d goal = goalOutOfPaths(p_d + target_blocked * ahead, in.p_r, obstacles, config.obstacle_lookahead,
+                                              radius, field.margin);
+  const NavigationDirection nav = navigationDirection(in.p_r, p_d, goal, seen, field);
   out.direction = nav.direction;
   out.blend = nav.blend;
   const double feed_forward = std::clamp(nav.direction.dot(e_hat), 0.0, 1.0);
@@ -76,7 +85,10 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   filter.robot_radius = radius;
   filter.gamma = config.barrier_rate;
   filter.min_margin = config.min_margin;
-  filter.obstacle_velocities = config.moving_obstacles;
+  filter.obstacle_velocities = config.obstacleVelocities();
+  filter.braking = config.plan_braking;
+  filter.limits = config.actuator;
+  filter.hold = in.h;
   filter.body_rows = config.body_safe;
   filter.nominal = out.u_nominal;
   // Under 3 cm of target noise the law's command followed the noise: |dv| up to 0.52 m/s and

@@ -46,6 +46,13 @@ bool equalityMinimiser(const SmallQp& qp, const int* rows, int count, Eigen::Vec
 
 }  // namespace
 
+double brakingSpeed(double room, double decel, double delay) {
+  if (!(room > 0.0)) return 0.0;
+  if (!std::isfinite(decel)) return delay > 0.0 ? room / delay : std::numeric_limits<double>::infinity();
+  // The positive root of s^2 / (2 a) + tau s - x = 0, written without cancellation.
+  return 2.0 * room / (delay + std::sqrt(delay * delay + 2.0 * room / decel));
+}
+
 SmallQpResult solveSmallQp(const SmallQp& qp, double tolerance) {
   SmallQpResult best;
   best.cost = std::numeric_limits<double>::infinity();
@@ -97,6 +104,14 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
   // |G u| inside the diamond is at most max(v_bar, r w_bar) (|G u|^2 = v^2 + r^2 w^2, convex,
   // largest at a vertex).
   const double reach = std::max(diamond.vMax(), r * diamond.wMax());
+  // gamma (h - m), bounded by the braking curve when the base ramps (safety_filter.h).
+  const double delay = in.limits.latency + in.limits.cycle + in.hold;
+  auto allowedApproach = [&](double h, double decel) {
+    const double room = h - in.min_margin;
+    const double rate = in.gamma * room;
+    return in.braking && room > 0.0 ? std::min(rate, brakingSpeed(room, decel, delay)) : rate;
+  };
+  const double offset_decel = std::min(in.limits.trans_decel, r * in.limits.rot_decel);
   SafetyFilterResult result;
   for (const Disk& o : obstacles) {
     Eigen::Vector2d away = p_r - o.center;
@@ -107,7 +122,7 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
     }
     const Eigen::Vector2d n = away / distance;
     const double h = away.norm() - (in.robot_radius + o.radius);
-    const double bound = in.gamma * (h - in.min_margin) - (in.obstacle_velocities ? n.dot(o.velocity) : 0.0);
+    const double bound = allowedApproach(h, offset_decel) - (in.obstacle_velocities ? n.dot(o.velocity) : 0.0);
     if (bound >= reach) continue;  // cannot bind inside the diamond
     // -n^T G u - s <= gamma (h - m) - n^T v_j, with G u = v heading + r w side.
     qp.a.emplace_back(-n.dot(heading), -r * n.dot(side), -1.0);
@@ -125,7 +140,7 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
       // dh/dt has omega in it: at contact the filter turns the robot along the disk instead
       // of holding v = 0 while omega flips (v-only rows pinned a body on a ring's disk 24 s).
       const double h = distance - (in.robot_radius + o.radius) - kBodyLookahead * (1.0 - facing);
-      const double bound = in.gamma * (h - in.min_margin) - (in.obstacle_velocities ? n.dot(o.velocity) : 0.0);
+      const double bound = allowedApproach(h, in.limits.trans_decel) - (in.obstacle_velocities ? n.dot(o.velocity) : 0.0);
       // dh/dt = v (n^T heading + L (1 - (n^T heading)^2) / |c - c_j|) + L omega n^T side.
       const double a_v = facing + kBodyLookahead * (1.0 - facing * facing) / distance;
       const double a_w = kBodyLookahead * n.dot(side);

@@ -184,8 +184,8 @@ core::TrackingLoopInputs TrackingNode::loopInputsLocked(const ros::Time& now, co
   in.target.position = {target.transform.transform.translation.x, target.transform.transform.translation.y};
   in.supervisor.scan_age = scan_age_;
   laser_disks_.clear();
-  // With moving_obstacles the laser disks carry velocities from the tracker.
-  if (loop_.scanFresh(scan_age_)) laser_->obstacles(loop_.nextConfig().moving_obstacles, now, &laser_disks_);
+  // The laser disks carry velocities from the tracker when the law uses them (obstacleVelocities).
+  if (loop_.scanFresh(scan_age_)) laser_->obstacles(loop_.nextConfig().obstacleVelocities(), now, &laser_disks_);
   virtual_disks_.clear();
   virtual_obstacles_->appendDisks(&virtual_disks_);
   in.scan_disks = &laser_disks_;

@@ -173,6 +173,8 @@ std::string loadControllerConfig(const ros::NodeHandle& pnh, const TrackingNodeC
   // Tracking's diamond defaults to the robot's (its robot file), and may only be smaller.
   c->v_max = node.description.v_max;
   c->w_max = node.description.w_max;
+  // The recommended law brakes with the base it drives: its robot file's ramps and delays.
+  c->actuator = node.description.dynamics;
   const std::string error = readParams(pnh, core::controllerFields(), c);
   if (!error.empty()) return error;
   std::ostringstream err;

@@ -38,6 +38,14 @@ class Law {
     // The band-implicit step treats (10), which only some laws use.
     implicit_band_ = entry->band_implicit && setup.integrator != Integrator::kExplicit && !config.moving_obstacles;
     config.estimator.bdf2 = implicit_band_ && setup.integrator == Integrator::kSecondOrder;
+    // A law that brakes with the base it drives (the recommended law) gets the scene's ramps
+    // and delays, or none on the ideal body (infinite decelerations, no cycle, no latency).
+    if (setup.dynamics.ideal) {
+      config.actuator.trans_decel = config.actuator.rot_decel = std::numeric_limits<double>::infinity();
+      config.actuator.cycle = config.actuator.latency = 0.0;
+    } else {
+      config.actuator = setup.dynamics.limits;
+    }
     // The tracking nodelet's own loop, with inputs that never go stale: the scene's
     // disks are the operator's (never dropped), the start is the paper's (no restart, no
     // ramp) unless the setup asks for the robot's resume.

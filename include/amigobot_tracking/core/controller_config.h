@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "amigobot_tracking/core/actuator_limits.h"
 #include "amigobot_tracking/core/estimator.h"
 #include "amigobot_tracking/core/field_table.h"
 
@@ -67,6 +68,14 @@ struct ControllerConfig {
   double command_rise_time = 0.25;     // [s] the recommended law's command changes by at most
                                        // (v_bar, w_bar) h / this per step: the safety filter's
                                        // rate box, which gives way to a barrier (0: no bound)
+  bool plan_braking = true;            // the recommended law's barrier rows bound the approach speed
+                                       // by what the base can still brake (`actuator`'s ramps and
+                                       // delays: safety_filter.h); false: gamma alone
+  double obstacle_lookahead = 2.0;     // [s] the recommended law's field sees a moving disk along
+                                       // the path it walks over this long (0: where it is now)
+  // The base's dynamics the recommended law brakes with: not a parameter of its own, the robot
+  // description's (config/robots/); defaults the AmigoBot's.
+  ActuatorLimits actuator;
   // Beyond the paper: each switch off reproduces the paper exactly.
   bool tangential_avoidance = false;   // escape the saddle behind a disk (avoidance.h)
   double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c;
@@ -81,6 +90,10 @@ struct ControllerConfig {
   bool compensate_pose_age = false;    // move the pose forward along the commands applied over its age
   double max_prediction = 0.5;         // [s] ages beyond this are not extrapolated further
 
+  bool recommended() const { return law == "recommended"; }
+  // Whether obstacle velocities are used: always by the recommended law (its barrier rows and
+  // its field), by the paper's (10) only with moving_obstacles.
+  bool obstacleVelocities() const { return moving_obstacles || recommended(); }
   // The radius used in (10): R, or R + r when body_safe.
   double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
   // Empty when valid, otherwise "key: reason" naming the first bad field (the table's

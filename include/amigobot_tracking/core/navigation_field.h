@@ -61,6 +61,28 @@ double fieldSlowness(const Eigen::Vector2d& x, const std::vector<Disk>& obstacle
 // its zone R + r_b counts.) The safety filter still holds the true disks.
 std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const NavigationFieldConfig& config);
 
+// The disks as the field sees moving ones: each disk with a velocity also repeated along the path
+// it walks over `horizon` [s] (c + v t, 0 < t <= horizon, copies at most half its radius apart,
+// at most kMaxPathCopies), so the field routes behind a person crossing the way rather than
+// ahead of them, and out of the path of one coming from behind. Static disks as they are;
+// horizon 0: the disks unchanged. Continuous in v except where a copy is added, which lies
+// inside the others' union then (its zone adds nothing new at that instant).
+// A copy the robot cannot reach before the disk has walked past it (t + R_j / |v_j| <
+// |c_j(t) - from| / speed, R_j = `reach` + r_j the zone's radius) is left out: the person will
+// have gone by then, so the robot may pass behind them.
+std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double horizon, const Eigen::Vector2d& from,
+                                     double speed, double reach);
+constexpr int kMaxPathCopies = 40;
+
+// Where the field aims when `goal` lies on a moving disk's path: moved out of each such path
+// (the capsule swept by the zone, radius robot_radius + r_j + margin, from c_j to c_j +
+// v_j horizon) along the perpendicular, to its edge. So a robot whose target a person is about
+// to walk through waits beside the person's path, rather than on it until the person is upon it
+// (then the barrier can only push it ahead of them). The side is the goal's own; exactly on the
+// path line, `side_hint`'s (p_r's). Continuous in the geometry except on that line.
+Eigen::Vector2d goalOutOfPaths(const Eigen::Vector2d& goal, const Eigen::Vector2d& side_hint,
+                               const std::vector<Disk>& obstacles, double horizon, double robot_radius, double margin);
+
 // The field seeded at `goal` (p_d, or ahead of a blocked target: recommended_law.cpp), blended
 // by the line of sight p_r -> p_d.
 NavigationDirection navigationDirection(const Eigen::Vector2d& p_r, const Eigen::Vector2d& p_d,

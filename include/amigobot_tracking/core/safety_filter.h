@@ -29,6 +29,7 @@
 
 #include <Eigen/Core>
 
+#include "amigobot_tracking/core/actuator_limits.h"
 #include "amigobot_tracking/core/diamond.h"
 #include "amigobot_tracking/core/types.h"
 
@@ -65,7 +66,21 @@ struct SafetyFilterInput {
   // `previous` outside the diamond (it shrank under a held command) is first scaled into it.
   Twist2 previous;
   Twist2 max_change{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  // With `braking`, each barrier row's clearance rate is also bounded by what the base can still
+  // undo: the approach speed s from which it stops within the room x = h - m when it reacts
+  // after tau = latency + cycle + hold and then decelerates at a (brakingSpeed below), so a row
+  // reads  n^T (G u - v_j) >= -min(gamma x, s_brake(x)) - s  (x > 0; inside m: -gamma x as
+  // before). a = min(trans_decel, r rot_decel) for p_r's disk (its speed has a v and an r w
+  // part), trans_decel for the body's. Ideal dynamics (infinite decelerations, no delays): off.
+  bool braking = false;
+  ActuatorLimits limits;
+  double hold = 0.0;  // [s] how long the command is held (the control period)
 };
+
+// [m/s] the largest approach speed s from which a base that reacts after `delay` [s] and then
+// decelerates at `decel` [m/s^2] stops within `room` [m]: delay s + s^2 / (2 decel) = room.
+// 0 for room <= 0; +inf for room > 0 with an infinite decel and no delay.
+double brakingSpeed(double room, double decel, double delay);
 
 struct SafetyFilterResult {
   bool solved = false;
