@@ -77,7 +77,7 @@ void expectWithin10(double fitted, double truth, const char* name) {
 
 TEST(ActuatorFit, RecoversTheFirmwaresValuesFromAnEmulatorRun) {
   aria::RobotParams params = aria::builtinRobotParams("amigo");
-  params.max_velocity = 0.6;  // the wheel ceiling, below the 0.68 m/s the last turn asks
+  params.dynamics.max_velocity = 0.6;  // the wheel ceiling, below the 0.68 m/s the last turn asks
   const sim::ActuatorRecording run = emulatorRun(params);
   ASSERT_GT(run.odometry.size(), 200u);
   const sim::ActuatorFit fit = sim::fitActuator(run);
@@ -89,7 +89,7 @@ TEST(ActuatorFit, RecoversTheFirmwaresValuesFromAnEmulatorRun) {
   expectWithin10(l.rot_accel, 150 * kDegToRad, "rot_accel");
   expectWithin10(l.rot_decel, 200 * kDegToRad, "rot_decel");
   expectWithin10(l.latency, core::ActuatorLimits{}.latency, "latency");
-  expectWithin10(l.cycle, params.sip_cycle, "cycle");
+  expectWithin10(l.cycle, params.dynamics.cycle, "cycle");
   EXPECT_TRUE(fit.wheel_limit_seen);
   expectWithin10(l.max_velocity, 0.6, "max_velocity");
   // The YAML it writes is what the simulator reads.
