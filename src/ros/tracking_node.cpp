@@ -184,8 +184,12 @@ core::TrackingLoopInputs TrackingNode::loopInputsLocked(const ros::Time& now, co
   in.target.position = {target.transform.transform.translation.x, target.transform.transform.translation.y};
   in.supervisor.scan_age = scan_age_;
   laser_disks_.clear();
-  // The laser disks carry velocities from the tracker when the law uses them (obstacleVelocities).
-  if (loop_.scanFresh(scan_age_)) laser_->obstacles(loop_.nextConfig().obstacleVelocities(), now, &laser_disks_);
+  // The laser disks carry the obstacle tracker's velocities only with moving_obstacles. The
+  // recommended law uses any velocity it is given (virtual obstacles', the simulator's), but the
+  // tracker's estimates through the real laser chain made it linger behind a person's line for
+  // 8 s in e2e_person_crossing (|e| 1.59 m after the target stopped, against 0.001 m without):
+  // not on by default until that is understood.
+  if (loop_.scanFresh(scan_age_)) laser_->obstacles(loop_.nextConfig().moving_obstacles, now, &laser_disks_);
   virtual_disks_.clear();
   virtual_obstacles_->appendDisks(&virtual_disks_);
   in.scan_disks = &laser_disks_;
