@@ -112,10 +112,10 @@ std::vector<std::string> expand(const std::string& name) {
   return out;
 }
 
-// The parameter tables live in docs/ros_api.md (nodes and nodelets) and docs/teleop.md.
+// The parameter tables live in docs/ros_api.md (nodes and nodelets), docs/robot_file.md and docs/teleop.md.
 std::vector<std::string> tableLines() {
   std::vector<std::string> all;
-  for (const char* file : {"docs/ros_api.md", "docs/teleop.md"})
+  for (const char* file : {"docs/ros_api.md", "docs/robot_file.md", "docs/teleop.md"})
     for (std::string& line : lines(file)) all.push_back(std::move(line));
   return all;
 }
