@@ -91,8 +91,9 @@ struct ControllerConfig {
   double max_prediction = 0.5;         // [s] ages beyond this are not extrapolated further
 
   bool recommended() const { return law == "recommended"; }
-  // Whether obstacle velocities are used: always by the recommended law (its barrier rows and
-  // its field), by the paper's (10) only with moving_obstacles.
+  // Whether obstacle velocities are used: by the recommended law whenever a disk carries one (its
+  // barrier rows and its field), by the paper's (10) only with moving_obstacles. On the robot the
+  // laser disks carry the tracker's velocities only with moving_obstacles (tracking_node.cpp says why).
   bool obstacleVelocities() const { return moving_obstacles || recommended(); }
   // The radius used in (10): R, or R + r when body_safe.
   double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
