@@ -77,7 +77,7 @@ COLUMNS = [
     ("widenings", "envelope_widenings", None),
     ("min body clearance [m]", "worst_min_clearance_body", 3),
     ("diamond violations", "diamond_violations", None),
-    ("NaN runs", "runs_with_nan", None),
+    ("runs with NaN or invalid steps", "runs_with_nan", None),
 ]
 HEADINGS = ["class", "law"] + [c[0] for c in COLUMNS]
 

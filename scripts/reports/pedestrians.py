@@ -67,7 +67,7 @@ COLUMNS = [
     ("min body clearance [m]", "min_clearance_body", 3),
     ("diamond violations", "diamond_violations", None),
     ("widenings", "envelope_widenings", None),
-    ("NaN runs", "runs_with_nan", None),
+    ("runs with NaN or invalid steps", "runs_with_nan", None),
     ("ω reversals /min (mean)", "mean_omega_reversals_per_minute", 3),
     ("max abs Δv [m/s]", "max_delta_v", 3),
     ("max abs Δω [rad/s]", "max_delta_omega", 3),
