@@ -95,10 +95,12 @@ junit() {  # junit NAME STATUS MESSAGE LOG
 XML
 }
 
-failed=0 total=0
-for name in "${TARGETS[@]}"; do
-  OUT=$BASE/$name CORPUS=$BASE/$name/corpus BIN=$BASE/$name/fuzz_$name LOG=$BASE/$name/fuzz.log
-  mkdir -p "$CORPUS" "$OUT/artifacts"
+# fuzz_one NAME: builds (when stale) and runs NAME's fuzzer; its summary line goes to stdout,
+# its inputs count to $BASE/NAME/execs; exit 1 on a failure.
+fuzz_one() {
+  local name=$1
+  local OUT=$BASE/$name CORPUS=$BASE/$name/corpus BIN=$BASE/$name/fuzz_$name LOG=$BASE/$name/fuzz.log
+  mkdir -p "$CORPUS" "$OUT/artifacts"; rm -f "$OUT/execs"
   read -ra SRC <<< "test/fuzz/fuzz_$name.cpp $(cd "$ROOT" && echo $(sources "$name"))"
   # Rebuilt only when a source, a header or this script is newer than the binary.
   if [ ! -x "$BIN" ] || [ -n "$(cd "$ROOT" && find "${SRC[@]}" include test/fuzz "$0" -newer "$BIN" -print -quit)" ]; then
@@ -106,23 +108,47 @@ for name in "${TARGETS[@]}"; do
           -ffunction-sections -Wl,--gc-sections -Wall -Wextra -Werror -Iinclude -isystem /usr/include/eigen3 \
           "${SRC[@]}" $(flags "$name") -o "$BIN") > "$LOG" 2>&1; then
       echo "fuzz $name: build failed (clang and libclang-rt-14-dev installed?)"; tail -n 30 "$LOG"
-      junit "$name" fail "build failed" "$LOG"; failed=$((failed + 1)); continue
+      junit "$name" fail "build failed" "$LOG"; return 1
     fi
   fi
-  seeds "$name"
-  dict=(); [ "$name" = packet_parser ] && dict=(-dict="$ROOT/test/fuzz/aria.dict")
-  length=(-max_total_time="${SECONDS_EACH:-0}"); [ "$MODE" = --runs ] && length=(-runs="${RUNS[$name]}")
+  CORPUS=$CORPUS seeds "$name"
+  local dict=(); [ "$name" = packet_parser ] && dict=(-dict="$ROOT/test/fuzz/aria.dict")
+  local length=(-max_total_time="${SECONDS_EACH:-0}"); [ "$MODE" = --runs ] && length=(-runs="${RUNS[$name]}")
   if (cd "$OUT" && "$BIN" "${length[@]}" "${dict[@]}" -max_len=4096 -rss_limit_mb=1024 -artifact_prefix="$OUT/artifacts/" \
        -print_final_stats=1 "$CORPUS") > "$LOG" 2>&1; then
+    local execs rate
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$LOG")
     rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$LOG")
-    total=$((total + execs))
+    echo "$execs" > "$OUT/execs"
     echo "fuzz $name: OK, ${execs} inputs, ${rate} inputs/s, corpus $(ls "$CORPUS" | wc -l) files"
     junit "$name" ok "" "$LOG"
   else
     echo "fuzz $name: FAILED; the input is in $OUT/artifacts/"; tail -n 40 "$LOG"
-    junit "$name" fail "crash or invariant violation" "$LOG"; failed=$((failed + 1))
+    junit "$name" fail "crash or invariant violation" "$LOG"; return 1
   fi
+}
+
+# Each fuzzer is one single-threaded process (its build one clang): FUZZ_JOBS of them at a time
+# (default: one per core), each target's lines printed together when it ends.
+JOBS=${FUZZ_JOBS:-$(nproc)}
+declare -A PIDS=()
+failed=0 total=0
+reap() {  # waits for one running target and prints its lines
+  local pid rc=0
+  wait -n -p pid || rc=$?
+  cat "$BASE/${PIDS[$pid]}.out"; rm -f "$BASE/${PIDS[$pid]}.out"
+  [ $rc -ne 0 ] && failed=$((failed + 1))
+  unset "PIDS[$pid]"
+}
+mkdir -p "$BASE"
+for name in "${TARGETS[@]}"; do
+  [ ${#PIDS[@]} -ge "$JOBS" ] && reap
+  fuzz_one "$name" > "$BASE/$name.out" 2>&1 &
+  PIDS[$!]=$name
+done
+while [ ${#PIDS[@]} -gt 0 ]; do reap; done
+for name in "${TARGETS[@]}"; do
+  [ -f "$BASE/$name/execs" ] && total=$((total + $(cat "$BASE/$name/execs")))
 done
 echo "fuzz: ${#TARGETS[@]} targets, ${total} inputs in all, ${failed} failed"
 [ "$failed" -eq 0 ]
