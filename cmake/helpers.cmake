@@ -20,13 +20,52 @@ function(amigobot_add_library name)
     RUNTIME DESTINATION ${CATKIN_GLOBAL_BIN_DESTINATION})
 endfunction()
 
-# A gtest unit (one file per unit under test).
-# Call the test helpers inside if(CATKIN_ENABLE_TESTING).
+# A gtest unit (one file per unit under test). Call the test helpers inside
+# if(CATKIN_ENABLE_TESTING). The units of one fragment (core.cmake, aria.cmake, ...) link into
+# one executable, test_<fragment>_units, made by amigobot_link_unit_tests() once every fragment
+# has given its units their libraries: linking ~90 executables against MRPT and ROS was most of
+# the test build. NAME is an object library that carries the unit's own links, definitions and
+# dependencies (target_link_libraries(NAME ...) etc. work as on an executable); run one unit with
+# test_<fragment>_units --gtest_filter='Suite.*'. Sources under test/integration (each a device
+# driven through an emulator for tens of seconds) keep their own executable NAME, so make's jobs
+# run them side by side.
 function(amigobot_add_unit_test name)
-  catkin_add_gtest(${name} ${ARGN})
-  target_link_libraries(${name} ${GTEST_MAIN_LIBRARIES})
+  list(GET ARGN 0 first_source)
+  if(first_source MATCHES "^test/integration/")
+    catkin_add_gtest(${name} ${ARGN})
+    target_link_libraries(${name} ${GTEST_MAIN_LIBRARIES})
+  else()
+    add_library(${name} OBJECT EXCLUDE_FROM_ALL ${ARGN})
+    target_link_libraries(${name} ${GTEST_LIBRARIES})
+    get_filename_component(group ${CMAKE_CURRENT_LIST_FILE} NAME_WE)
+    set_property(GLOBAL APPEND PROPERTY AMIGOBOT_UNITS_${group} ${name})
+    set_property(GLOBAL APPEND PROPERTY AMIGOBOT_UNIT_GROUPS ${group})
+  endif()
   target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
+endfunction()
+
+# One gtest executable per fragment for the units amigobot_add_unit_test collected and not yet
+# linked (called before plain CMake's early return and again at the end).
+function(amigobot_link_unit_tests)
+  if(NOT CATKIN_ENABLE_TESTING)
+    return()
+  endif()
+  get_property(groups GLOBAL PROPERTY AMIGOBOT_UNIT_GROUPS)
+  list(REMOVE_DUPLICATES groups)
+  foreach(group ${groups})
+    get_property(linked GLOBAL PROPERTY AMIGOBOT_UNITS_LINKED_${group})
+    if(linked)
+      continue()
+    endif()
+    get_property(units GLOBAL PROPERTY AMIGOBOT_UNITS_${group})
+    # An executable needs one source of its own; the units' objects come with the links below.
+    set(anchor ${CMAKE_CURRENT_BINARY_DIR}/test_${group}_units.cpp)
+    file(WRITE ${anchor} "// The gtest units of cmake/${group}.cmake: ${units}\n")
+    catkin_add_gtest(test_${group}_units ${anchor})
+    target_link_libraries(test_${group}_units ${units} ${GTEST_MAIN_LIBRARIES})
+    set_property(GLOBAL PROPERTY AMIGOBOT_UNITS_LINKED_${group} TRUE)
+  endforeach()
 endfunction()
 
 # A gtest rostest: FILE.test runs the executable NAME built from the sources.
