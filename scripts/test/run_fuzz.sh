@@ -111,7 +111,7 @@ fuzz_one() {
       junit "$name" fail "build failed" "$LOG"; return 1
     fi
   fi
-  CORPUS=$CORPUS seeds "$name"
+  seeds "$name"  # seeds and seed write into this function's local CORPUS (bash scopes dynamically)
   local dict=(); [ "$name" = packet_parser ] && dict=(-dict="$ROOT/test/fuzz/aria.dict")
   local length=(-max_total_time="${SECONDS_EACH:-0}"); [ "$MODE" = --runs ] && length=(-runs="${RUNS[$name]}")
   if (cd "$OUT" && "$BIN" "${length[@]}" "${dict[@]}" -max_len=4096 -rss_limit_mb=1024 -artifact_prefix="$OUT/artifacts/" \
