@@ -75,42 +75,19 @@ void applyImplicitBand(const ControllerConfig& config, const DiamondSet& diamond
 }  // namespace
 
 PaperController::PaperController(const ControllerConfig& config, bool fixed_rho)
-    : config_(config), fixed_rho_(fixed_rho), diamond_(config.v_max, config.w_max), gains_(gainsOf(config)),
-      estimator_(config.estimator) {}
+    : BoundedLaw(config), fixed_rho_(fixed_rho), gains_(gainsOf(config)) {}
 
-void PaperController::reset() {
-  estimator_ = VelocityEstimator(config_.estimator);
-  envelope_.reset();
+void PaperController::forgetLawState() {
   conflict_ = 0.0;
   passing_side_ = 0;
-  replay_.clear();
 }
 
-void PaperController::restart(double start_ratio) {
-  reset();
-  envelope_.restart(start_ratio);
-}
-
-void PaperController::setConfig(const ControllerConfig& config) {
-  reconfigureEstimator(config_.estimator, config.estimator, &estimator_);
-  config_ = config;
-  diamond_ = DiamondSet(config.v_max, config.w_max);
-  gains_ = gainsOf(config);
-  // (13) keeps rho >= rho_inf; a raised rho_inf below the current rho would make
-  // lambda (rho - rho_inf) in (9) push the robot away from the target.
-  envelope_.raiseTo(config.rho_inf);
-}
-
-ControllerOutput PaperController::invalid(double t, std::string why) {
-  replay_.remember(t, Twist2(), config_.max_prediction);  // the caller commands zero
-  return invalidOutput(t, envelope_.rho(), std::move(why));
-}
+void PaperController::configureLaw() { gains_ = gainsOf(config_); }
 
 ControllerOutput PaperController::step(double t, const PoseSample& robot, const TargetSample& target,
                                        const std::vector<Disk>& obstacles) {
   ControllerOutput out;
-  const OpenedStep opened =
-      openStep(t, robot, target, config_, envelope_.timeWentBack(t), replay_, &estimator_, &out);
+  const OpenedStep opened = openStep(t, robot, target, &out);
   if (!opened.error.empty()) return invalid(t, opened.error);
   const Pose2& pose = opened.pose;
   const Eigen::Vector2d& heading = opened.heading;
@@ -173,7 +150,7 @@ ControllerOutput PaperController::step(double t, const PoseSample& robot, const 
   const auto saturated = diamond_.saturate(out.u_d);                     // (12)
   if (!saturated) return invalid(t, "desired command is not finite");
   out.u = *saturated;
-  replay_.remember(t, out.u, config_.max_prediction);
+  applied(t, out.u);
 
   const double alignment = e_hat.dot(out.u_c);
   const double clipping = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega);
