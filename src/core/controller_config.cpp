@@ -83,6 +83,12 @@ const FieldTable<ControllerConfig>& controllerFields() {
   return table;
 }
 
+bool ControllerConfig::obstacleVelocities() const {
+  if (moving_obstacles) return true;
+  const LawEntry* entry = findLaw(law);
+  return entry && entry->obstacle_velocities;
+}
+
 std::string ControllerConfig::validate() const {
   const std::string bad = checkFields(controllerFields(), *this);
   if (!bad.empty()) return bad;

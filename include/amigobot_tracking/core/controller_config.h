@@ -90,11 +90,11 @@ struct ControllerConfig {
   bool compensate_pose_age = false;    // move the pose forward along the commands applied over its age
   double max_prediction = 0.5;         // [s] ages beyond this are not extrapolated further
 
-  bool recommended() const { return law == "recommended"; }
-  // Whether obstacle velocities are used: by the recommended law whenever a disk carries one (its
-  // barrier rows and its field), by the paper's (10) only with moving_obstacles. On the robot the
-  // laser disks carry the tracker's velocities only with moving_obstacles (tracking_node.cpp says why).
-  bool obstacleVelocities() const { return moving_obstacles || recommended(); }
+  // Whether obstacle velocities are used: with moving_obstacles, or whenever a disk carries one
+  // by a law the registry says does so (law_registry.h's obstacle_velocities: the recommended
+  // law's barrier rows and field). On the robot the laser disks carry the tracker's velocities
+  // only with moving_obstacles (tracking_node.cpp says why).
+  bool obstacleVelocities() const;
   // The radius used in (10): R, or R + r when body_safe.
   double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
   // Empty when valid, otherwise "key: reason" naming the first bad field (the table's
