@@ -109,18 +109,18 @@ ControllerOutput PaperController::step(double t, const PoseSample& robot, const 
   const double radius = config_.effectiveRadius();
   const AvoidanceResult avoidance =
       config_.moving_obstacles
-          ? movingRepulsiveTerm(out.p_r, obstacles, radius, config_.delta, config_.obstacle_horizon, heading,
+          ? movingRepulsiveTerm(out.p_r, obstacles, radius, config_.delta, config_.paper.obstacle_horizon, heading,
                                 config_.min_margin)
           : repulsiveTerm(out.p_r, obstacles, radius, config_.delta, heading, config_.min_margin);
   out.u_c = avoidance.u_c;
   bool escape_full = false;
-  if (config_.tangential_avoidance) {
+  if (config_.paper.tangential_avoidance) {
     const TangentialResult tangential = tangentialTerm(out.p_r, obstacles, radius, config_.delta, e_hat,
-                                                       passing_side_, config_.tangential_hysteresis,
+                                                       passing_side_, config_.paper.tangential_hysteresis,
                                                        config_.min_margin);
     passing_side_ = tangential.side;
     out.passing_side = tangential.side;
-    out.u_t = config_.k_t * tangential.u_t;
+    out.u_t = config_.paper.k_t * tangential.u_t;
     escape_full = tangential.full_strength;
   }
   // The tracking part of (9).
@@ -129,9 +129,9 @@ ControllerOutput PaperController::step(double t, const PoseSample& robot, const 
   // The escape redirects the attraction the barrier cancels; it needs no more than k_t times
   // that. Uncapped it grows like u_c (1/margin) and, after the diamond's radial scaling, takes
   // the radial barrier's share: 3 contacts with crossing obstacles on crossing_obstacles.yaml.
-  const double escape_cap = config_.k_t * attraction.norm() / config_.k_o;
+  const double escape_cap = config_.paper.k_t * attraction.norm() / config_.k_o;
   if (escape_full) {
-    out.u_t *= escape_cap / config_.k_t;  // a group of disks: the whole cap (u_t was k_t times a unit vector)
+    out.u_t *= escape_cap / config_.paper.k_t;  // a group of disks: the whole cap (u_t was k_t times a unit vector)
   } else if (out.u_t.norm() > escape_cap) {
     out.u_t *= escape_cap / out.u_t.norm();
   }
