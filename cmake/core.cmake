@@ -9,6 +9,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/prescribed_performance.cpp
   src/core/controller.cpp
   src/core/performance_envelope.cpp
+  src/core/bounded_law.cpp
   src/core/paper_controller.cpp
   src/core/recommended_controller.cpp
   src/core/proportional_controller.cpp

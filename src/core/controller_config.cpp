@@ -13,6 +13,7 @@ namespace {
 
 FieldTable<ControllerConfig> makeTable() {
   using C = ControllerConfig;
+  using P = PaperOptions;
   FieldTable<C> t = {
       field("robot_radius", &C::robot_radius, "m", "body radius R", boundedRadius()),
       field("offset", &C::offset, "m", "distance r of the controlled point ahead of the centre", positive()),
@@ -54,13 +55,14 @@ FieldTable<ControllerConfig> makeTable() {
             "recommended law: the field sees a moving disk along its path over this long (0: where it is)",
             durationOrZero()),
       // Beyond the paper: each default is the paper's law.
-      field("tangential_avoidance", &C::tangential_avoidance, "-", "tangential escape from the saddle behind a disk"),
-      field("k_t", &C::k_t, "-", "gain of the tangential term relative to u_c", nonNegative()),
-      field("tangential_hysteresis", &C::tangential_hysteresis, "-",
-            "sine margin before the passing side may switch", interval(0.0, false, 1.0, true)),
+      nested(&C::paper, field("tangential_avoidance", &P::tangential_avoidance, "-",
+                              "tangential escape from the saddle behind a disk")),
+      nested(&C::paper, field("k_t", &P::k_t, "-", "gain of the tangential term relative to u_c", nonNegative())),
+      nested(&C::paper, field("tangential_hysteresis", &P::tangential_hysteresis, "-",
+                              "sine margin before the passing side may switch", interval(0.0, false, 1.0, true))),
       field("moving_obstacles", &C::moving_obstacles, "-", "obstacle velocities in (10): feed-forward, wider band"),
-      field("obstacle_horizon", &C::obstacle_horizon, "s", "detection band grows by approach speed times this",
-            durationOrZero()),
+      nested(&C::paper, field("obstacle_horizon", &P::obstacle_horizon, "s",
+                              "detection band grows by approach speed times this", durationOrZero())),
       field("predict_target", &C::predict_target, "-", "p_d = latest sample + v_hat x sample age"),
       field("compensate_pose_age", &C::compensate_pose_age, "-",
             "move the pose forward along the commands applied over its age"),
@@ -81,6 +83,12 @@ const std::vector<std::string>& controlLawNames() {
 const FieldTable<ControllerConfig>& controllerFields() {
   static const FieldTable<ControllerConfig> table = makeTable();
   return table;
+}
+
+bool ControllerConfig::obstacleVelocities() const {
+  if (moving_obstacles) return true;
+  const LawEntry* entry = findLaw(law);
+  return entry && entry->obstacle_velocities;
 }
 
 std::string ControllerConfig::validate() const {

@@ -12,17 +12,19 @@ namespace {
 
 std::vector<LawEntry>& entries() {
   static std::vector<LawEntry> list = {
+      // name, summary, has_rho_bound, on_robot, band_implicit, obstacle_velocities, provider, factory
       {"recommended", "the recommended law: navigation field, safety filter over the diamond, (13')", true, true,
-       false, "core", [](const LawSetup& s) { return std::make_unique<RecommendedController>(s.controller); }},
-      {"paper", "the paper's law, eqs. (9)-(13)", true, true, true, "core",
+       false, true, "core", [](const LawSetup& s) { return std::make_unique<RecommendedController>(s.controller); }},
+      {"paper", "the paper's law, eqs. (9)-(13)", true, true, true, false, "core",
        [](const LawSetup& s) { return std::make_unique<PaperController>(s.controller); }},
       {"fixed_rho", "the paper's (9)-(12) with rho following the prescribed decay only (no adaptation)", true,
-       true, true, "core", [](const LawSetup& s) { return std::make_unique<PaperController>(s.controller, true); }},
+       true, true, false, "core",
+       [](const LawSetup& s) { return std::make_unique<PaperController>(s.controller, true); }},
       {"proportional", "baseline: feedback linearisation + k_p e + the same u_c and saturation", false, false,
-       false, "core",
+       false, false, "core",
        [](const LawSetup& s) { return std::make_unique<ProportionalController>(s.controller, s.proportional_gain); }},
       {"mrpt_reactive", "peer: MRPT's CReactiveNavigationSystem re-targeted at the target", false, false, false,
-       "sim_mrpt", nullptr},
+       false, "sim_mrpt", nullptr},
   };
   return list;
 }

@@ -75,42 +75,19 @@ void applyImplicitBand(const ControllerConfig& config, const DiamondSet& diamond
 }  // namespace
 
 PaperController::PaperController(const ControllerConfig& config, bool fixed_rho)
-    : config_(config), fixed_rho_(fixed_rho), diamond_(config.v_max, config.w_max), gains_(gainsOf(config)),
-      estimator_(config.estimator) {}
+    : BoundedLaw(config), fixed_rho_(fixed_rho), gains_(gainsOf(config)) {}
 
-void PaperController::reset() {
-  estimator_ = VelocityEstimator(config_.estimator);
-  envelope_.reset();
+void PaperController::forgetLawState() {
   conflict_ = 0.0;
   passing_side_ = 0;
-  replay_.clear();
 }
 
-void PaperController::restart(double start_ratio) {
-  reset();
-  envelope_.restart(start_ratio);
-}
-
-void PaperController::setConfig(const ControllerConfig& config) {
-  reconfigureEstimator(config_.estimator, config.estimator, &estimator_);
-  config_ = config;
-  diamond_ = DiamondSet(config.v_max, config.w_max);
-  gains_ = gainsOf(config);
-  // (13) keeps rho >= rho_inf; a raised rho_inf below the current rho would make
-  // lambda (rho - rho_inf) in (9) push the robot away from the target.
-  envelope_.raiseTo(config.rho_inf);
-}
-
-ControllerOutput PaperController::invalid(double t, std::string why) {
-  replay_.remember(t, Twist2(), config_.max_prediction);  // the caller commands zero
-  return invalidOutput(t, envelope_.rho(), std::move(why));
-}
+void PaperController::configureLaw() { gains_ = gainsOf(config_); }
 
 ControllerOutput PaperController::step(double t, const PoseSample& robot, const TargetSample& target,
                                        const std::vector<Disk>& obstacles) {
   ControllerOutput out;
-  const OpenedStep opened =
-      openStep(t, robot, target, config_, envelope_.timeWentBack(t), replay_, &estimator_, &out);
+  const OpenedStep opened = openStep(t, robot, target, &out);
   if (!opened.error.empty()) return invalid(t, opened.error);
   const Pose2& pose = opened.pose;
   const Eigen::Vector2d& heading = opened.heading;
@@ -132,18 +109,18 @@ ControllerOutput PaperController::step(double t, const PoseSample& robot, const 
   const double radius = config_.effectiveRadius();
   const AvoidanceResult avoidance =
       config_.moving_obstacles
-          ? movingRepulsiveTerm(out.p_r, obstacles, radius, config_.delta, config_.obstacle_horizon, heading,
+          ? movingRepulsiveTerm(out.p_r, obstacles, radius, config_.delta, config_.paper.obstacle_horizon, heading,
                                 config_.min_margin)
           : repulsiveTerm(out.p_r, obstacles, radius, config_.delta, heading, config_.min_margin);
   out.u_c = avoidance.u_c;
   bool escape_full = false;
-  if (config_.tangential_avoidance) {
+  if (config_.paper.tangential_avoidance) {
     const TangentialResult tangential = tangentialTerm(out.p_r, obstacles, radius, config_.delta, e_hat,
-                                                       passing_side_, config_.tangential_hysteresis,
+                                                       passing_side_, config_.paper.tangential_hysteresis,
                                                        config_.min_margin);
     passing_side_ = tangential.side;
     out.passing_side = tangential.side;
-    out.u_t = config_.k_t * tangential.u_t;
+    out.u_t = config_.paper.k_t * tangential.u_t;
     escape_full = tangential.full_strength;
   }
   // The tracking part of (9).
@@ -152,9 +129,9 @@ ControllerOutput PaperController::step(double t, const PoseSample& robot, const 
   // The escape redirects the attraction the barrier cancels; it needs no more than k_t times
   // that. Uncapped it grows like u_c (1/margin) and, after the diamond's radial scaling, takes
   // the radial barrier's share: 3 contacts with crossing obstacles on crossing_obstacles.yaml.
-  const double escape_cap = config_.k_t * attraction.norm() / config_.k_o;
+  const double escape_cap = config_.paper.k_t * attraction.norm() / config_.k_o;
   if (escape_full) {
-    out.u_t *= escape_cap / config_.k_t;  // a group of disks: the whole cap (u_t was k_t times a unit vector)
+    out.u_t *= escape_cap / config_.paper.k_t;  // a group of disks: the whole cap (u_t was k_t times a unit vector)
   } else if (out.u_t.norm() > escape_cap) {
     out.u_t *= escape_cap / out.u_t.norm();
   }
@@ -173,7 +150,7 @@ ControllerOutput PaperController::step(double t, const PoseSample& robot, const 
   const auto saturated = diamond_.saturate(out.u_d);                     // (12)
   if (!saturated) return invalid(t, "desired command is not finite");
   out.u = *saturated;
-  replay_.remember(t, out.u, config_.max_prediction);
+  applied(t, out.u);
 
   const double alignment = e_hat.dot(out.u_c);
   const double clipping = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega);

@@ -20,43 +20,21 @@ Eigen::Vector2d slewLimited(const Eigen::Vector2d& from, const Eigen::Vector2d& 
 
 }  // namespace
 
-RecommendedController::RecommendedController(const ControllerConfig& config)
-    : config_(config), diamond_(config.v_max, config.w_max), estimator_(config.estimator) {}
+RecommendedController::RecommendedController(const ControllerConfig& config) : BoundedLaw(config) {}
 
-void RecommendedController::reset() {
-  estimator_ = VelocityEstimator(config_.estimator);
-  envelope_.reset();
+void RecommendedController::forgetLawState() {
   shortfall_ = 0.0;
   feed_forward_ = Eigen::Vector2d::Constant(NAN);
   smoothed_velocity_ = Eigen::Vector2d::Constant(NAN);
   last_command_ = Twist2{};
   noise_variance_ = 0.0;
   last_sample_stamp_ = NAN;
-  replay_.clear();
-}
-
-void RecommendedController::restart(double start_ratio) {
-  reset();
-  envelope_.restart(start_ratio);
-}
-
-void RecommendedController::setConfig(const ControllerConfig& config) {
-  reconfigureEstimator(config_.estimator, config.estimator, &estimator_);
-  config_ = config;
-  diamond_ = DiamondSet(config.v_max, config.w_max);
-  envelope_.raiseTo(config.rho_inf);  // (13') keeps rho >= rho_inf too
-}
-
-ControllerOutput RecommendedController::invalid(double t, std::string why) {
-  replay_.remember(t, Twist2(), config_.max_prediction);  // the caller commands zero
-  return invalidOutput(t, envelope_.rho(), std::move(why));
 }
 
 ControllerOutput RecommendedController::step(double t, const PoseSample& robot, const TargetSample& target,
                                              const std::vector<Disk>& obstacles) {
   ControllerOutput out;
-  const OpenedStep opened =
-      openStep(t, robot, target, config_, envelope_.timeWentBack(t), replay_, &estimator_, &out);
+  const OpenedStep opened = openStep(t, robot, target, &out);
   if (!opened.error.empty()) return invalid(t, opened.error);
   if (opened.sampled) observeNoise(target, opened.jumped);
   const double h = envelope_.elapsed(t);
@@ -68,7 +46,7 @@ ControllerOutput RecommendedController::step(double t, const PoseSample& robot, 
   }, &out.active);
   out.rho = envelope_.rho();
   if (!command(opened.pose, obstacles, h, out)) return invalid(t, "desired command is not finite");
-  replay_.remember(t, out.u, config_.max_prediction);
+  applied(t, out.u);
   return out;
 }
 

@@ -156,7 +156,7 @@ MonteCarloSummary summarizeMonteCarlo(const Scenario& base, const MonteCarloOpti
   sum.options = options;
   sum.variant = base.setup.law;
   sum.body_safe = base.setup.controller.body_safe;
-  sum.tangential_avoidance = base.setup.controller.tangential_avoidance;
+  sum.tangential_avoidance = base.setup.controller.paper.tangential_avoidance;
   sum.moving_obstacles = base.setup.controller.moving_obstacles;
   double sum_ase = 0.0, sum_aae = 0.0, sum_true_ase = 0.0, sum_true_ise = 0.0;
   const std::vector<VariantResult> results = runVariants(base, options);

@@ -9,23 +9,10 @@
 #include "amigobot_tracking/core/input_file.h"
 #include "amigobot_tracking/core/robot_description.h"
 #include "amigobot_tracking/sim/scenario.h"
+#include "amigobot_tracking/sim/yaml_section.h"
 
 namespace amigobot_tracking {
 namespace sim {
-namespace {
-
-double number(const YAML::Node& node, const std::string& file, const std::string& key) {
-  try {
-    const double v = node.as<double>();
-    if (std::isnan(v)) throw YAML::Exception(node.Mark(), "NaN");
-    return v;
-  } catch (const YAML::Exception&) {
-    throw ScenarioError(file + ":" + std::to_string(node.Mark().line + 1) + ": " + key + ": expected a number");
-  }
-}
-
-}  // namespace
-
 RobotDynamics parseRobotDynamics(const std::string& text, const std::string& file) {
   YAML::Node root;
   try {
@@ -37,9 +24,9 @@ RobotDynamics parseRobotDynamics(const std::string& text, const std::string& fil
   RobotDynamics d;
   d.ideal = false;
   for (const core::Field<core::ActuatorLimits>& f : core::actuatorLimitsFields())
-    if (root[f.key]) f.set(d.limits, number(root[f.key], file, f.key));
+    if (root[f.key]) f.set(d.limits, readNumber(file, root[f.key], f.key, true));
   // ARIA's w = (R - L)/2 * DiffConvFactor [1/mm]: half the track is 1/DiffConvFactor mm.
-  if (root["diff_conv_factor"]) d.half_track = 1e-3 / number(root["diff_conv_factor"], file, "diff_conv_factor");
+  if (root["diff_conv_factor"]) d.half_track = 1e-3 / readNumber(file, root["diff_conv_factor"], "diff_conv_factor", true);
   const std::string error = core::validateActuatorLimits(d.limits, d.half_track);
   if (!error.empty()) throw ScenarioError(file + ": " + error);
   return d;

@@ -77,7 +77,7 @@ std::string metricsJson(const Scenario& scenario, const RunResult& result) {
   s["variant"] = setup.law;
   s["estimator"] = toString(setup.velocity_source);
   s["body_safe"] = c.body_safe;
-  s["tangential_avoidance"] = c.tangential_avoidance;
+  s["tangential_avoidance"] = c.paper.tangential_avoidance;
   s["moving_obstacles"] = c.moving_obstacles;
   s["predict_target"] = c.predict_target;
   s["compensate_pose_age"] = c.compensate_pose_age;

@@ -325,7 +325,7 @@ int main(int argc, char** argv) {
       std::snprintf(ratio, sizeof ratio, "%.3f", m.max_e_over_rho);
     const core::ControllerConfig& c = scenario.setup.controller;
     std::string beyond;  // the switches beyond the paper that are on
-    for (const auto& [on, name] : {std::pair<bool, const char*>{c.tangential_avoidance, "tangential"},
+    for (const auto& [on, name] : {std::pair<bool, const char*>{c.paper.tangential_avoidance, "tangential"},
                                    {c.moving_obstacles, "moving_obstacles"},
                                    {c.predict_target, "predict_target"},
                                    {c.compensate_pose_age, "compensate_pose_age"}})

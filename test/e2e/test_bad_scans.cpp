@@ -26,6 +26,7 @@
 #include "circle_target.h"
 #include "judge.h"
 #include "one_turn_scan.h"
+#include "periodic_thread.h"
 #include "rosout_log.h"
 
 using e2e::CircleTarget;
@@ -53,31 +54,7 @@ sensor_msgs::LaserScan spoiled(const std::function<void(sensor_msgs::LaserScan&)
 // publication, so the last scan of the old kind left just before it returns.
 class ScanSource {
  public:
-  explicit ScanSource(ros::NodeHandle& nh) : pub_(nh.advertise<sensor_msgs::LaserScan>("/scan", 2)) {
-    scan_ = goodScan();
-    thread_ = std::thread([this] {
-      ros::WallRate rate(10.0);
-      while (!stop_ && ros::ok()) {
-        {
-          std::unique_lock<std::mutex> lock(mutex_);
-          scan_.header.stamp = ros::Time::now();
-          pub_.publish(scan_);
-          if (pending_) {
-            scan_ = next_;
-            pending_ = false;
-            swapped_.notify_all();
-          }
-        }
-        rate.sleep();
-      }
-    });
-  }
-  ~ScanSource() {
-    stop_ = true;
-    thread_.join();
-  }
-  ScanSource(const ScanSource&) = delete;
-  ScanSource& operator=(const ScanSource&) = delete;
+  explicit ScanSource(ros::NodeHandle& nh) : pub_(nh.advertise<sensor_msgs::LaserScan>("/scan", 2)) {}
 
   void switchTo(const sensor_msgs::LaserScan& scan) {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -87,13 +64,23 @@ class ScanSource {
   }
 
  private:
+  void publish() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    scan_.header.stamp = ros::Time::now();
+    pub_.publish(scan_);
+    if (pending_) {
+      scan_ = next_;
+      pending_ = false;
+      swapped_.notify_all();
+    }
+  }
+
   ros::Publisher pub_;
   std::mutex mutex_;
   std::condition_variable swapped_;
-  sensor_msgs::LaserScan scan_, next_;
+  sensor_msgs::LaserScan scan_ = goodScan(), next_;
   bool pending_ = false;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  e2e::PeriodicThread thread_{10.0, [this] { publish(); }};  // last: stops first
 };
 
 struct BadScan {

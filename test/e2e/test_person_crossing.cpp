@@ -22,12 +22,11 @@
 #include <thread>
 
 #include <ros/ros.h>
-#include <tf2_ros/transform_broadcaster.h>
 
-#include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/world/world.h"
 #include "experiment.h"
 #include "judge.h"
+#include "target_publisher.h"
 #include "world_judge.h"
 
 using e2e::EmulatorStatus;
@@ -44,24 +43,6 @@ constexpr double kRobotRadius = 0.18;                     // [m] R
 // The target's tf: at kStart until startAt(t), then along the line at kSpeed to kEnd.
 class LineTarget {
  public:
-  LineTarget() {
-    thread_ = std::thread([this] {
-      ros::WallRate rate(50.0);
-      while (!stop_ && ros::ok()) {
-        const ros::Time now = ros::Time::now();
-        const Eigen::Vector2d p = at(now.toSec());
-        tf_.sendTransform(amigobot_tracking::ros_layer::toTransform("map", "target", {p.x(), p.y(), 0.0}, now));
-        rate.sleep();
-      }
-    });
-  }
-  ~LineTarget() {
-    stop_ = true;
-    thread_.join();
-  }
-  LineTarget(const LineTarget&) = delete;
-  LineTarget& operator=(const LineTarget&) = delete;
-
   void startAt(double ros_time) { start_ = ros_time; }
   Eigen::Vector2d at(double ros_time) const {
     const double walked = std::clamp(kSpeed * (ros_time - start_.load()), 0.0, (kEnd - kStart).norm());
@@ -69,10 +50,11 @@ class LineTarget {
   }
 
  private:
-  tf2_ros::TransformBroadcaster tf_;
   std::atomic<double> start_{std::numeric_limits<double>::infinity()};
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  e2e::TargetPublisher publisher_{[this](double t) {
+    const Eigen::Vector2d p = at(t);
+    return amigobot_tracking::core::Pose2{p.x(), p.y(), 0.0};
+  }};  // last: stops first
 };
 
 // The first emulator time >= `from` at which the person crosses y = 0 going north (10 ms steps).

@@ -34,7 +34,7 @@ SaddleRun runSaddle(bool tangential) {
   ClosedLoopSetup setup;  // real-robot defaults (Section 5.3 gains) with room to catch up:
   setup.controller.v_max = 0.6;  // the target runs at 0.3 m/s, the paper's v_bar
   setup.controller.w_max = 1.6;
-  setup.controller.tangential_avoidance = tangential;
+  setup.controller.paper.tangential_avoidance = tangential;
   setup.initial_pose = {0.0, 0.0, 0.0};
   setup.obstacles = {{{2.0, 0.0}, 0.3}};
   setup.duration = 40.0;
@@ -223,7 +223,7 @@ TEST(Tangential, IdenticalResultsWhereNothingConflicts) {
   const CircleReference circle({0.0, 0.0}, 2.0, 60.0);
   std::vector<ControllerOutput> a, b;
   runClosedLoop(setup, circle, [&](const ClosedLoopStep& s) { a.push_back(s.output); });
-  setup.controller.tangential_avoidance = true;
+  setup.controller.paper.tangential_avoidance = true;
   setup.controller.moving_obstacles = true;  // static obstacle: identical too
   runClosedLoop(setup, circle, [&](const ClosedLoopStep& s) { b.push_back(s.output); });
   ASSERT_EQ(a.size(), b.size());

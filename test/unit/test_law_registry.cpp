@@ -1,5 +1,5 @@
 // The law registry: one name per law, every law built from it answers to its own name, and
-// the facts the tools read (rho bound, robot law) agree with what the laws do.
+// the facts the tools read (rho bound, robot law, obstacle velocities) agree with what the laws do.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,6 +62,21 @@ TEST(LawRegistry, TheControllerLawKeyTakesTheRobotLaws) {
   ControllerConfig c;
   c.law = "proportional";  // a comparison baseline, not run on the robot
   EXPECT_NE(c.validate().find("law"), std::string::npos);
+}
+
+// Whether a law uses the disks' velocities is the registry's: the recommended law always (its
+// barrier rows and field), the paper's laws only with moving_obstacles.
+TEST(LawRegistry, ObstacleVelocitiesAreTheLawsPropertyOrTheSwitch) {
+  for (const std::string& name : robotLawNames()) {
+    ControllerConfig c;
+    c.law = name;
+    EXPECT_EQ(c.obstacleVelocities(), findLaw(name)->obstacle_velocities) << name;
+    c.moving_obstacles = true;
+    EXPECT_TRUE(c.obstacleVelocities()) << name;
+  }
+  EXPECT_TRUE(findLaw("recommended")->obstacle_velocities);
+  EXPECT_FALSE(findLaw("paper")->obstacle_velocities);
+  EXPECT_FALSE(findLaw("fixed_rho")->obstacle_velocities);
 }
 
 // fixed_rho is the paper's law without (13)'s relaxation: under a lasting conflict (a disk

@@ -56,7 +56,7 @@ TEST(SimClosedLoop, ShippedScenariosStayFiniteInsideTheDiamondAndInsideRho) {
 // own, so the envelope rule must not fire there (with 0.95 it fired on most steps).
 TEST(SimClosedLoop, SustainedConflictOnTheSaddleNeedsNoEnvelopeRule) {
   const sim::Scenario s = shipped("saddle_line", 30.0);
-  ASSERT_FALSE(s.setup.controller.tangential_avoidance);
+  ASSERT_FALSE(s.setup.controller.paper.tangential_avoidance);
   const sim::RunResult r = sim::runScenario(s, false);
   expectSane(r.summary.metrics, "saddle_line");
   EXPECT_GT(r.summary.metrics.max_e_over_rho, 0.95);  // the conflict did press the envelope

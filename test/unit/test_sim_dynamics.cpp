@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "amigobot_tracking/sim/robot_description.h"
@@ -75,6 +76,15 @@ TEST(SimDynamics, TheRobotDescriptionGivesTheDynamics) {
     EXPECT_NE(std::string(e.what()).find("bad_robot.yaml"), std::string::npos) << e.what();
   }
   EXPECT_THROW(sim::loadRobotDynamics(writeTemp("word.yaml", "latency: soon\n")), sim::ScenarioError);
+  // A ramp may be .inf (no limit); NaN is refused by name.
+  EXPECT_EQ(sim::parseRobotDynamics("trans_accel: .inf\n", "inf.yaml").limits.trans_accel,
+            std::numeric_limits<double>::infinity());
+  try {
+    sim::parseRobotDynamics("latency: .nan\n", "nan.yaml");
+    FAIL() << "accepted latency NaN";
+  } catch (const sim::ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("nan.yaml:1: latency"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(sim::loadScenario(kScenarios + "clutter/doorway.yaml", {"robot.description=/no/such/robot.yaml"}),
                sim::ScenarioError);
 }

@@ -35,7 +35,7 @@ sim::Scenario shipped(const std::string& name) {
 sim::RunMetrics run(const sim::Scenario& s) { return sim::runScenario(s, false).summary.metrics; }
 
 sim::RunMetrics withTangential(sim::Scenario s, bool on) {
-  s.setup.controller.tangential_avoidance = on;
+  s.setup.controller.paper.tangential_avoidance = on;
   return run(s);
 }
 
@@ -95,7 +95,7 @@ TEST(PoseAgeCompensation, ReplaysEveryCommandSinceTheStamp) {
 // Near contact u_c grows like 1/margin; the escape stays bounded by the attraction it redirects.
 TEST(TangentialCap, EscapeNeverExceedsTheAttraction) {
   core::ControllerConfig config;
-  config.tangential_avoidance = true;
+  config.paper.tangential_avoidance = true;
   for (double margin : {0.2, 0.05, 0.005}) {
     core::PerformanceController controller(config);
     const core::Disk disk{{2.0, 0.0}, 0.3};
@@ -106,7 +106,7 @@ TEST(TangentialCap, EscapeNeverExceedsTheAttraction) {
     ASSERT_TRUE(out.valid);
     const Eigen::Vector2d attraction = out.u_r - config.k_o * (out.u_c + out.u_t);
     EXPECT_GT(out.u_t.norm(), 0.0) << margin;
-    EXPECT_LE(config.k_o * out.u_t.norm(), config.k_t * attraction.norm() + 1e-12) << margin;
+    EXPECT_LE(config.k_o * out.u_t.norm(), config.paper.k_t * attraction.norm() + 1e-12) << margin;
     EXPECT_NEAR(out.u_t.dot(out.u_c), 0.0, 1e-9 * out.u_c.norm()) << margin;  // still purely tangential
   }
 }
@@ -136,7 +136,7 @@ TEST(StallMetric, NetHeadwayNotCommandedSpeed) {
 // Targets on the symmetric saddle: the paper's law stalls, the escape does not.
 TEST(SaddleScenario, EscapeMeetsTheIssueTargets) {
   const sim::Scenario s = shipped("saddle_line");
-  ASSERT_FALSE(s.setup.controller.tangential_avoidance) << "the file ships the paper's law";
+  ASSERT_FALSE(s.setup.controller.paper.tangential_avoidance) << "the file ships the paper's law";
   const sim::RunMetrics paper = withTangential(s, false);
   const sim::RunMetrics escape = withTangential(s, true);
   EXPECT_GT(paper.longest_stall, 0.5);  // the case is the deadlock it is meant to be
@@ -274,9 +274,9 @@ TEST(GroupsOfDisks, EscapeBeatsThePaperLawOverVariants) {
   for (const char* name : {"ring", "pair_cluster", "experiment_5_3"}) {
     sim::Scenario s = shipped(name);
     s.setup.controller.body_safe = true;
-    s.setup.controller.tangential_avoidance = false;
+    s.setup.controller.paper.tangential_avoidance = false;
     const sim::MonteCarloSummary paper = sim::summarizeMonteCarlo(s, options);
-    s.setup.controller.tangential_avoidance = true;
+    s.setup.controller.paper.tangential_avoidance = true;
     const sim::MonteCarloSummary escape = sim::summarizeMonteCarlo(s, options);
     EXPECT_LE(escape.mean_true_ase, paper.mean_true_ase) << name;
     EXPECT_LT(escape.worst_stall, paper.worst_stall) << name;

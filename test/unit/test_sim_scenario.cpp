@@ -220,13 +220,13 @@ simulation: {duration: 1.0}
 // The switches beyond the paper, the robot pose's timing, moving obstacles.
 TEST(SimScenario, BeyondThePaperSwitchesDefaultToThePaper) {
   const sim::Scenario s = sim::parseScenario(kMinimum, "min.yaml");
-  const core::ControllerConfig paper;
-  EXPECT_FALSE(s.setup.controller.tangential_avoidance);
+  const core::ControllerConfig defaults;
+  EXPECT_FALSE(s.setup.controller.paper.tangential_avoidance);
   EXPECT_FALSE(s.setup.controller.moving_obstacles);
   EXPECT_FALSE(s.setup.controller.predict_target);
   EXPECT_FALSE(s.setup.controller.compensate_pose_age);
-  EXPECT_EQ(s.setup.controller.k_t, paper.k_t);
-  EXPECT_EQ(s.setup.controller.tangential_hysteresis, paper.tangential_hysteresis);
+  EXPECT_EQ(s.setup.controller.paper.k_t, defaults.paper.k_t);
+  EXPECT_EQ(s.setup.controller.paper.tangential_hysteresis, defaults.paper.tangential_hysteresis);
   EXPECT_FALSE(s.setup.pose_sensor.active());
   EXPECT_TRUE(s.setup.obstacle_motions.empty());
 }
@@ -240,11 +240,11 @@ TEST(SimScenario, ReadsBeyondThePaperKeys) {
   text += "localization: {sample_period: 0.1, delay: 0.2}\n";
   const sim::Scenario s = sim::parseScenario(text, "beyond.yaml");
   const core::ControllerConfig& c = s.setup.controller;
-  EXPECT_TRUE(c.tangential_avoidance);
-  EXPECT_DOUBLE_EQ(c.k_t, 2.5);
-  EXPECT_DOUBLE_EQ(c.tangential_hysteresis, 0.4);
+  EXPECT_TRUE(c.paper.tangential_avoidance);
+  EXPECT_DOUBLE_EQ(c.paper.k_t, 2.5);
+  EXPECT_DOUBLE_EQ(c.paper.tangential_hysteresis, 0.4);
   EXPECT_TRUE(c.moving_obstacles);
-  EXPECT_DOUBLE_EQ(c.obstacle_horizon, 1.5);
+  EXPECT_DOUBLE_EQ(c.paper.obstacle_horizon, 1.5);
   EXPECT_TRUE(c.predict_target);
   EXPECT_TRUE(c.compensate_pose_age);
   EXPECT_DOUBLE_EQ(c.max_prediction, 0.8);
@@ -281,7 +281,7 @@ TEST(SimScenario, OverridesAreCheckedLikeTheFile) {
                                                                    "controller.tangential_avoidance=true"});
   EXPECT_EQ(s.setup.controller.k_d, 2.0);
   EXPECT_EQ(s.setup.sensor.delay, 0.1);
-  EXPECT_TRUE(s.setup.controller.tangential_avoidance);
+  EXPECT_TRUE(s.setup.controller.paper.tangential_avoidance);
   const auto refused = [](const std::string& assignment, const std::string& key) {
     try {
       sim::parseScenario(kMinimum, "bad.yaml", {assignment});

@@ -11,6 +11,20 @@
 namespace amigobot_tracking {
 namespace core {
 
+// The paper's law's own switches beyond the paper (paper_controller.h; fixed_rho too): each
+// default reproduces the paper exactly.
+struct PaperOptions {
+  bool tangential_avoidance = false;   // escape the saddle behind a disk (avoidance.h)
+  double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c;
+                                       // k_o |u_t| <= k_t |attraction of (9)|
+  double tangential_hysteresis = 0.6;  // [-] sine margin before the passing side may switch
+                                       // (0.2 flipped sides 4 times in 0.6 s on the saddle:
+                                       // near the disk a short e turns by more than 0.2 as the
+                                       // escape itself moves p_r sideways; docs/beyond_paper.md)
+  double obstacle_horizon = 1.0;       // [s] with moving_obstacles, (10)'s detection band grows
+                                       // by approach speed * horizon
+};
+
 struct ControllerConfig {
   // Robot.
   double robot_radius = 0.18;  // R [m]: AmigoBot body radius (ARIA RobotRadius 180 mm).
@@ -51,9 +65,8 @@ struct ControllerConfig {
   EstimatorConfig estimator;
 
   // Which law: a robot law of the registry (law_registry.h): "paper" ((9)-(13) as published,
-  // with the switches below), "fixed_rho" (the same without (13)'s adaptation) or "recommended"
-  // (recommended_law.h: a navigation field, a safety filter over the diamond and (13'); the
-  // switches tangential_avoidance, k_t, tangential_hysteresis and obstacle_horizon do not apply).
+  // with its options `paper`), "fixed_rho" (the same without (13)'s adaptation) or "recommended"
+  // (recommended_law.h: a navigation field, a safety filter over the diamond and (13')).
   std::string law = "paper";
   double barrier_rate = 5.333;         // [1/s] gamma of the recommended law's barrier rows (amigobot_sim --tune):
                                        // clearance' >= -gamma (clearance - min_margin)
@@ -76,25 +89,20 @@ struct ControllerConfig {
   // The base's dynamics the recommended law brakes with: not a parameter of its own, the robot
   // description's (config/robots/); defaults the AmigoBot's.
   ActuatorLimits actuator;
+  // The paper's law's options (its keys are read at this level: tangential_avoidance, k_t, ...).
+  PaperOptions paper;
   // Beyond the paper: each switch off reproduces the paper exactly.
-  bool tangential_avoidance = false;   // escape the saddle behind a disk (avoidance.h)
-  double k_t = 1.0;                    // [-] gain of the tangential term, relative to u_c;
-                                       // k_o |u_t| <= k_t |attraction of (9)|
-  double tangential_hysteresis = 0.6;  // [-] sine margin before the passing side may switch
-                                       // (0.2 flipped sides 4 times in 0.6 s on the saddle:
-                                       // near the disk a short e turns by more than 0.2 as the
-                                       // escape itself moves p_r sideways; docs/beyond_paper.md)
-  bool moving_obstacles = false;       // use obstacle velocities in (10) (avoidance.h)
-  double obstacle_horizon = 1.0;       // [s] detection band grows by approach speed * horizon
+  bool moving_obstacles = false;       // use obstacle velocities in (10) (avoidance.h), and on the
+                                       // robot the laser disks carry the tracker's velocities
   bool predict_target = false;         // p_d = latest sample + v_hat * (t - sample stamp)
   bool compensate_pose_age = false;    // move the pose forward along the commands applied over its age
   double max_prediction = 0.5;         // [s] ages beyond this are not extrapolated further
 
-  bool recommended() const { return law == "recommended"; }
-  // Whether obstacle velocities are used: by the recommended law whenever a disk carries one (its
-  // barrier rows and its field), by the paper's (10) only with moving_obstacles. On the robot the
-  // laser disks carry the tracker's velocities only with moving_obstacles (tracking_node.cpp says why).
-  bool obstacleVelocities() const { return moving_obstacles || recommended(); }
+  // Whether obstacle velocities are used: with moving_obstacles, or whenever a disk carries one
+  // by a law the registry says does so (law_registry.h's obstacle_velocities: the recommended
+  // law's barrier rows and field). On the robot the laser disks carry the tracker's velocities
+  // only with moving_obstacles (tracking_node.cpp says why).
+  bool obstacleVelocities() const;
   // The radius used in (10): R, or R + r when body_safe.
   double effectiveRadius() const { return body_safe ? robot_radius + offset : robot_radius; }
   // Empty when valid, otherwise "key: reason" naming the first bad field (the table's

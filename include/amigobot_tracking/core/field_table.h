@@ -113,21 +113,26 @@ Field<C> live(Field<C> f) {
   return f;
 }
 
+// `row` of the struct S, as a row of C that holds S as `member`, its key under `prefix`: a
+// sub-struct's field keeps its place and its name in C's table.
+template <class C, class S>
+Field<C> nested(S C::*member, const Field<S>& row, const std::string& prefix = "") {
+  Field<C> f;
+  f.key = prefix + row.key;
+  f.unit = row.unit;
+  f.meaning = row.meaning;
+  f.type = row.type;
+  f.bounds = row.bounds;
+  f.live = row.live;
+  f.get = [member, get = row.get](const C& c) { return get(c.*member); };
+  f.set = [member, set = row.set](C& c, const FieldValue& v) { set(c.*member, v); };
+  return f;
+}
+
 // Appends `sub`'s rows for the member `member` of C under `prefix` ("estimator/").
 template <class C, class S>
 void include(FieldTable<C>* into, const std::string& prefix, S C::*member, const FieldTable<S>& sub) {
-  for (const Field<S>& s : sub) {
-    Field<C> f;
-    f.key = prefix + s.key;
-    f.unit = s.unit;
-    f.meaning = s.meaning;
-    f.type = s.type;
-    f.bounds = s.bounds;
-    f.live = s.live;
-    f.get = [member, get = s.get](const C& c) { return get(c.*member); };
-    f.set = [member, set = s.set](C& c, const FieldValue& v) { set(c.*member, v); };
-    into->push_back(std::move(f));
-  }
+  for (const Field<S>& s : sub) into->push_back(nested(member, s, prefix));
 }
 
 // Appends the rows of B, a base class of C that C extends (the robot description that

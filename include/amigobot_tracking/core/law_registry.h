@@ -29,6 +29,8 @@ struct LawEntry {
   bool on_robot = false;       // the tracking node runs it (a value of ControllerConfig::law); the
                                // simulator runs it inside the node's own loop (core::TrackingLoop)
   bool band_implicit = false;  // its avoidance is the explicit (10): the simulator's band-implicit step applies
+  bool obstacle_velocities = false;  // its avoidance uses a disk's velocity whenever the disk carries one;
+                                    // the others only with moving_obstacles (ControllerConfig::obstacleVelocities)
   std::string provider;        // the library that builds it
   LawFactory factory;          // empty until a provider above core registers it (provideLaw)
 };

@@ -8,14 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/control_law.h"
-#include "amigobot_tracking/core/performance_envelope.h"
+#include "amigobot_tracking/core/bounded_law.h"
 #include "amigobot_tracking/core/prescribed_performance.h"
 
 namespace amigobot_tracking {
 namespace core {
 
-class PaperController : public ControlLaw {
+class PaperController : public BoundedLaw {
  public:
   // fixed_rho: the baseline without adaptation (config.adaptive_rho is then ignored).
   explicit PaperController(const ControllerConfig& config, bool fixed_rho = false);
@@ -24,31 +23,18 @@ class PaperController : public ControlLaw {
   std::string name() const override { return fixed_rho_ ? "fixed_rho" : "paper"; }
   ControllerOutput step(double t, const PoseSample& robot, const TargetSample& target,
                         const std::vector<Disk>& obstacles) override;
-  void reset() override;
-  void restart(double start_ratio) override;
-  void setConfig(const ControllerConfig& config) override;
-  const ControllerConfig& config() const override { return config_; }
-  const DiamondSet& diamond() const override { return diamond_; }
   // h > 0 evaluates the repulsive term of the nearest obstacle the offset point can reach
   // within h backward-Euler, at the clearance it has at the end of the step (band_implicit.h),
   // so long steps neither chatter across the detection band nor enter the disk. 0: the
   // paper's explicit (10). Ignored with moving_obstacles.
   void holdNextCommand(const CommandHold& hold) override { hold_ = hold; }
-  bool started() const override { return envelope_.started(); }
-  double rho() const override { return envelope_.rho(); }
-  std::uint64_t envelopeWidenings() const override { return envelope_.widenings(); }
-  const VelocityEstimator* estimator() const override { return &estimator_; }
 
  private:
-  ControllerOutput invalid(double t, std::string why);
+  void forgetLawState() override;
+  void configureLaw() override;
 
-  ControllerConfig config_;
   bool fixed_rho_;
-  DiamondSet diamond_;
   PerformanceGains gains_;
-  VelocityEstimator estimator_;
-  PerformanceEnvelope envelope_;
-  CommandReplay replay_;
   double conflict_ = 0.0;  // second argument of the min in (13), from the last step
   int passing_side_ = 0;   // latched side of the tangential term (0 = released)
   CommandHold hold_;

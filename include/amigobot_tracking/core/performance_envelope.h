@@ -1,4 +1,4 @@
-// Pieces the laws with a performance bound share, each law holding its own copies:
+// Pieces the laws with a performance bound share (BoundedLaw, bounded_law.h, holds them):
 //  - PerformanceEnvelope: rho's start rule and the envelope guard (controller.h's header
 //    comment), around the law's own rho dynamics ((13) or (13')).
 //  - CommandReplay: pose-age compensation (compensate_pose_age), the pose moved from its

@@ -2,7 +2,7 @@
 // law's own state, the feed-forward v_f (v_hat slew-limited to estimator.max_acceleration),
 // its average over field_lookahead, the last command (the rate box's centre), the measured
 // noise behind rho's floor and (13')'s relaxation, beside the shared estimator, start rule,
-// envelope guard and pose-age compensation (performance_envelope.h).
+// envelope guard and pose-age compensation it inherits (bounded_law.h).
 #pragma once
 
 #include <cmath>
@@ -10,13 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/control_law.h"
-#include "amigobot_tracking/core/performance_envelope.h"
+#include "amigobot_tracking/core/bounded_law.h"
 
 namespace amigobot_tracking {
 namespace core {
 
-class RecommendedController : public ControlLaw {
+class RecommendedController : public BoundedLaw {
  public:
   explicit RecommendedController(const ControllerConfig& config);
 
@@ -24,28 +23,14 @@ class RecommendedController : public ControlLaw {
   std::string name() const override { return "recommended"; }
   ControllerOutput step(double t, const PoseSample& robot, const TargetSample& target,
                         const std::vector<Disk>& obstacles) override;
-  void reset() override;
-  void restart(double start_ratio) override;
-  void setConfig(const ControllerConfig& config) override;
-  const ControllerConfig& config() const override { return config_; }
-  const DiamondSet& diamond() const override { return diamond_; }
-  bool started() const override { return envelope_.started(); }
-  double rho() const override { return envelope_.rho(); }
-  std::uint64_t envelopeWidenings() const override { return envelope_.widenings(); }
-  const VelocityEstimator* estimator() const override { return &estimator_; }
 
  private:
-  ControllerOutput invalid(double t, std::string why);
+  void forgetLawState() override;
   // u from recommended_law.h into `out` (p_r, e, v_hat, rho set); false when not finite.
   bool command(const Pose2& pose, const std::vector<Disk>& obstacles, double h, ControllerOutput& out);
   void observeNoise(const TargetSample& target, bool jumped);
   double rhoFloor() const;
 
-  ControllerConfig config_;
-  DiamondSet diamond_;
-  VelocityEstimator estimator_;
-  PerformanceEnvelope envelope_;
-  CommandReplay replay_;
   double shortfall_ = 0.0;  // relaxation term of (13'), from the last step
   // The feed-forward: v_hat followed at most estimator.max_acceleration per second; NaN until
   // the first step.

@@ -33,6 +33,19 @@ inline std::string describe(const YAML::Node& node) {
   return "nothing";
 }
 
+// The one number reader of the simulator's files: a scalar that decodes as a double, finite
+// unless allow_infinite (a limit's "no limit", .inf), never NaN.
+inline double readNumber(const std::string& file, const YAML::Node& node, const std::string& where,
+                         bool allow_infinite = false) {
+  double value = 0.0;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, value))
+    fail(file, node, where, "expected a number, got " + describe(node));
+  if (std::isnan(value) || (!allow_infinite && std::isinf(value)))
+    fail(file, node, where, std::string(allow_infinite ? "must be a number or +-.inf" : "must be finite") + ", got " +
+                                describe(node));
+  return value;
+}
+
 // A YAML mapping whose keys are read one by one; finish() refuses the keys never read.
 class Section {
  public:
@@ -85,13 +98,7 @@ class Section {
     }
   }
 
-  double toNumber(const YAML::Node& node, const std::string& where) const {
-    double value = 0.0;
-    if (!node.IsScalar() || !YAML::convert<double>::decode(node, value))
-      fail(file_, node, where, "expected a number, got " + describe(node));
-    if (!std::isfinite(value)) fail(file_, node, where, "must be finite, got " + describe(node));
-    return value;
-  }
+  double toNumber(const YAML::Node& node, const std::string& where) const { return readNumber(file_, node, where); }
   bool toBool(const YAML::Node& node, const std::string& where) const {
     bool value = false;
     if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value))
