@@ -249,7 +249,7 @@ double headOnLeastBodyClearance(bool braking) {
 TEST(SafetyFilter, BrakingRowsKeepARampedBaseClear) {
   const double planned = headOnLeastBodyClearance(true);
   const double unplanned = headOnLeastBodyClearance(false);
-  // Measured: 6.0 mm with the curve (it aims at m + kBrakingReserve); -2.3 mm while the curve
+  // Measured: 3.0 mm with the curve (it aims at m + kBrakingReserve); -2.3 mm while the curve
   // counted the firmware's delay once.
   EXPECT_GE(planned, SafetyFilterInput().min_margin);
   EXPECT_LT(unplanned, 0.0);
@@ -289,7 +289,7 @@ TEST(SafetyFilter, RampedBaseBackingIntoADiskStopsOutsideTheMargin) {
       }
     }
   }
-  // Measured 6.0 mm (the curve aims at m + kBrakingReserve); -5.5 mm while it counted the delay once.
+  // Measured 3.0 mm (the curve aims at m + kBrakingReserve); -5.5 mm while it counted the delay once.
   EXPECT_GE(least, SafetyFilterInput().min_margin);
 }
 
