@@ -14,9 +14,19 @@ double costOf(const SmallQp& qp, const Eigen::Vector3d& x) {
   return qp.weight.dot((x - qp.target).cwiseAbs2());
 }
 
-bool feasible(const SmallQp& qp, const Eigen::Vector3d& x, double tolerance) {
-  for (size_t i = 0; i < qp.a.size(); ++i)
-    if (qp.a[i].dot(x) > qp.b[i] + tolerance * (1.0 + std::abs(qp.b[i]))) return false;
+// The rows held as equalities (`rows`) are met up to round-off only, which the slack's weight
+// (kSafetySlackWeight: A W^-1 A^T's condition number reaches ~4e7) makes larger than
+// `tolerance`: a barrier row met with 2.2e-9 against a tolerance of 2e-9 left a QP with no
+// candidate while a person stood in the robot (an invalid step, the command zeroed). They are
+// checked against kActiveRowTolerance instead, which still rejects a set solved badly.
+constexpr double kActiveRowTolerance = 1e-6;
+
+bool feasible(const SmallQp& qp, const Eigen::Vector3d& x, double tolerance, const int* rows, int count) {
+  for (size_t i = 0; i < qp.a.size(); ++i) {
+    const bool active = std::find(rows, rows + count, static_cast<int>(i)) != rows + count;
+    const double allowed = active ? std::max(tolerance, kActiveRowTolerance) : tolerance;
+    if (qp.a[i].dot(x) > qp.b[i] + allowed * (1.0 + std::abs(qp.b[i]))) return false;
+  }
   return true;
 }
 
@@ -59,7 +69,7 @@ SmallQpResult solveSmallQp(const SmallQp& qp, double tolerance) {
   const int m = static_cast<int>(qp.a.size());
   auto consider = [&](const int* rows, int count) {
     Eigen::Vector3d x;
-    if (!equalityMinimiser(qp, rows, count, &x) || !feasible(qp, x, tolerance)) return;
+    if (!equalityMinimiser(qp, rows, count, &x) || !feasible(qp, x, tolerance, rows, count)) return;
     const double cost = costOf(qp, x);
     if (cost < best.cost) {
       best.solved = true;
@@ -104,12 +114,14 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
   // |G u| inside the diamond is at most max(v_bar, r w_bar) (|G u|^2 = v^2 + r^2 w^2, convex,
   // largest at a vertex).
   const double reach = std::max(diamond.vMax(), r * diamond.wMax());
-  // gamma (h - m), bounded by the braking curve when the base ramps (safety_filter.h).
-  const double delay = in.limits.latency + in.limits.cycle + in.hold;
+  // gamma (h - m), bounded by the braking curve when the base ramps (safety_filter.h). The
+  // firmware's delay counts e times (kDelayedBrakingFactor): a base that follows the curve's
+  // command that late otherwise overshoots it into the disk.
+  const double delay = kDelayedBrakingFactor * (in.limits.latency + in.limits.cycle) + in.hold;
   auto allowedApproach = [&](double h, double decel) {
     const double room = h - in.min_margin;
     const double rate = in.gamma * room;
-    return in.braking && room > 0.0 ? std::min(rate, brakingSpeed(room, decel, delay)) : rate;
+    return in.braking && room > 0.0 ? std::min(rate, brakingSpeed(room - kBrakingReserve, decel, delay)) : rate;
   };
   const double offset_decel = std::min(in.limits.trans_decel, r * in.limits.rot_decel);
   SafetyFilterResult result;

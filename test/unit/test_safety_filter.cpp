@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "amigobot_tracking/core/actuator_model.h"
 #include "amigobot_tracking/core/safety_filter.h"
 
 using namespace amigobot_tracking::core;
@@ -248,7 +249,74 @@ double headOnLeastBodyClearance(bool braking) {
 TEST(SafetyFilter, BrakingRowsKeepARampedBaseClear) {
   const double planned = headOnLeastBodyClearance(true);
   const double unplanned = headOnLeastBodyClearance(false);
-  // Measured: -2.3 mm with the curve (the delay is sampled at 0.1 s cycles: a stated 5 mm tolerance).
-  EXPECT_GE(planned, SafetyFilterInput().min_margin - 5e-3);
+  // Measured: 3.0 mm with the curve (it aims at m + kBrakingReserve); -2.3 mm while the curve
+  // counted the firmware's delay once.
+  EXPECT_GE(planned, SafetyFilterInput().min_margin);
   EXPECT_LT(unplanned, 0.0);
+}
+
+// The clutter benchmark's graze, reduced: the robot backs at v_bar into a disk behind it, on
+// the AmigoBot's firmware (core::ActuatorModel: ramps, 0.1 s cycle and latency), under the
+// filter and the law's rate box, at 20 and 10 Hz and from several distances (the encounter
+// falls at different phases of the firmware's cycle). The braking curve that counted the delay
+// once let the body overshoot its margin by 6.5 mm, into the disk (-5.5 mm; -6.3 mm in the benchmark's
+// U classes): the base follows the curve's command a delay late and oscillates through it.
+TEST(SafetyFilter, RampedBaseBackingIntoADiskStopsOutsideTheMargin) {
+  const DiamondSet diamond(0.3, 0.8);
+  double least = INFINITY;
+  for (double period : {0.05, 0.1}) {
+    for (double start : {0.5, 0.6, 0.73, 0.86, 1.0}) {
+      ActuatorModel base(ActuatorLimits{}, kAmigoHalfTrack);
+      const Disk disk{Eigen::Vector2d(-(0.18 + 0.2 + start), 0.0), 0.2, Eigen::Vector2d::Zero()};
+      SafetyFilterInput in;
+      in.robot_radius = 0.18;
+      in.body_rows = true;
+      in.gamma = 5.333;
+      in.braking = true;
+      in.hold = period;
+      in.nominal = {-0.3, 0.0};
+      in.max_change = {0.3 * period / 0.25, 0.8 * period / 0.25};  // command_rise_time 0.25 s
+      Pose2 pose{0.0, 0.0, 0.0};
+      for (double t = 0.0; t < 8.0; t += period) {
+        in.pose = pose;
+        const SafetyFilterResult r = safetyFilter(in, diamond, {disk});
+        ASSERT_TRUE(r.solved);
+        in.previous = r.u;
+        for (int k = 0; k < 10; ++k) {  // the body's clearance every tenth of a period
+          pose = driveBody(&base, pose, r.u, period / 10.0);
+          least = std::min(least, (pose.position() - disk.center).norm() - 0.18 - disk.radius);
+        }
+      }
+    }
+  }
+  // Measured 3.0 mm (the curve aims at m + kBrakingReserve); -5.5 mm while it counted the delay once.
+  EXPECT_GE(least, SafetyFilterInput().min_margin);
+}
+
+// A person walking into the robot left p_r's and the body's rows of the same disk nearly
+// opposite, and the QP's answer (two diamond edges and a row, slack 3.75) met its active row
+// with a round-off of 2.2e-9 against a tolerance of 2e-9: no candidate passed, the filter gave
+// up and the step was invalid (the command zeroed). The rows as the pedestrian benchmark met them.
+TEST(SafetyFilter, SolvesTheIllConditionedQpOfAPersonInsideTheRobot) {
+  SmallQp qp;
+  qp.weight = {1.0, 0.09, kSafetySlackWeight};
+  qp.target = {1.0009903876408666, -0.30202134328284669, 0.0};
+  const double rows[7][4] = {{-3.3333333333333335, -1.25, 0.0, 1.0},
+                             {-3.3333333333333335, 1.25, 0.0, 1.0},
+                             {3.3333333333333335, -1.25, 0.0, 1.0},
+                             {3.3333333333333335, 1.25, 0.0, 1.0},
+                             {0.0, 0.0, -1.0, 0.0},
+                             {-0.98354224430281512, 0.054203494633283028, -1.0, -2.7392118449701233},
+                             {0.99680793991572092, 0.003313198090391828, -1.0, -4.0517711895449748}};
+  for (const auto& row : rows) {
+    qp.a.emplace_back(row[0], row[1], row[2]);
+    qp.b.push_back(row[3]);
+  }
+  const SmallQpResult r = solveSmallQp(qp);
+  ASSERT_TRUE(r.solved);
+  // The least-cost feasible vertex (every active set enumerated offline): v = -v_bar, w = 0.
+  EXPECT_NEAR(r.x(0), -0.3, 1e-6);
+  EXPECT_NEAR(r.x(1), 0.0, 1e-6);
+  EXPECT_NEAR(r.x(2), 3.75272881, 1e-6);
+  for (size_t i = 0; i < qp.a.size(); ++i) EXPECT_LE(qp.a[i].dot(r.x), qp.b[i] + 1e-6) << "row " << i;
 }

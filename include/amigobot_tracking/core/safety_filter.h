@@ -68,10 +68,14 @@ struct SafetyFilterInput {
   Twist2 max_change{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   // With `braking`, each barrier row's clearance rate is also bounded by what the base can still
   // undo: the approach speed s from which it stops within the room x = h - m when it reacts
-  // after tau = latency + cycle + hold and then decelerates at a (brakingSpeed below), so a row
-  // reads  n^T (G u - v_j) >= -min(gamma x, s_brake(x)) - s  (x > 0; inside m: -gamma x as
+  // after tau = e (latency + cycle) + hold and then decelerates at a (brakingSpeed below), so a
+  // row reads  n^T (G u - v_j) >= -min(gamma x, s_brake(x)) - s  (x > 0; inside m: -gamma x as
   // before). a = min(trans_decel, r rot_decel) for p_r's disk (its speed has a v and an r w
   // part), trans_decel for the body's. Ideal dynamics (infinite decelerations, no delays): off.
+  // Why e: the base follows the command D = latency + cycle late, and near contact the curve
+  // is s = x / tau, so the room obeys x'(t) = -x(t - D) / tau, which overshoots through 0 (an
+  // oscillating solution) unless D / tau <= 1/e; planned with tau = D + hold the ramped base
+  // grazed its disks by 6 mm (kDelayedBrakingFactor).
   bool braking = false;
   ActuatorLimits limits;
   double hold = 0.0;  // [s] how long the command is held (the control period)
@@ -96,6 +100,21 @@ double safetyClearance(const SafetyFilterInput& in, const std::vector<Disk>& obs
 
 // [m] the body row's look-ahead L (above).
 constexpr double kBodyLookahead = 0.05;
+
+// [-] how many times the firmware's delay (latency + cycle) counts in the braking curve's
+// reaction time: e, the largest D / tau for which x'(t) = -x(t - D) / tau has a
+// non-oscillating solution (its characteristic equation mu e^mu = -D / tau has a real root
+// only then), so a base that follows the command D late creeps up to the margin instead of
+// overshooting it (docs/recommended_law.md).
+constexpr double kDelayedBrakingFactor = 2.718281828459045;
+
+// [m] the braking curve stops the base this far outside the margin m (its room is h - m -
+// reserve; between m and m + reserve the row allows no approach and pushes nothing out). The
+// delay equation above is one-dimensional: a base turning in place near a disk while it stops
+// (its omega lags the command as its v does) still crept 1.1 mm past the curve's end in the
+// clutter benchmark's U classes. 5 mm cost the doorway class 10 % more true ASE than 2 mm and
+// let test_recommended_law's doorway jump 0.34 of the diamond in one step (the rate box gave way).
+constexpr double kBrakingReserve = 0.002;
 
 // The slack's weight: large, so a slack appears only where nothing else is feasible.
 constexpr double kSafetySlackWeight = 1e6;
