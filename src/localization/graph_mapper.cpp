@@ -16,7 +16,13 @@ namespace localization {
 
 namespace {
 
-constexpr int kLocalKeyframes = 8;         // the front end aligns against this many last keyframes
+// The front end aligns against the keyframes of the last kLocalTravel of travel, at least the
+// last kLocalKeyframes: a submap that keeps the walls behind a corner while the robot turns into
+// the next corridor. With the last 8 keyframes only (6 m on the ACES building, where scans are
+// 0.73 m apart) each corner added up to 2 deg of heading error; the online ATE there went from
+// 0.397 m to 0.213 m (Intel lab 0.103 m to 0.092 m; last 30 keyframes: 0.175 m and 0.101 m).
+constexpr int kLocalKeyframes = 8;
+constexpr double kLocalTravel = 10.0;      // [m]
 // A new keyframe is matched against the 3 nearest old places (keyframes more than 2 x kLoopSpan
 // apart), not only the nearest: on the ACES building the loops went from 47 to 121 and the
 // smoothed ATE from 0.113 m to 0.096 m (with the corridor edges below).
@@ -195,7 +201,9 @@ void GraphMapper::update(const RangeScan& scan, const core::Pose2& odom_base, Po
     if (due && points.size() >= 10) {
       const int last = static_cast<int>(keyframes_.size()) - 1;
       mrpt::maps::CSimplePointsMap local;
-      collectPoints(last - kLocalKeyframes + 1, last, &local);
+      int first = last - kLocalKeyframes + 1;
+      while (first > 0 && path_[static_cast<std::size_t>(last)] - path_[static_cast<std::size_t>(first - 1)] <= kLocalTravel) --first;
+      collectPoints(first, last, &local);
       double goodness = 0.0;
       Eigen::Matrix3d covariance;
       const core::Pose2 aligned = align(local, points, pose_, config_.icp.max_correspondence, &covariance, &goodness);

@@ -2,10 +2,10 @@
 // LMS with GMapping's corrected poses as reference and odometry made from them with +2 %
 // travel and 1.5 deg/m heading drift (59 m off at the end). Replayed through each mode; the
 // figures (docs/localization.md) with margin: graph mapping, the online pose (what the robot
-// had at each scan) 0.103 m ATE RMS, the smoothed trajectory 0.068 m, a second pass on its map
-// 0.066 m (ICP-SLAM, not replayed here to save 12 s: 0.21 m smoothed), localisation on a map
+// had at each scan) 0.092 m ATE RMS, the smoothed trajectory 0.061 m, a second pass on its map
+// 0.060 m (ICP-SLAM, not replayed here to save 12 s: 0.21 m smoothed), localisation on a map
 // drawn from the reference 0.035 m. The replay is deterministic (no scan is dropped at the
-// log's rate, 2.9 s per scan). About 15 s of CPU in all, the ACES building 1.5 s more.
+// log's rate, 2.9 s per scan). About 15 s of CPU in all, the ACES building 2.5 s more.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -86,16 +86,17 @@ TEST(RealBuilding, GraphMappingClosesTheLoopsOfTheIntelLab) {
   EXPECT_LT(r.relative.translation_mean, 0.045);
   EXPECT_GT(r.loop_closures, 50);
   ASSERT_FALSE(r.map.empty());
-  // The pose the node publishes while mapping: before the front end refused ICP slides 0.117 m.
+  // The pose the node publishes while mapping: before the front end refused ICP slides 0.117 m,
+  // before it matched against the last 10 m of travel (not the last 8 keyframes) 0.103 m.
   std::printf("graph mapping, online pose: ATE RMS %.3f m, max %.3f m, %d scans dropped, slowest update %.0f ms\n",
               r.online_ate.rms, r.online_ate.max, r.dropped, 1e3 * r.max_update);
   EXPECT_EQ(r.dropped, 0);  // 2.9 s between scans: the worker never lags
-  EXPECT_LT(r.online_ate.rms, 0.105);
+  EXPECT_LT(r.online_ate.rms, 0.10);
   EXPECT_LT(r.online_ate.max, 0.6);
   // The map's quality: a second pass localised on the map it built.
   const ReplayResult on_map = replayLocalization(intel(), config, r.map);
   std::printf("graph mapping, second pass on its map: ATE RMS %.3f m, max %.3f m\n", on_map.ate.rms, on_map.ate.max);
-  EXPECT_LT(on_map.ate.rms, 0.085);
+  EXPECT_LT(on_map.ate.rms, 0.08);
 }
 
 TEST(RealBuilding, LocalisationOnTheReferenceMapStaysOnTheReference) {
@@ -113,9 +114,11 @@ TEST(RealBuilding, LocalisationOnTheReferenceMapStaysOnTheReference) {
 // round long corridors, the loops closed late. Same drift as the Intel lab (77 m off at the
 // end). Before loop edges were taken in corridors (fixing the position across, not along) and
 // against the 3 nearest old places, 47 loops closed and the smoothed ATE was 0.113 m (map pass
-// 0.114 m); now 121 loops, 0.096 m (0.100 m). The online pose is far from the Intel lab's,
-// 0.40 m: down a corridor longer than the range cap the front end takes odometry's travel
-// error, and the loops close late (docs/localization.md).
+// 0.114 m); then 121 loops, 0.096 m (0.100 m). The online pose is far from the Intel lab's:
+// the first loop (160 m round four corridors) cannot close before the robot is back at the
+// start, and each corner adds heading error to the front end. Aligning each scan against the
+// keyframes of the last 10 m of travel (was: the last 8, 6 m here) keeps the walls behind a
+// corner in the submap: online 0.397 m -> 0.213 m, smoothed 0.088 m, map pass 0.092 m.
 TEST(RealBuilding, GraphMappingOfTheAcesBuilding) {
   const CarmenLog& log = aces();
   ASSERT_EQ(log.scans.size(), 440u);
@@ -129,7 +132,7 @@ TEST(RealBuilding, GraphMappingOfTheAcesBuilding) {
   EXPECT_GT(r.odometry_ate.rms, 20.0);
   EXPECT_EQ(r.dropped, 0);
   EXPECT_GT(r.loop_closures, 90);
-  EXPECT_LT(r.online_ate.rms, 0.45);
-  EXPECT_LT(r.ate.rms, 0.105);
-  EXPECT_LT(on_map.ate.rms, 0.11);
+  EXPECT_LT(r.online_ate.rms, 0.25);
+  EXPECT_LT(r.ate.rms, 0.10);
+  EXPECT_LT(on_map.ate.rms, 0.105);
 }

@@ -1,14 +1,14 @@
 // Mapping that closes loops: a pose graph of keyframes. Each scan is aligned by ICP (MRPT's
-// CICP) against the points of the last keyframes, from the odometry-predicted pose; every
-// graph/keyframe_travel of travel (or 0.35 rad of turn) it becomes a keyframe, joined to the
-// previous one by the aligned motion. A new keyframe is then matched against the 3 nearest old
-// places within graph/loop_radius (at least graph/loop_min_gap keyframes back): an ICP alignment
-// on which at least graph/loop_min_match of its points lie within match_distance of the old
-// keyframes' points, that fits clearly worse when turned 0.1 rad and corrects no more than the
-// front end can have drifted, is a loop edge (Huber-weighted). When shifting it 0.3 m fits as
-// well in one direction only (a corridor), the edge fixes the position across that direction
-// and the heading, not along it; when in two directions, it is refused. The graph is then
-// optimised (PoseGraph).
+// CICP) against the points of the keyframes of the last 10 m of travel (a local submap), from
+// the odometry-predicted pose; every graph/keyframe_travel of travel (or 0.35 rad of turn) it
+// becomes a keyframe, joined to the previous one by the aligned motion. A new keyframe is then
+// matched against the 3 nearest old places within graph/loop_radius (at least
+// graph/loop_min_gap keyframes back): an ICP alignment on which at least graph/loop_min_match of
+// its points lie within match_distance of the old keyframes' points, that fits clearly worse
+// when turned 0.1 rad and corrects no more than the front end can have drifted, is a loop edge
+// (Huber-weighted). When shifting it 0.3 m fits as well in one direction only (a corridor), the
+// edge fixes the position across that direction and the heading, not along it; when in two
+// directions, it is refused. The graph is then optimised (PoseGraph).
 // The map is drawn from the optimised keyframe poses. Not thread-safe: one caller.
 #pragma once
 
