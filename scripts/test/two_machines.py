@@ -106,6 +106,12 @@ class Run:
     def service(self, machine, name, timeout=40):
         wait_for("rosservice call " + name, lambda: self.ros(machine, "rosservice", "call", name), timeout, 0.5)
 
+    def target_enabled_again(self):
+        if self.truth_now("target").motors:
+            return True
+        self.ros("target", "rosservice", "call", "/target/enable_motors")
+        return False
+
     def launch(self):
         world = lambda robot: os.path.join(self.root, WORLDS, "two_robots_%s.yaml" % robot)
         self.start("tracker", "roscore", ["roscore", "-p", "11311"])
@@ -180,6 +186,10 @@ class Run:
         up_wall = time.monotonic()
         self.m.set_link(True)
         during = rec.since(cut_wall, up_wall)
+        # The target's master is across the link: its driver stopped with the motors disabled
+        # (master_timeout) and keeps them so until enable_motors. The operator's call, so that
+        # the target drives on along its course and the tracker has to start again on its ramp.
+        wait_for("the target's motors enabled again after the link returned", self.target_enabled_again, 20, 0.3)
         time.sleep(max(0.0, go + sum(s[0] for s in SEGMENTS) + 1.0 + 6.0 - time.monotonic()))
         end = time.monotonic()
         rec.stop()

@@ -90,11 +90,17 @@ class Report:
         self.check("resume", resumed[0] - up.t <= limit, "first motion setpoint %.3f s after the link came back "
                    "(v %.3f m/s, w %.3f rad/s; bound outage + 1 s = %.1f s)"
                    % (resumed[0] - up.t, resumed[1], resumed[2], limit))
+        # The ramp is judged while it acts: the command's first rise from zero after the link's
+        # return, up to the first setpoint that grows no further (the controller's own command
+        # reached; after it, steps are the law's, following a target that starts when enabled).
+        # How long the rise is depends on the error left when the link returns: one pair or ten.
         prev = (up.t, 0.0, 0.0)
         worst, worst_text, judged = 0.0, "", 0
         for p in pairs:
-            if p[0] <= up.t or p[0] > resumed[0] + 2.0:  # the ramp: 0 -> v_max in 1 s
+            if p[0] < resumed[0]:
                 continue
+            if judged and abs(p[1]) <= abs(prev[1]) and abs(p[2]) <= abs(prev[2]):
+                break
             dt = p[0] - prev[0]
             ratio = max(abs(p[1] - prev[1]) / (V_ACCEL * (dt + 2 * CONTROL_PERIOD) + V_STEP),
                         abs(p[2] - prev[2]) / (W_ACCEL * (dt + 2 * CONTROL_PERIOD) + W_STEP))
@@ -102,7 +108,7 @@ class Report:
                 worst, worst_text = ratio, "(%.3f, %.3f) -> (%.3f, %.3f) in %.3f s" % (prev[1], prev[2], p[1], p[2], dt)
             prev = p
             judged += 1
-        self.check("resume", judged >= 10 and worst <= 1.0, "%d setpoint pairs in the 2 s after the resume, the largest "
+        self.check("resume", judged >= 1 and worst <= 1.0, "%d setpoint pairs in the rise after the resume, the largest "
                    "step %.0f %% of the ramp's limit %s" % (judged, 100 * worst, worst_text))
         back = next((s for s in samples if s[0] > samples[0][0] + 0.5 and s[3] <= bound), None) if samples else None
         self.figure("resume", "true |e| back within %.2f m %s" % (
