@@ -24,6 +24,22 @@ import roslaunch.config
 import roslaunch.core
 import roslaunch.node_args
 import roslaunch.rlutil
+import roslib.packages
+
+# roslib walks the package's whole tree for each node it looks up (0.15 s a node, twice per
+# configuration: roslaunch's check and the node's command line), and the same few executables
+# recur in every configuration: each is looked up once per run (the list is checked in one process).
+_find_node_uncached = roslib.packages.find_node
+_found_nodes = {}
+
+
+def _find_node_once(pkg, node_type, rospack=None):
+    if (pkg, node_type) not in _found_nodes:
+        _found_nodes[(pkg, node_type)] = _find_node_uncached(pkg, node_type, rospack=rospack)
+    return _found_nodes[(pkg, node_type)]
+
+
+roslib.packages.find_node = _find_node_once
 
 
 def check(path, args):
