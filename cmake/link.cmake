@@ -5,11 +5,12 @@ amigobot_add_library(amigobot_tracking_link
   src/link/address.cpp
   src/link/serial_port.cpp
   src/link/emulator_link.cpp
+  src/link/tcp_client.cpp
 )
 target_include_directories(amigobot_tracking_link PUBLIC include)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit address serial_port)
+  foreach(unit address serial_port tcp_client)
     amigobot_add_unit_test(test_link_${unit} test/unit/test_link_${unit}.cpp)
     target_link_libraries(test_link_${unit} amigobot_tracking_link)
   endforeach()

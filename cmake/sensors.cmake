@@ -15,6 +15,10 @@ amigobot_add_library(amigobot_tracking_sensors
   src/sensors/rplidar_session.cpp
   src/sensors/rplidar_device.cpp
   src/sensors/laser_driver.cpp
+  src/sensors/scip_protocol.cpp
+  src/sensors/scip_session.cpp
+  src/sensors/cola_protocol.cpp
+  src/sensors/rplidar_protocol.cpp
 )
 target_include_directories(amigobot_tracking_sensors PUBLIC include)
 target_link_libraries(amigobot_tracking_sensors PUBLIC amigobot_tracking_core amigobot_tracking_world amigobot_tracking_link mrpt::comms mrpt::hwdrivers)

@@ -1,49 +1,40 @@
 #include "amigobot_tracking/aria/transport.h"
 
-#include <csignal>
 #include <optional>
 #include <stdexcept>
 
-#include <mrpt/comms/CClientTCPSocket.h>
-
-#include "amigobot_tracking/core/error_text.h"
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/link/serial_port.h"
+#include "amigobot_tracking/link/tcp_client.h"
 
 namespace amigobot_tracking {
 namespace aria {
 namespace {
 
-constexpr unsigned kConnectTimeoutMs = 2000;
+constexpr int kConnectTimeoutMs = 2000;
 constexpr int kWriteTimeoutMs = 1000;
 
 class TcpTransport : public Transport {
  public:
-  explicit TcpTransport(link::TcpAddress address) : address_(std::move(address)) {
-    // A peer that closes the socket must surface as an error from send(), not kill the
-    // process with SIGPIPE (MRPT's send() does not pass MSG_NOSIGNAL).
-    std::signal(SIGPIPE, SIG_IGN);
-  }
+  // A peer that closes the socket is an error of write(): link::TcpClient sends without SIGPIPE.
+  explicit TcpTransport(link::TcpAddress address) : address_(std::move(address)) {}
   void open() override {
-    socket_ = std::make_unique<mrpt::comms::CClientTCPSocket>();
     try {
-      socket_->connect(address_.host, static_cast<unsigned short>(address_.port), kConnectTimeoutMs);
+      socket_.connect(address_, kConnectTimeoutMs);
     } catch (const std::exception& e) {
-      socket_.reset();
-      throw std::runtime_error(describe() + ": cannot connect: " + core::libraryMessage(e.what()));
+      throw std::runtime_error(describe() + ": cannot connect: " + e.what());
     }
-    socket_->setTCPNoDelay(1);
   }
-  void close() override { socket_.reset(); }
-  bool isOpen() override { return socket_ && socket_->isConnected(); }
+  void close() override { socket_.close(); }
+  bool isOpen() override { return socket_.isOpen(); }
   std::size_t read(std::uint8_t* buffer, std::size_t size, int timeout_ms) override {
     if (!isOpen()) throw std::runtime_error(describe() + ": connection closed");
-    const std::size_t n = socket_->readAsync(buffer, size, timeout_ms, 0);
-    if (n == 0 && !socket_->isConnected()) throw std::runtime_error(describe() + ": connection closed by the robot");
+    const std::size_t n = socket_.read(buffer, size, timeout_ms, 0);
+    if (n == 0 && !socket_.isOpen()) throw std::runtime_error(describe() + ": connection closed by the robot");
     return n;
   }
   void write(const std::vector<std::uint8_t>& bytes) override {
-    if (!isOpen() || socket_->writeAsync(bytes.data(), bytes.size(), kWriteTimeoutMs) != bytes.size()) {
+    if (!isOpen() || socket_.write(bytes.data(), bytes.size(), kWriteTimeoutMs) != bytes.size()) {
       throw std::runtime_error(describe() + ": write failed");
     }
   }
@@ -54,7 +45,7 @@ class TcpTransport : public Transport {
 
  private:
   link::TcpAddress address_;
-  std::unique_ptr<mrpt::comms::CClientTCPSocket> socket_;
+  link::TcpClient socket_;
 };
 
 class SerialTransport : public Transport {

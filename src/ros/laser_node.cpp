@@ -4,6 +4,7 @@
 #include <sensor_msgs/LaserScan.h>
 
 #include "amigobot_tracking/sensors/laser_model.h"
+#include "amigobot_tracking/sensors/laser_protocol.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -16,7 +17,7 @@ LaserNode::LaserNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID(params_.driver.model + " at " + params_.driver.port);
   updater_.add("Laser " + params_.driver.model, this, &LaserNode::diagnose);
   diagnostics_timer_ = nh_.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { updater_.update(); });
-  if (sensors::laserModel(params_.driver.model).protocol == sensors::Protocol::kRplidar) {
+  if (sensors::protocolOf(sensors::laserModel(params_.driver.model)).hasMotor()) {
     using Empty = std_srvs::Empty;
     start_motor_srv_ = nh_.advertiseService<Empty::Request, Empty::Response>(
         "start_motor", [this](Empty::Request&, Empty::Response&) { return onMotor(true); });

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/ros/param_aliases.h"
+#include "amigobot_tracking/sensors/laser_protocol.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
 
 namespace amigobot_tracking {
@@ -33,6 +34,19 @@ const core::FieldTable<LaserParams>& laserFields() {
   return table;
 }
 
+namespace {
+
+// "rplidar": the models whose protocol's ROS driver has this angle convention.
+std::string modelsWithConvention(const std::string& convention) {
+  std::string models;
+  for (const sensors::LaserModelEntry& e : sensors::laserModels()) {
+    if (sensors::protocolOf(e.model()).rosDriverAngleConvention() == convention) models += (models.empty() ? "" : " | ") + e.name;
+  }
+  return models;
+}
+
+}  // namespace
+
 std::string LaserParams::validate() const {
   const std::string bad = core::checkFields(laserFields(), *this);
   if (!bad.empty()) return bad;
@@ -42,8 +56,10 @@ std::string LaserParams::validate() const {
     return e.what();
   }
   if (frame_id.empty()) return "frame_id: empty";
-  if (angle_convention == "rplidar_ros" && sensors::laserModel(driver.model).protocol != sensors::Protocol::kRplidar) {
-    return "angle_convention: rplidar_ros is for model rplidar";  // driver.validate() above: the model is known
+  // driver.validate() above: the model is known.
+  const sensors::LaserProtocol& protocol = sensors::protocolOf(sensors::laserModel(driver.model));
+  if (angle_convention != "device" && angle_convention != protocol.rosDriverAngleConvention()) {
+    return "angle_convention: " + angle_convention + " is for model " + modelsWithConvention(angle_convention);
   }
   if (!(angle_max > angle_min)) return "angle_max: must be > angle_min";
   if (range_max > 0.0 && !(range_max > range_min)) return "range_max: must be > range_min";

@@ -1,4 +1,4 @@
-// SICK TiM5xx and LMS1xx over CoLa-A through MRPT's TCP socket. Not MRPT's CSICKTim561Eth
+// SICK TiM5xx and LMS1xx over CoLa-A through link::TcpClient. Not MRPT's CSICKTim561Eth
 // nor CLMS100Eth: both poll with sRN LMDscandata and parse what one read returned, without
 // looking for the ETX, and drop the telegram's starting angle, angular step and scale factor
 // (CLMS100Eth also rewrites the device's scan configuration to 0.25 deg and sleeps 10 s per
@@ -13,10 +13,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include <mrpt/comms/CClientTCPSocket.h>
-
-#include "amigobot_tracking/core/error_text.h"
 #include "amigobot_tracking/link/address.h"
+#include "amigobot_tracking/link/tcp_client.h"
 #include "amigobot_tracking/sensors/cola_a.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_model.h"
@@ -42,10 +40,9 @@ class ColaDevice : public LaserDevice {
       throw std::invalid_argument("port: " + model + " needs host:port (CoLa-A over TCP: :2111, or :2112 as sick_tim and sick_scan), got '" + port + "'");
     }
     try {
-      socket_.connect(tcp->host, static_cast<unsigned short>(tcp->port), 2000);
-      socket_.setTCPNoDelay(1);
+      socket_.connect(*tcp, 2000);
     } catch (const std::exception& e) {
-      throw std::runtime_error(model + " " + port + ": cannot connect: " + core::libraryMessage(e.what()));
+      throw std::runtime_error(model + " " + port + ": cannot connect: " + e.what());
     }
     const std::string ident = request("sRN DeviceIdent"), serial = request("sRN SerialNumber");
     identity_ = "SICK " + ident.substr(std::min(ident.size(), std::size_t{4})) + ", " + serial.substr(std::min(serial.size(), std::size_t{4}));
@@ -89,7 +86,7 @@ class ColaDevice : public LaserDevice {
 
   std::string request(const std::string& body) {
     const std::string telegram = cola::frame(body);
-    if (socket_.writeAsync(telegram.data(), telegram.size(), 1000) != telegram.size()) throw failure("write failed");
+    if (socket_.write(telegram.data(), telegram.size(), 1000) != telegram.size()) throw failure("write failed");
     std::string answer;
     if (!next(&answer, 2000)) throw failure("no answer to '" + body + "'");
     return answer;
@@ -129,8 +126,8 @@ class ColaDevice : public LaserDevice {
       const int left = static_cast<int>((end - systemSeconds()) * 1000.0);
       if (left <= 0) return false;
       char chunk[8192];
-      const std::size_t n = socket_.readAsync(chunk, sizeof(chunk), left, 2);
-      if (n == 0 && !socket_.isConnected()) throw failure("connection closed");
+      const std::size_t n = socket_.read(chunk, sizeof(chunk), left, 2);
+      if (n == 0 && !socket_.isOpen()) throw failure("connection closed");
       buffer_.append(chunk, n);
     }
     return true;
@@ -138,7 +135,7 @@ class ColaDevice : public LaserDevice {
 
   std::string port_, identity_, buffer_;
   LaserModel model_;
-  mrpt::comms::CClientTCPSocket socket_;
+  link::TcpClient socket_;
 };
 
 }  // namespace

@@ -2,20 +2,20 @@
 // the beam angles here come from the PP reply instead: (step - AFRT) 2 pi / ARES.
 // MRPT drops each line's sum character unchecked, so the link is bound to CHokuyoURG as a
 // stream that checks the sums of what MRPT reads (scip::ReplySumCheck): a scan read while a
-// wrong sum went by is dropped as damaged. Over TCP that stream is not MRPT's socket class,
+// wrong sum went by is dropped as damaged. Over TCP that stream is link::TcpClient, not MRPT's socket class,
 // so CHokuyoURG treats it as an already open port and leaves reconnecting to LaserDriver.
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 
-#include <mrpt/comms/CClientTCPSocket.h>
 #include <mrpt/comms/CSerialPort.h>
 #include <mrpt/hwdrivers/CHokuyoURG.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include "amigobot_tracking/core/error_text.h"
 #include "amigobot_tracking/link/address.h"
+#include "amigobot_tracking/link/tcp_client.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/scip.h"
 
@@ -41,23 +41,22 @@ class SumCheckedSerialPort : public mrpt::comms::CSerialPort {
 // up to 100 ms for the first byte, as CHokuyoURG's serial timeouts do.
 class SumCheckedSocket : public mrpt::io::CStream {
  public:
-  SumCheckedSocket(const std::string& host, int port, scip::ReplySumCheck* check) : check_(check) {
-    socket_.connect(host, static_cast<unsigned short>(port), 2000);
-    socket_.setTCPNoDelay(1);
+  SumCheckedSocket(const link::TcpAddress& address, scip::ReplySumCheck* check) : check_(check) {
+    socket_.connect(address, 2000);
   }
   size_t Read(void* buffer, size_t count) override {
-    if (!socket_.isConnected()) throw std::runtime_error("connection closed");
-    const size_t n = socket_.readAsync(buffer, count, 100, 1);
+    if (!socket_.isOpen()) throw std::runtime_error("connection closed");
+    const size_t n = socket_.read(buffer, count, 100, 1);
     check_->feed(static_cast<const char*>(buffer), n);
     return n;
   }
-  size_t Write(const void* buffer, size_t count) override { return socket_.writeAsync(buffer, count, 1000); }
+  size_t Write(const void* buffer, size_t count) override { return socket_.write(buffer, count, 1000); }
   uint64_t Seek(int64_t, CStream::TSeekOrigin) override { throw std::logic_error("SumCheckedSocket: no seek"); }
   uint64_t getTotalBytesCount() const override { return 0; }
   uint64_t getPosition() const override { return 0; }
 
  private:
-  mrpt::comms::CClientTCPSocket socket_;
+  link::TcpClient socket_;
   scip::ReplySumCheck* check_;
 };
 
@@ -77,7 +76,7 @@ class HokuyoDevice : public LaserDevice {
     bool ok = false;
     try {
       if (const std::optional<link::TcpAddress> tcp = link::parseTcpAddress(port)) {
-        urg_.bindIO(std::make_shared<SumCheckedSocket>(tcp->host, tcp->port, &sums_));
+        urg_.bindIO(std::make_shared<SumCheckedSocket>(*tcp, &sums_));
       } else {
         urg_.setSerialPort(port);
         urg_.bindIO(std::make_shared<SumCheckedSerialPort>(port, &sums_));

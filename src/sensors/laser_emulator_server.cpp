@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "amigobot_tracking/link/emulator_link.h"
+#include "amigobot_tracking/sensors/laser_protocol.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
 
 namespace amigobot_tracking {
@@ -26,17 +27,6 @@ double steadySeconds() {
 }
 
 void sendAll(int fd, const std::string& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
-
-// Position just after the n-th occurrence of `c`, or npos.
-std::size_t after(const std::string& text, char c, int n) {
-  std::size_t at = 0;
-  for (int i = 0; i < n; ++i) {
-    at = text.find(c, at);
-    if (at == std::string::npos) return at;
-    ++at;
-  }
-  return at;
-}
 
 }  // namespace
 
@@ -79,8 +69,13 @@ Fault parseFault(const std::string& name) {
 void LaserServerOptions::validate(const LaserModel& model) const {
   if (fault_every < 0) throw std::invalid_argument("fault_every: must be >= 0");
   if (fault != Fault::kNone && fault_every == 0) throw std::invalid_argument("fault_every: must be > 0 with a fault");
-  if (fault == Fault::kChecksum && model.protocol != Protocol::kScip) {
-    throw std::invalid_argument("fault: checksum needs a SCIP model (CoLa-A has no checksum)");
+  if (fault == Fault::kChecksum && !protocolOf(model).hasChecksum()) {
+    std::string takers;  // from the registry, as emulatedLaserModel's
+    for (const LaserModelEntry& e : laserModels()) {
+      if (protocolOf(e.model()).hasChecksum()) takers += (takers.empty() ? "" : ", ") + e.name;
+    }
+    throw std::invalid_argument("fault: checksum needs a model whose protocol has a checksum (" + takers + "); " +
+                                model.name + " speaks " + protocolOf(model).name() + ", which has none");
   }
   if (!pty_link.empty() && !laserModelEntry(model.name).serial()) {
     throw std::invalid_argument("pty: " + model.name + " has no serial port (TCP only)");
@@ -142,20 +137,10 @@ void LaserEmulatorServer::serve(Link& link) {
 }
 
 std::string LaserEmulatorServer::damage(std::string telegram) {
-  const bool scip = model_.protocol == Protocol::kScip;
-  if (model_.protocol == Protocol::kRplidar && options_.fault == Fault::kMalformed) {
-    if (telegram.size() > 52) telegram[51] = static_cast<char>(telegram[51] & ~0x01);  // node 10's check bit
-    return telegram;
-  }
   switch (options_.fault) {
-    case Fault::kMalformed: {
-      // SCIP: a data line one character short; CoLa-A: a range that is not a number.
-      const std::size_t at = scip ? after(telegram, '\n', 3) : after(telegram, ' ', 26);
-      if (at != std::string::npos && at < telegram.size()) telegram.replace(at, 1, scip ? "" : "Z");
-      return telegram;
-    }
+    case Fault::kMalformed: return protocolOf(model_).malformed(std::move(telegram));
     case Fault::kTruncated: return telegram.substr(0, telegram.size() / 2);
-    case Fault::kChecksum: telegram[telegram.size() - 3] ^= 0x01; return telegram;  // last data line's sum
+    case Fault::kChecksum: return protocolOf(model_).badChecksum(std::move(telegram));
     default: return telegram;
   }
 }
@@ -180,7 +165,7 @@ void LaserEmulatorServer::tick() {
   // Half the rate: this scan is measured (the device's clock goes on) but never leaves.
   if (halve_ && *halve_ && cast_++ % 2 == 1) return;
   // A RPLIDAR streams each node as it is measured: its revolution leaves at once, paced.
-  pending_due_ = model_.protocol == Protocol::kRplidar ? now : now + model_.timeIncrement() * (model_.beams() - 1);
+  pending_due_ = protocolOf(model_).samplesAsItTurns() ? now : now + model_.timeIncrement() * (model_.beams() - 1);
   has_pending_ = true;
 }
 
@@ -200,7 +185,7 @@ void LaserEmulatorServer::send(double now) {
       }
       telegram = damage(std::move(telegram));
     }
-    if (model_.protocol == Protocol::kRplidar) {
+    if (protocolOf(model_).samplesAsItTurns()) {
       link->paced.erase(0, link->paced_sent);  // a late revolution: the rest of the last one goes first
       link->paced += telegram;
       link->paced_sent = 0;

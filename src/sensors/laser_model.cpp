@@ -3,47 +3,19 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "amigobot_tracking/sensors/laser_protocol.h"
+
 namespace amigobot_tracking {
 namespace sensors {
-namespace {
 
-constexpr double kTenThousandthDegree = M_PI / 180.0 / 10000.0;
-
-// Every switch over Protocol names each protocol (-Wswitch makes a new one a build error
-// there); this is for a value outside the enum.
-std::logic_error unknownProtocol(const LaserModel& model) {
-  return std::logic_error("laser model '" + model.name + "': protocol " + std::to_string(static_cast<int>(model.protocol)) +
-                          " is not one of SCIP, CoLa-A, RPLIDAR");
+const LaserProtocol& protocolOf(const LaserModel& model) {
+  if (!model.protocol) throw std::logic_error("laser model '" + model.name + "': no protocol (not from laser_registry.h)");
+  return *model.protocol;
 }
 
-}  // namespace
-
-int LaserModel::beams() const {
-  switch (protocol) {
-    case Protocol::kScip: return scip.amax - scip.amin + 1;
-    case Protocol::kColaA: return cola.beams;
-    case Protocol::kRplidar: return rplidar.bins;
-  }
-  throw unknownProtocol(*this);
-}
-
-double LaserModel::angleMin() const {
-  switch (protocol) {
-    case Protocol::kScip: return (scip.amin - scip.afrt) * 2.0 * M_PI / scip.ares;
-    case Protocol::kColaA: return cola.start_angle * kTenThousandthDegree - M_PI / 2.0;
-    case Protocol::kRplidar: return -M_PI;
-  }
-  throw unknownProtocol(*this);
-}
-
-double LaserModel::angleIncrement() const {
-  switch (protocol) {
-    case Protocol::kScip: return 2.0 * M_PI / scip.ares;
-    case Protocol::kColaA: return cola.angular_step * kTenThousandthDegree;
-    case Protocol::kRplidar: return 2.0 * M_PI / rplidar.bins;
-  }
-  throw unknownProtocol(*this);
-}
+int LaserModel::beams() const { return protocolOf(*this).beams(*this); }
+double LaserModel::angleMin() const { return protocolOf(*this).angleMin(*this); }
+double LaserModel::angleIncrement() const { return protocolOf(*this).angleIncrement(*this); }
 
 double LaserModel::timeIncrement() const {
   return scanTime() * angleIncrement() / (2.0 * M_PI);

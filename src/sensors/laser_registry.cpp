@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/link/address.h"
+#include "amigobot_tracking/sensors/laser_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -11,7 +12,7 @@ namespace {
 LaserModel hokuyoUrg() {
   LaserModel m;
   m.name = "hokuyo_urg";
-  m.protocol = Protocol::kScip;  // the URG-04LX's PP numbers are ScipGeometry's defaults
+  m.protocol = &scipProtocol();  // the URG-04LX's PP numbers are ScipGeometry's defaults
   m.range_min = m.scip.dmin_mm / 1000.0;
   m.range_max = m.scip.dmax_mm / 1000.0;
   m.rate = m.scip.scan_rpm / 60.0;
@@ -21,7 +22,7 @@ LaserModel hokuyoUrg() {
 LaserModel sickTim5xx() {
   LaserModel m;
   m.name = "sick_tim5xx";
-  m.protocol = Protocol::kColaA;  // the TiM5xx's telegram numbers are ColaGeometry's defaults
+  m.protocol = &colaProtocol();  // the TiM5xx's telegram numbers are ColaGeometry's defaults
   m.range_min = 0.05;
   m.range_max = 10.0;
   m.rate = m.cola.scan_frequency / 100.0;
@@ -31,7 +32,7 @@ LaserModel sickTim5xx() {
 LaserModel sickLms1xx() {
   LaserModel m;
   m.name = "sick_lms1xx";
-  m.protocol = Protocol::kColaA;
+  m.protocol = &colaProtocol();
   // The LMS111 data sheet's operating range starts at 0.5 m, but the device reports echoes
   // from 0.01 m on (real captures carry 0.126 m) and clearpath's LMS1xx driver publishes
   // range_min 0.01: dropping them would lose what the device measured.
@@ -45,7 +46,7 @@ LaserModel sickLms1xx() {
 LaserModel rplidarA1() {
   LaserModel m;
   m.name = "rplidar";
-  m.protocol = Protocol::kRplidar;
+  m.protocol = &rplidarProtocol();
   m.range_min = 0.15;  // A1M8 data sheet: 0.15 .. 12 m
   m.range_max = 12.0;
   m.rate = 5.5;
@@ -53,20 +54,18 @@ LaserModel rplidarA1() {
 }
 
 // Built on first use (not at static initialisation), so any other static may read it. One
-// entry per model: name, what it is, link, serial speeds, model, driver, emulator session,
-// the scan to choose (std::nullopt: fixed).
+// entry per model: name, what it is, link, serial speeds, model (with its protocol: the
+// driver's device and the emulator's session), the scan to choose (std::nullopt: fixed).
 const std::vector<LaserModelEntry>& registry() {
   static const std::vector<LaserModelEntry> models{
       {"hokuyo_urg", "Hokuyo URG-04LX, SCIP 2.0: 240 deg, 0.352 deg, 10 Hz, 0.02 .. 4 m", LaserLink::kSerialOrTcp, {},
-       hokuyoUrg, [](const std::string& port, int) { return openHokuyo("hokuyo_urg", port); }, makeScipSession, std::nullopt},
+       hokuyoUrg, std::nullopt},
       {"sick_tim5xx", "SICK TiM5xx, CoLa-A over TCP: 270 deg, 0.333 deg, 15 Hz, 0.05 .. 10 m", LaserLink::kTcp, {},
-       sickTim5xx, [](const std::string& port, int) { return openCola("sick_tim5xx", port); }, makeColaSession, std::nullopt},
+       sickTim5xx, std::nullopt},
       {"sick_lms1xx", "SICK LMS111, CoLa-A over TCP: 270 deg, 0.5 deg, 25 Hz, 0.01 .. 20 m", LaserLink::kTcp, {},
-       sickLms1xx, [](const std::string& port, int) { return openCola("sick_lms1xx", port); }, makeColaSession,
-       LaserScanSetting{"25 Hz at 0.5 | 0.25 deg, 50 Hz at 0.5 deg", 25.0, 0.5, setLms1xxScanConfig}},
+       sickLms1xx, LaserScanSetting{"25 Hz at 0.5 | 0.25 deg, 50 Hz at 0.5 deg", 25.0, 0.5, setLms1xxScanConfig}},
       {"rplidar", "Slamtec RPLIDAR A1M8 (A2, A3), serial: 360 deg, ~1 deg, 5.5 Hz, 0.15 .. 12 m", LaserLink::kSerial,
-       {115200, 256000}, rplidarA1, [](const std::string& port, int baud) { return openRplidar(port, baud); },
-       makeRplidarSession, std::nullopt},
+       {115200, 256000}, rplidarA1, std::nullopt},
   };
   return models;
 }
@@ -95,6 +94,10 @@ const LaserModelEntry& laserModelEntry(const std::string& name) {
 }
 
 LaserModel laserModel(const std::string& name) { return laserModelEntry(name).model(); }
+
+std::unique_ptr<LaserDevice> LaserModelEntry::open(const std::string& port, int baud) const {
+  return protocolOf(model()).open(name, port, baud);
+}
 
 std::string LaserEndpoint::address() const { return pty.empty() ? "localhost:" + std::to_string(tcp_port) : pty; }
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "amigobot_tracking/sensors/laser_protocol.h"
 #include "amigobot_tracking/sensors/rplidar.h"
 #include "amigobot_tracking/world/raycast.h"
 
@@ -60,7 +61,7 @@ EmulatedScan ScanSource::cast(const core::Pose2& base, double t) {
     geometry.angle_increment = -geometry.angle_increment;
   }
   EmulatedScan scan;
-  if (model_.protocol == Protocol::kRplidar) {
+  if (protocolOf(model_).samplesAsItTurns()) {
     scan.ranges = revolution(sensorPose(base), room, geometry, &scan.angles);
   } else {
     scan.ranges = world::raycastScan(sensorPose(base), room, geometry, model_.beams());

@@ -9,6 +9,7 @@
 
 #include "amigobot_tracking/core/field_table.h"
 #include "amigobot_tracking/sensors/laser_emulator_server.h"
+#include "amigobot_tracking/sensors/laser_protocol.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
 
 using namespace amigobot_tracking::sensors;
@@ -31,7 +32,8 @@ TEST(LaserRegistry, EveryEntryIsCompleteAndItsModelCarriesItsName) {
   ASSERT_GE(laserModels().size(), 4u);
   for (const LaserModelEntry& e : laserModels()) {
     SCOPED_TRACE(e.name);
-    ASSERT_TRUE(e.model && e.open && e.session);
+    ASSERT_TRUE(e.model);
+    ASSERT_NE(e.model().protocol, nullptr);
     EXPECT_FALSE(e.description.empty());
     const LaserModel m = e.model();
     EXPECT_EQ(m.name, e.name);
@@ -142,4 +144,37 @@ TEST(LaserRegistry, EmulatorScanOptionsNeedTheEntrysScanSetting) {
   EXPECT_EQ(fast.rate, 50.0);
   EXPECT_EQ(emulatedLaserModel("sick_lms1xx", std::nullopt, 0.25).beams(), 1081);
   EXPECT_NE(errorOf([] { emulatedLaserModel("sick_lms1xx", 50.0, 0.25); }).find("25 Hz"), std::string::npos);
+}
+
+// Each model's protocol (laser_protocol.h) says what the emulator, the driver and the node
+// offer for it, so none of them names a protocol: the RPLIDAR alone turns a motor, samples
+// as it turns and has rplidar_ros's angles; SCIP alone carries a checksum.
+TEST(LaserRegistry, EachModelsProtocolSaysWhatItOffers) {
+  for (const LaserModelEntry& e : laserModels()) {
+    SCOPED_TRACE(e.name);
+    const LaserProtocol& p = protocolOf(e.model());
+    const bool rplidar = e.name == "rplidar", scip = e.name == "hokuyo_urg";
+    EXPECT_EQ(p.hasMotor(), rplidar);
+    EXPECT_EQ(p.samplesAsItTurns(), rplidar);
+    EXPECT_EQ(p.rosDriverAngleConvention(), rplidar ? "rplidar_ros" : "");
+    EXPECT_EQ(p.hasChecksum(), scip);
+    EXPECT_EQ(p.noMeasurementCode(-1.0f / 0.0f), scip ? 1u : 0u);  // -inf: too close
+    EXPECT_EQ(p.noMeasurementCode(1.0f / 0.0f), 0u);                // +inf: nothing within range
+  }
+}
+
+TEST(LaserRegistry, AChecksumFaultNamesTheModelsWhoseProtocolHasOne) {
+  LaserServerOptions options;
+  options.fault = Fault::kChecksum;
+  options.fault_every = 3;
+  EXPECT_NO_THROW(options.validate(laserModel("hokuyo_urg")));
+  const std::string error = errorOf([&] { options.validate(laserModel("sick_tim5xx")); });
+  EXPECT_EQ(error, "fault: checksum needs a model whose protocol has a checksum (hokuyo_urg); sick_tim5xx speaks CoLa-A, which has none");
+  EXPECT_NE(errorOf([&] { options.validate(laserModel("rplidar")); }).find("rplidar speaks RPLIDAR"), std::string::npos);
+}
+
+TEST(LaserRegistry, AModelBuiltWithoutItsEntryHasNoProtocolAndSaysSo) {
+  LaserModel bare;
+  bare.name = "bare";
+  EXPECT_NE(errorOf([&] { bare.beams(); }).find("laser model 'bare': no protocol"), std::string::npos);
 }

@@ -43,7 +43,7 @@ std::string formatStatusLine(const EmulatorStatus& status);
 // Empty when `line` is a valid status line (then *status holds it), else what is wrong.
 std::string parseStatusLine(const std::string& line, EmulatorStatus* status);
 
-// Line-based client of the status socket over MRPT's TCP socket. Never blocks longer than
+// Line-based client of the status socket over the robot link's TCP transport (link::TcpClient). Never blocks longer than
 // its timeout (plus the connect timeout). After a failure it reconnects on a later query,
 // at most once per reconnect_period; in between, query() repeats the last failure.
 class StatusClient {

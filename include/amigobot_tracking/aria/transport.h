@@ -1,4 +1,4 @@
-// Byte links to the robot: link::SerialPort for a device path, MRPT's CClientTCPSocket for
+// Byte links to the robot: link::SerialPort for a device path, link::TcpClient for
 // "host:port" (a robot simulator or a serial-to-TCP bridge); which is which follows the one
 // address rule (link/address.h). Errors are thrown as std::runtime_error naming the port.
 #pragma once

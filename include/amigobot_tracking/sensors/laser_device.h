@@ -1,5 +1,5 @@
 // One connection to a laser, opened by its model's driver: MRPT's CHokuyoURG for SCIP 2.0
-// (serial or TCP), a CoLa-A client over MRPT's TCP socket for the SICK TiM5xx and LMS1xx,
+// (serial or TCP), a CoLa-A client over link::TcpClient for the SICK TiM5xx and LMS1xx,
 // a client of Slamtec's binary protocol over link::SerialPort for the RPLIDAR. A device
 // reports scans with its own geometry and throws std::runtime_error once the link is broken;
 // LaserDriver (laser_driver.h) then drops it and opens a new one.

@@ -12,7 +12,7 @@
 namespace amigobot_tracking {
 namespace sensors {
 
-enum class Protocol { kScip, kColaA, kRplidar };
+class LaserProtocol;  // laser_protocol.h
 
 struct ScipGeometry {
   int ares = 1024;  // steps per revolution
@@ -43,16 +43,15 @@ struct RplidarGeometry {
 
 struct LaserModel {
   std::string name;  // its entry in laser_registry.h
-  Protocol protocol = Protocol::kScip;
+  const LaserProtocol* protocol = nullptr;  // set by its registry entry; never owned
   ScipGeometry scip;
   ColaGeometry cola;
   RplidarGeometry rplidar;
   double range_min = 0.02, range_max = 4.0;  // [m]
   double rate = 10.0;                        // [Hz] scans per second
 
+  // From the protocol's numbers (LaserProtocol); throws std::logic_error without a protocol.
   int beams() const;
-  // The device's own angles: SCIP (step - AFRT) 2 pi / ARES; CoLa-A start + i step, turned
-  // by -90 deg from SICK's frame to REP 103; RPLIDAR the published grid, -pi + i 2 pi / bins.
   double angleMin() const;
   double angleIncrement() const;
   double angleMax() const { return angleMin() + angleIncrement() * (beams() - 1); }
@@ -62,6 +61,8 @@ struct LaserModel {
   core::ScanGeometry geometry() const;
 };
 
+// The model's protocol; throws std::logic_error for a model built without its registry entry.
+const LaserProtocol& protocolOf(const LaserModel& model);
 // The model of a laser_registry.h entry (laser_registry.cpp); throws std::invalid_argument
 // naming `name` and the known models when there is no such entry.
 LaserModel laserModel(const std::string& name);

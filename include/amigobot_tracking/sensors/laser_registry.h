@@ -1,8 +1,8 @@
 // The one list of the lasers the package knows: one entry per model with everything that
-// differs from one model to the next (its name, protocol, link, serial speeds, geometry and
-// data-sheet limits, how the driver opens it, how the emulator answers for it). The driver,
-// the emulator, the Laser nodelet's parameters and the tools read it; adding a model is one
-// entry here plus its protocol files. A name not in the list is an error everywhere,
+// differs from one model to the next (its name, link, serial speeds, geometry and data-sheet
+// limits, and its protocol (laser_protocol.h): how the driver opens it, how the emulator
+// answers for it). The driver, the emulator, the Laser nodelet's parameters and the tools
+// read it; adding a model is one entry here, adding a protocol its own files besides. A name not in the list is an error everywhere,
 // naming it and the known ones.
 #pragma once
 
@@ -36,13 +36,13 @@ struct LaserModelEntry {
   std::string description;  // the device and its data sheet's figures
   LaserLink link = LaserLink::kSerialOrTcp;
   std::vector<int> bauds;   // serial speeds the driver may choose, the first the default; empty: the device's own
-  std::function<LaserModel()> model;  // geometry, rate, range limits
-  std::function<std::unique_ptr<LaserDevice>(const std::string& port, int baud)> open;  // baud: 0 or one of `bauds`
-  std::function<std::unique_ptr<LaserSession>(const LaserModel& model, const std::string& serial)> session;
+  std::function<LaserModel()> model;  // protocol, geometry, rate, range limits
   std::optional<LaserScanSetting> scan_setting;  // empty: the scan is fixed
 
   bool tcp() const { return link != LaserLink::kSerial; }
   bool serial() const { return link != LaserLink::kTcp; }
+  // The driver's device: the model's protocol opens it (baud: 0 or one of `bauds`).
+  std::unique_ptr<LaserDevice> open(const std::string& port, int baud) const;
 };
 
 const std::vector<LaserModelEntry>& laserModels();
