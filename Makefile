@@ -108,11 +108,11 @@ demo: deps-workstation $(WS)/src/amigobot_tracking ## the whole stack on the emu
 	$(call timed,build of the demo,$(CATKIN) $(DEMO_TARGETS))
 	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
-# A world's map built by ICP-SLAM on the emulated robot (scripts/reports/make_map.py): the
+# A world's map built by SLAM (the pose graph) on the emulated robot (scripts/reports/make_map.py): the
 # stack follows the tour config/maps/WORLD_tour.yaml while the Localization nodelet maps;
 # writes config/maps/WORLD.yaml + .pgm (the shipped lab map is made by `make map`).
 WORLD ?= lab
-map: build ## build a world's map by ICP-SLAM on the emulated robot: config/maps/WORLD.yaml + .pgm (WORLD=lab)
+map: build ## build a world's map by SLAM on the emulated robot: config/maps/WORLD.yaml + .pgm (WORLD=lab)
 	$(ROOT)/scripts/reports/make_map.py --ws $(WS) --world $(ROOT)/config/worlds/$(WORLD).yaml
 
 bench: build ## benchmarks: core, simulator speed, scan obstacles, world ray casting, laser chain, tracking cycle, ARIA, localisation

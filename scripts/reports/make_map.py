@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""make map: builds a world's map by ICP-SLAM on the emulated robot, as a lab maps a new room.
+"""make map: builds a world's map by SLAM (the pose graph) on the emulated robot, as a lab maps a new room.
 
 Starts a private ROS master on a free port and runs sim.launch headless with
 localization:=slam (the Localization nodelet in mapping mode, the real laser chain), a tour

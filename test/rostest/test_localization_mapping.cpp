@@ -1,7 +1,7 @@
-// rostest: the Localization nodelet in mapping mode (ICP-SLAM) driven through the synthetic
-// room: the latched `map` grows with its `map_metadata`, map -> odom follows the drive, and
-// ~save_map writes map files that load and whose walls are the room's, into a folder that did
-// not exist (created); ~save_map_to writes them to the path it is given.
+// rostest: the Localization nodelet in mapping mode (its default method, the pose graph) driven
+// through the synthetic room: the latched `map` grows with its `map_metadata`, map -> odom
+// follows the drive, and ~save_map writes map files that load and whose walls are the room's,
+// into a folder that did not exist (created); ~save_map_to writes them to the path it is given.
 #include <gtest/gtest.h>
 
 #include <unistd.h>

@@ -92,6 +92,14 @@ TEST(Mapper, TheGraphMethodBuildsTheRoomToo) {
   EXPECT_GT(drive.loops, 0);
 }
 
+// The default method (localization:=slam, make map) is the one that closes loops
+// (docs/localization.md: measured on the emulated lab's make map and demo).
+TEST(Mapper, TheDefaultMethodClosesLoops) {
+  const Drive drive = driveAndMap(LocalizationConfig().mapping_method);
+  expectTheRoomsWalls(drive);
+  EXPECT_GT(drive.loops, 0) << "mapping_method " << LocalizationConfig().mapping_method;
+}
+
 TEST(Mapper, ItsSavedMapLocalisesTheRobot) {
   const Drive drive = driveAndMap();
   const std::string yaml = "/tmp/amigobot_mapper_test_" + std::to_string(::getpid()) + ".yaml";

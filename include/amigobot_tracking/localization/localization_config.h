@@ -36,7 +36,7 @@ struct GraphConfig {
 
 struct LocalizationConfig {
   std::string mode = "localization";  // mapping | localization
-  std::string mapping_method = "icp";  // mapping: icp (MRPT's ICP-SLAM) | graph (pose graph, closes loops)
+  std::string mapping_method = "graph";  // mapping: graph (pose graph, closes loops) | icp (MRPT's ICP-SLAM)
   std::string map_file;               // localization: the map to load; mapping: ~save_map's default
   bool use_map_topic = false;         // localization: the map from the `map` topic (a map_server), not map_file
   core::Pose2 initial_pose;           // [m, m, rad] map -> base at start (and the map origin's offset when mapping)
