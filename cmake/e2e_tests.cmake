@@ -20,6 +20,7 @@ target_include_directories(test_e2e SYSTEM PRIVATE ${GTEST_INCLUDE_DIRS})
 target_include_directories(test_e2e PRIVATE test/support test/e2e/include)
 target_compile_definitions(test_e2e PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
 target_compile_options(test_e2e PRIVATE ${AMIGOBOT_WARNINGS})
+set_target_properties(test_e2e PROPERTIES UNITY_BUILD ${AMIGOBOT_UNITY_BUILD} UNITY_BUILD_BATCH_SIZE ${AMIGOBOT_UNITY_BATCH})
 add_dependencies(test_e2e ${PROJECT_NAME}_generate_messages_cpp)
 add_dependencies(tests test_e2e)
 set(AMIGOBOT_E2E_NODES test_e2e amigobot_emulator amigobot_tracking_ros amigobot_tracking_ros_driver

@@ -3,8 +3,9 @@
 # the core, and the reference publisher (a target for simulation and the demo).
 # The master watch and the guarded tf listener are here too: every process of the stack uses them.
 amigobot_add_library(amigobot_tracking_ros_params src/ros/param_reader.cpp src/ros/param_aliases.cpp src/ros/reconfigure_mapping.cpp
-  src/ros/xmlrpc_call.cpp src/ros/master_watch.cpp src/ros/guarded_tf_listener.cpp src/ros/robot_source.cpp)
-target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core amigobot_tracking_aria ${catkin_LIBRARIES})
+  src/ros/xmlrpc_call.cpp src/ros/master_watch.cpp src/ros/guarded_tf_listener.cpp src/ros/robot_source.cpp
+  src/ros/node_command_line.cpp)
+target_link_libraries(amigobot_tracking_ros_params amigobot_tracking_core amigobot_tracking_aria CLI11::CLI11 ${catkin_LIBRARIES})
 
 amigobot_add_library(amigobot_tracking_ros
   src/ros/conversions.cpp

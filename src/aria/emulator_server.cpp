@@ -10,6 +10,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "amigobot_tracking/core/steady_seconds.h"
 #include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/link/serial_port.h"
 
@@ -19,10 +20,6 @@ namespace {
 
 std::runtime_error systemError(const std::string& what) {
   return std::runtime_error("amigobot_emulator: " + what + ": " + std::strerror(errno));
-}
-
-double wallSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 void writeAll(int fd, const std::vector<std::uint8_t>& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
@@ -56,10 +53,10 @@ void EmulatorServer::open() {
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("amigobot_emulator: ") + e.what());
   }
-  start_wall_ = wallSeconds();
+  start_wall_ = core::steadySeconds();
 }
 
-double EmulatorServer::now() const { return (wallSeconds() - start_wall_) * options_.time_scale; }
+double EmulatorServer::now() const { return (core::steadySeconds() - start_wall_) * options_.time_scale; }
 
 void EmulatorServer::dropTcpClient() {
   if (tcp_client_.fd < 0) return;
@@ -86,7 +83,7 @@ void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
     if (tcp_active_) {
       writeAll(fd, out);
     } else {
-      pty_line_.transmit(out, robot_.baud(), wallSeconds());
+      pty_line_.transmit(out, robot_.baud(), core::steadySeconds());
     }
   };
   if (options_.corrupt_probability <= 0.0) {
@@ -110,7 +107,7 @@ void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
 
 void EmulatorServer::flushPtyLine() {
   if (pty_.fd < 0) return;
-  const std::vector<std::uint8_t> out = pty_line_.due(wallSeconds(), link::lineBaud(pty_terminal_.slave()));
+  const std::vector<std::uint8_t> out = pty_line_.due(core::steadySeconds(), link::lineBaud(pty_terminal_.slave()));
   if (!out.empty()) writeAll(pty_.fd, out);
 }
 

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "amigobot_tracking/core/steady_seconds.h"
 #include "amigobot_tracking/aria/transport.h"
 
 namespace amigobot_tracking {
@@ -23,10 +24,6 @@ namespace {
 constexpr std::size_t kMaxLine = 65536;
 constexpr std::size_t kMaxControlLine = 256;  // "teleport" and three %.17g numbers fit in 80
 constexpr double kMaxTeleport = 1e4;           // [m] farther is a typo, not a room
-
-double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // A flag field: exactly 0 or 1.
 bool readFlag(std::istringstream& in, bool* flag) {
@@ -77,14 +74,14 @@ std::string StatusClient::where() const { return "emulator status socket " + hos
 std::string StatusClient::fail(const std::string& why) {
   link_.reset();
   buffer_.clear();
-  next_attempt_ = steadySeconds() + reconnect_period_;
+  next_attempt_ = core::steadySeconds() + reconnect_period_;
   last_error_ = why;
   return why;
 }
 
 std::string StatusClient::query(EmulatorStatus* status) {
   if (!link_) {
-    if (steadySeconds() < next_attempt_) return last_error_;
+    if (core::steadySeconds() < next_attempt_) return last_error_;
     try {
       link_ = makeTransport(host_ + ":" + std::to_string(port_), 0);
       link_->open();
@@ -95,10 +92,10 @@ std::string StatusClient::query(EmulatorStatus* status) {
   try {
     link_->write({'\n'});
     // The first complete line answers this request (one reply per request, in order).
-    const double deadline = steadySeconds() + timeout_;
+    const double deadline = core::steadySeconds() + timeout_;
     std::size_t end;
     while ((end = buffer_.find('\n')) == std::string::npos) {
-      const double left = deadline - steadySeconds();
+      const double left = deadline - core::steadySeconds();
       if (left <= 0.0) return fail("no reply from the " + where() + " within " + std::to_string(timeout_) + " s");
       std::uint8_t chunk[512];
       const std::size_t n = link_->read(chunk, sizeof(chunk), static_cast<int>(std::ceil(left * 1e3)));
@@ -247,9 +244,9 @@ std::string requestControl(const std::string& host, int port, const std::string&
     const std::string line = request + "\n";
     link->write(std::vector<std::uint8_t>(line.begin(), line.end()));
     std::string reply;
-    const double deadline = steadySeconds() + timeout;
+    const double deadline = core::steadySeconds() + timeout;
     while (reply.find('\n') == std::string::npos) {
-      const double left = deadline - steadySeconds();
+      const double left = deadline - core::steadySeconds();
       if (left <= 0.0 || reply.size() > kMaxControlLine) return "no answer from the " + where;
       std::uint8_t chunk[256];
       const std::size_t n = link->read(chunk, sizeof(chunk), static_cast<int>(std::ceil(left * 1e3)));

@@ -48,9 +48,6 @@ constexpr double kMaxSlide = 0.1;          // [m]
 constexpr double kMaxSlidePerTravel = 0.2; // [m/m]
 constexpr double kMinGoodness = 0.4;       // MRPT's fraction of paired points below which ICP is refused
 
-double travel(const core::Pose2& a, const core::Pose2& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-double turn(const core::Pose2& a, const core::Pose2& b) { return std::abs(core::wrapAngle(a.theta - b.theta)); }
-
 // Information of an edge: a scan-matched motion known to a few centimetres and about a degree.
 Eigen::Matrix3d edgeInformation() { return Eigen::Vector3d(1.0 / (0.05 * 0.05), 1.0 / (0.05 * 0.05), 1.0 / (0.02 * 0.02)).asDiagonal(); }
 

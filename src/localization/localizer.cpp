@@ -15,9 +15,6 @@ namespace localization {
 
 namespace {
 
-double travel(const core::Pose2& a, const core::Pose2& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-double turn(const core::Pose2& a, const core::Pose2& b) { return std::abs(core::wrapAngle(a.theta - b.theta)); }
-
 // Distances beyond the farthest useful one do not matter to the scores.
 constexpr double kFieldCap = 2.0;  // [m]
 

@@ -10,6 +10,7 @@
 #include <ros/service_manager.h>
 #include <ros/xmlrpc_manager.h>
 
+#include "amigobot_tracking/core/steady_seconds.h"
 #include "amigobot_tracking/ros/xmlrpc_call.h"
 
 namespace amigobot_tracking {
@@ -20,10 +21,6 @@ namespace {
 // graph (tens of kB with two robots), which across a Wi-Fi to a master on the other robot cost
 // 35 kB/s at 1 Hz. Services are advertised at start-up, so the interval doubles from 1 s to 30 s.
 constexpr double kServiceRefreshLast = 30.0;
-
-double steadyNow() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 XmlRpc::XmlRpcValue args(std::initializer_list<std::string> values) {
   XmlRpc::XmlRpcValue a;
@@ -84,7 +81,7 @@ MasterWatch::State MasterWatch::state() const {
   std::lock_guard<std::mutex> lock(mutex_);
   State s = state_;
   s.reachable = presence_.reachable();
-  s.unreachable_for = presence_.unreachableFor(steadyNow());
+  s.unreachable_for = presence_.unreachableFor(core::steadySeconds());
   return s;
 }
 
@@ -178,13 +175,13 @@ std::string MasterWatch::registerEverything() {
 
 void MasterWatch::run() {
   while (!stop_) {
-    const double started = steadyNow();
+    const double started = core::steadySeconds();
     std::string error;
     const std::optional<std::string> pid = pollPid(&error);
     MasterPresence::Change change;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      change = presence_.observe(steadyNow(), pid);
+      change = presence_.observe(core::steadySeconds(), pid);
     }
     if (change == MasterPresence::Change::kNewMaster) {
       const std::string summary = registerEverything();
@@ -197,7 +194,7 @@ void MasterWatch::run() {
       next_service_refresh_ = started + service_refresh_;
       service_refresh_ = std::min(2.0 * service_refresh_, kServiceRefreshLast);
     }
-    const double left = kPollPeriod - (steadyNow() - started);
+    const double left = kPollPeriod - (core::steadySeconds() - started);
     if (left > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(left));
   }
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "amigobot_tracking/core/steady_seconds.h"
 #include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/sensors/laser_protocol.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
@@ -20,10 +21,6 @@ namespace {
 
 std::runtime_error failure(const std::string& what) {
   return std::runtime_error("laser_emulator: " + what + ": " + std::strerror(errno));
-}
-
-double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 void sendAll(int fd, const std::string& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
@@ -105,7 +102,7 @@ void LaserEmulatorServer::open() {
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("laser_emulator: ") + e.what());
   }
-  next_scan_ = steadySeconds();
+  next_scan_ = core::steadySeconds();
 }
 
 void LaserEmulatorServer::accept() {
@@ -146,7 +143,7 @@ std::string LaserEmulatorServer::damage(std::string telegram) {
 }
 
 void LaserEmulatorServer::tick() {
-  const double now = steadySeconds();
+  const double now = core::steadySeconds();
   // A scan leaves the device once its last beam is measured: cast at the first beam, sent
   // one sweep of the measured beams later.
   if (has_pending_ && now >= pending_due_) {
@@ -223,8 +220,8 @@ void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
       }
     }
     tick();
-    drain(tcp_, steadySeconds());
-    drain(pty_, steadySeconds());
+    drain(tcp_, core::steadySeconds());
+    drain(pty_, core::steadySeconds());
   }
 }
 

@@ -28,6 +28,7 @@
 #include "one_turn_scan.h"
 #include "periodic_thread.h"
 #include "rosout_log.h"
+#include "stack_timing.h"
 
 using e2e::CircleTarget;
 using e2e::EmulatorStatus;
@@ -35,14 +36,13 @@ using e2e::requiredParam;
 
 namespace {
 
-// config/tracking.yaml scan_timeout; one control period (20 Hz); the driver's next command
-// slot (min_command_interval 0.05 s, found by its 20 ms poll), as in test_laser_faults.cpp.
-constexpr double kScanTimeout = 0.5, kControlPeriod = 0.05, kDriverSlot = 0.05 + 0.02;
+// The stack's timeouts and periods: stack_timing.h.
+using namespace stack_timing;
 constexpr double kBadFor = 1.5;  // [s] each bad scan is sent this long: three scan timeouts
-constexpr float kInf = std::numeric_limits<float>::infinity(), kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInfRange = std::numeric_limits<float>::infinity(), kNaNRange = std::numeric_limits<float>::quiet_NaN();
 
 // The good scan of an empty room: nothing within range_max.
-sensor_msgs::LaserScan goodScan() { return amigobot_test::oneTurnScan(kInf); }
+sensor_msgs::LaserScan goodScan() { return amigobot_test::oneTurnScan(kInfRange); }
 
 sensor_msgs::LaserScan spoiled(const std::function<void(sensor_msgs::LaserScan&)>& spoil) {
   sensor_msgs::LaserScan s = goodScan();
@@ -107,8 +107,8 @@ TEST(E2E, BadScansAreRefusedByNameAndStopTheRobot) {
   const std::vector<BadScan> refused = {
       {"angle_increment 0", spoiled([](sensor_msgs::LaserScan& s) { s.angle_increment = 0.0f; }), "angle_increment:"},
       {"range_min > range_max", spoiled([](sensor_msgs::LaserScan& s) { s.range_min = 10.0f; }), "range_max:"},
-      {"NaN angle_min", spoiled([](sensor_msgs::LaserScan& s) { s.angle_min = kNaN; }), "angle_min:"},
-      {"only NaN ranges", spoiled([](sensor_msgs::LaserScan& s) { s.ranges.assign(360, kNaN); }), "(360 NaN"},
+      {"NaN angle_min", spoiled([](sensor_msgs::LaserScan& s) { s.angle_min = kNaNRange; }), "angle_min:"},
+      {"only NaN ranges", spoiled([](sensor_msgs::LaserScan& s) { s.ranges.assign(360, kNaNRange); }), "(360 NaN"},
       {"only negative ranges", spoiled([](sensor_msgs::LaserScan& s) { s.ranges.assign(360, -1.0f); }),
        "0 NaN, 360 below range_min"},
       {"100,000 ranges under a 360-beam header",
@@ -150,13 +150,13 @@ TEST(E2E, BadScansAreRefusedByNameAndStopTheRobot) {
   const std::vector<BadScan> used = {
       {"NaN, -inf, negative and too-far beams among readings", spoiled([](sensor_msgs::LaserScan& s) {
          for (std::size_t i = 0; i < s.ranges.size(); ++i) {
-           const float odd[] = {kNaN, -kInf, -1.0f, 100.0f, kInf};
+           const float odd[] = {kNaNRange, -kInfRange, -1.0f, 100.0f, kInfRange};
            s.ranges[i] = odd[i % 5];
          }
        }), ""},
       {"100,000 beams over one turn", spoiled([](sensor_msgs::LaserScan& s) {
          s.angle_increment = static_cast<float>(2.0 * M_PI / 99999.0);
-         s.ranges.assign(100000, kInf);
+         s.ranges.assign(100000, kInfRange);
        }), ""},
   };
   for (const BadScan& odd : used) {

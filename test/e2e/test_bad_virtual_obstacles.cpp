@@ -25,6 +25,7 @@
 #include "circle_target.h"
 #include "judge.h"
 #include "rosout_log.h"
+#include "stack_timing.h"
 
 using amigobot_tracking::VirtualObstacle;
 using amigobot_tracking::VirtualObstacleArray;
@@ -34,9 +35,8 @@ using e2e::requiredParam;
 
 namespace {
 
-// One control period (20 Hz); the driver's next command slot (min_command_interval 0.05 s,
-// found by its 20 ms poll), as in test_laser_faults.cpp.
-constexpr double kControlPeriod = 0.05, kDriverSlot = 0.05 + 0.02;
+// The stack's timeouts and periods: stack_timing.h.
+using namespace stack_timing;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN(), kInf = std::numeric_limits<double>::infinity();
 
 struct BadObstacle {

@@ -14,6 +14,7 @@
 #include "experiment.h"
 #include "fault_run.h"
 #include "judge.h"
+#include "stack_timing.h"
 
 using e2e::CircleTarget;
 using e2e::EmulatorStatus;
@@ -21,9 +22,8 @@ using e2e::requiredParam;
 
 namespace {
 
-// config/tracking.yaml pose_timeout; the driver's next command slot (min_command_interval
-// 0.05 s, found by its 20 ms poll), as in test_target_loss.cpp.
-constexpr double kPoseTimeout = 0.5, kDriverSlot = 0.05 + 0.02;
+// The stack's timeouts and periods: stack_timing.h.
+using namespace stack_timing;
 
 }  // namespace
 

@@ -28,6 +28,7 @@
 #include "experiment.h"
 #include "judge.h"
 #include "rosout_log.h"
+#include "stack_timing.h"
 
 using e2e::CircleTarget;
 using e2e::EmulatorStatus;
@@ -35,9 +36,8 @@ using e2e::requiredParam;
 
 namespace {
 
-// config/tracking.yaml scan_timeout; one control period (20 Hz); the driver's next command
-// slot (min_command_interval 0.05 s, found by its 20 ms poll), as in test_target_loss.cpp.
-constexpr double kScanTimeout = 0.5, kControlPeriod = 0.05, kDriverSlot = 0.05 + 0.02;
+// The stack's timeouts and periods: stack_timing.h.
+using namespace stack_timing;
 constexpr double kStall = 3.0;  // [s] well past scan_timeout, short of any reconnect back-off
 
 // laser_emulator is no ROS node (the master cannot name its pid): the process whose command

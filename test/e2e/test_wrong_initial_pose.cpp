@@ -14,16 +14,15 @@
 #include "experiment.h"
 #include "fault_run.h"
 #include "judge.h"
+#include "stack_timing.h"
 
 using e2e::EmulatorStatus;
 using e2e::requiredParam;
 
 namespace {
 
-// What stops the robot: the next scan after /initialpose (TiM, 15 Hz) publishes "not localized"
-// on localization_status, the next control step (20 Hz) stops, the driver's next command slot
-// (min_command_interval 0.05 s, found by its 20 ms poll) puts the zero on the wire.
-constexpr double kScanPeriod = 1.0 / 15.0, kControlPeriod = 0.05, kDriverSlot = 0.05 + 0.02;
+// The stack's timeouts and periods: stack_timing.h.
+using namespace stack_timing;
 constexpr double kStopLimit = kScanPeriod + kControlPeriod + kDriverSlot + 0.1;
 // [m] a believed pose this far from the truth is "lost": the robot must not drive on it.
 constexpr double kLostError = 0.2;

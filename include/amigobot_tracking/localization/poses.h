@@ -1,6 +1,8 @@
 // Planar pose algebra of the localisation (a (+) b, inverse) through MRPT's CPose2D.
 #pragma once
 
+#include <cmath>
+
 #include <mrpt/poses/CPose2D.h>
 
 #include "amigobot_tracking/core/types.h"
@@ -17,6 +19,10 @@ inline core::Pose2 inverse(const core::Pose2& a) {
   p.inverse();
   return fromMrpt(p);
 }
+// How far apart two poses are [m], and how much their headings differ [rad, in [0, pi]]:
+// the keyframe and update gates of the mapper and the localiser.
+inline double travel(const core::Pose2& a, const core::Pose2& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+inline double turn(const core::Pose2& a, const core::Pose2& b) { return std::abs(core::wrapAngle(a.theta - b.theta)); }
 
 }  // namespace localization
 }  // namespace amigobot_tracking
