@@ -1,16 +1,12 @@
 #include "amigobot_tracking/aria/emulator_status.h"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -160,25 +156,11 @@ std::optional<core::Pose2> TeleportMailbox::take() {
 
 ControlServer::ControlServer(TeleportMailbox& mailbox, const std::string& bind_address, int port)
     : mailbox_(mailbox) {
-  const std::string where = "emulator control socket " + bind_address + ":" + std::to_string(port);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(static_cast<std::uint16_t>(port));
-  if (port < 0 || port > 65535) throw std::runtime_error(where + ": the port must be within 0..65535");
-  if (::inet_pton(AF_INET, bind_address.c_str(), &addr.sin_addr) != 1) {
-    throw std::runtime_error(where + ": '" + bind_address + "' is not an IPv4 address");
+  try {
+    listener_.open(bind_address, port);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("emulator control socket " + bind_address + ":" + std::to_string(port) + ": " + e.what());
   }
-  listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  const int one = 1;
-  if (listen_fd_ >= 0) ::setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
-  socklen_t len = sizeof(addr);
-  if (listen_fd_ < 0 || ::bind(listen_fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0 ||
-      ::listen(listen_fd_, 4) < 0 || ::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len) < 0) {
-    const std::string error = std::strerror(errno);
-    if (listen_fd_ >= 0) ::close(listen_fd_);
-    throw std::runtime_error(where + ": " + error);
-  }
-  port_ = ntohs(addr.sin_port);
   thread_ = std::thread([this] { run(); });
 }
 
@@ -186,7 +168,6 @@ ControlServer::~ControlServer() {
   stop_ = true;
   thread_.join();
   for (int fd : clients_) ::close(fd);
-  ::close(listen_fd_);
 }
 
 bool ControlServer::serve(int fd, std::string& pending) {
@@ -216,7 +197,7 @@ bool ControlServer::serve(int fd, std::string& pending) {
 
 void ControlServer::run() {
   while (!stop_) {
-    std::vector<pollfd> fds{{listen_fd_, POLLIN, 0}};
+    std::vector<pollfd> fds{{listener_.fd(), POLLIN, 0}};
     for (int fd : clients_) fds.push_back({fd, POLLIN, 0});
     if (::poll(fds.data(), fds.size(), 50) <= 0) continue;  // 50 ms: how soon the destructor returns
     for (std::size_t k = clients_.size(); k-- > 0;) {
@@ -226,7 +207,7 @@ void ControlServer::run() {
       buffers_.erase(buffers_.begin() + static_cast<std::ptrdiff_t>(k));
     }
     if (fds[0].revents & POLLIN) {
-      const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
+      const int fd = listener_.accept();
       if (fd >= 0) {
         clients_.push_back(fd);
         buffers_.emplace_back();

@@ -1,9 +1,10 @@
 // The server side of an emulated device's link, shared by the robot and laser emulators: a
 // TCP port that serves one client at a time (a device has one host: the newest connection
 // replaces the old one) and a pseudo-terminal behind a stable symlink (the device's serial
-// or USB-ACM port). Plain POSIX sockets: MRPT's classes cover only the client side. The
-// emulators keep their own poll() loops (each has its own extra descriptors and timing);
-// this is what they share. Errors are std::runtime_error naming the address or path.
+// or USB-ACM port). Plain POSIX sockets, as link::TcpClient (tcp_client.h) on the client
+// side; this is the stack's one listening socket (the emulators' device ports and the robot
+// emulator's control socket). The emulators keep their own poll() loops (each has its own
+// extra descriptors and timing); this is what they share. Errors are std::runtime_error naming the address or path.
 #pragma once
 
 #include <cstddef>
