@@ -4,7 +4,6 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -19,10 +18,6 @@ namespace {
 constexpr std::size_t kMaxLine = 65536;
 constexpr std::size_t kMaxControlLine = 256;  // "teleport" and three %.17g numbers fit in 80
 constexpr double kMaxTeleport = 1e4;           // [m] farther is a typo, not a room
-
-double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // A flag field: exactly 0 or 1.
 bool readFlag(std::istringstream& in, bool* flag) {
@@ -73,14 +68,14 @@ std::string StatusClient::where() const { return "emulator status socket " + hos
 std::string StatusClient::fail(const std::string& why) {
   link_.reset();
   buffer_.clear();
-  next_attempt_ = steadySeconds() + reconnect_period_;
+  next_attempt_ = link::steadySeconds() + reconnect_period_;
   last_error_ = why;
   return why;
 }
 
 std::string StatusClient::query(EmulatorStatus* status) {
   if (!link_) {
-    if (steadySeconds() < next_attempt_) return last_error_;
+    if (link::steadySeconds() < next_attempt_) return last_error_;
     try {
       link_ = makeTransport(host_ + ":" + std::to_string(port_), 0);
       link_->open();
@@ -91,18 +86,16 @@ std::string StatusClient::query(EmulatorStatus* status) {
   try {
     link_->write({'\n'});
     // The first complete line answers this request (one reply per request, in order).
-    const double deadline = steadySeconds() + timeout_;
-    std::size_t end;
-    while ((end = buffer_.find('\n')) == std::string::npos) {
-      const double left = deadline - steadySeconds();
+    const double deadline = link::steadySeconds() + timeout_;
+    std::string line;
+    while (!link::takeLine(buffer_, &line)) {
+      const double left = deadline - link::steadySeconds();
       if (left <= 0.0) return fail("no reply from the " + where() + " within " + std::to_string(timeout_) + " s");
       std::uint8_t chunk[512];
       const std::size_t n = link_->read(chunk, sizeof(chunk), static_cast<int>(std::ceil(left * 1e3)));
       buffer_.append(reinterpret_cast<const char*>(chunk), n);
       if (buffer_.size() > kMaxLine) return fail(where() + " sends no line breaks");
     }
-    const std::string line = buffer_.substr(0, end);
-    buffer_.erase(0, end + 1);
     const std::string error = parseStatusLine(line, status);
     return error.empty() ? error : fail(where() + ": " + error);
   } catch (const std::exception& e) {
@@ -167,51 +160,37 @@ ControlServer::ControlServer(TeleportMailbox& mailbox, const std::string& bind_a
 ControlServer::~ControlServer() {
   stop_ = true;
   thread_.join();
-  for (int fd : clients_) ::close(fd);
 }
 
-bool ControlServer::serve(int fd, std::string& pending) {
-  char buffer[256];
-  const ssize_t n = ::read(fd, buffer, sizeof(buffer));
-  if (n <= 0) return false;
-  pending.append(buffer, static_cast<std::size_t>(n));
-  std::size_t eol;
-  while ((eol = pending.find('\n')) != std::string::npos) {
-    const std::string line = pending.substr(0, eol);
-    pending.erase(0, eol + 1);
-    std::string error;
-    if (line.rfind("deaf", 0) == 0) {
-      bool deaf = false;
-      error = parseDeafLine(line, &deaf);
-      if (error.empty()) mailbox_.setDeaf(deaf);
-    } else {
-      core::Pose2 pose;
-      error = parseControlLine(line, &pose);
-      if (error.empty()) mailbox_.post(pose);
-    }
-    const std::string reply = error.empty() ? "ok\n" : "error: " + error + "\n";
-    if (::send(fd, reply.data(), reply.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(reply.size())) return false;
+bool ControlServer::answer(int fd, const std::string& line) {
+  std::string error;
+  if (line.rfind("deaf", 0) == 0) {
+    bool deaf = false;
+    error = parseDeafLine(line, &deaf);
+    if (error.empty()) mailbox_.setDeaf(deaf);
+  } else {
+    core::Pose2 pose;
+    error = parseControlLine(line, &pose);
+    if (error.empty()) mailbox_.post(pose);
   }
-  return pending.size() <= kMaxControlLine;  // a client that sends no line breaks is dropped
+  const std::string reply = error.empty() ? "ok\n" : "error: " + error + "\n";
+  return ::send(fd, reply.data(), reply.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(reply.size());
 }
 
 void ControlServer::run() {
   while (!stop_) {
     std::vector<pollfd> fds{{listener_.fd(), POLLIN, 0}};
-    for (int fd : clients_) fds.push_back({fd, POLLIN, 0});
+    for (std::size_t k = 0; k < clients_.size(); ++k) fds.push_back({clients_.fd(k), POLLIN, 0});
     if (::poll(fds.data(), fds.size(), 50) <= 0) continue;  // 50 ms: how soon the destructor returns
-    for (std::size_t k = clients_.size(); k-- > 0;) {
-      if (!(fds[k + 1].revents & (POLLIN | POLLHUP | POLLERR)) || serve(clients_[k], buffers_[k])) continue;
-      ::close(clients_[k]);
-      clients_.erase(clients_.begin() + static_cast<std::ptrdiff_t>(k));
-      buffers_.erase(buffers_.begin() + static_cast<std::ptrdiff_t>(k));
+    for (std::size_t k = 0; k < clients_.size(); ++k) {
+      if (!(fds[k + 1].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      // A client that sends no line breaks is dropped.
+      clients_.read(k, [this](int fd, const std::string& line) { return answer(fd, line); }, kMaxControlLine);
     }
+    clients_.sweep();
     if (fds[0].revents & POLLIN) {
       const int fd = listener_.accept();
-      if (fd >= 0) {
-        clients_.push_back(fd);
-        buffers_.emplace_back();
-      }
+      if (fd >= 0) clients_.add(fd);
     }
   }
 }
@@ -227,16 +206,15 @@ std::string requestControl(const std::string& host, int port, const std::string&
     link->open();
     const std::string line = request + "\n";
     link->write(std::vector<std::uint8_t>(line.begin(), line.end()));
-    std::string reply;
-    const double deadline = steadySeconds() + timeout;
-    while (reply.find('\n') == std::string::npos) {
-      const double left = deadline - steadySeconds();
-      if (left <= 0.0 || reply.size() > kMaxControlLine) return "no answer from the " + where;
+    std::string pending, reply;
+    const double deadline = link::steadySeconds() + timeout;
+    while (!link::takeLine(pending, &reply)) {
+      const double left = deadline - link::steadySeconds();
+      if (left <= 0.0 || pending.size() > kMaxControlLine) return "no answer from the " + where;
       std::uint8_t chunk[256];
       const std::size_t n = link->read(chunk, sizeof(chunk), static_cast<int>(std::ceil(left * 1e3)));
-      reply.append(reinterpret_cast<const char*>(chunk), n);
+      pending.append(reinterpret_cast<const char*>(chunk), n);
     }
-    reply.erase(reply.find('\n'));
     return reply == "ok" ? "" : where + ": " + reply;
   } catch (const std::exception& e) {
     return where + ": " + e.what();

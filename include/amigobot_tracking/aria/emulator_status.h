@@ -112,12 +112,11 @@ class ControlServer {
 
  private:
   void run();
-  bool serve(int fd, std::string& pending);  // false: close the client
+  bool answer(int fd, const std::string& line);  // false: close the client
 
   TeleportMailbox& mailbox_;
   link::TcpListener listener_;
-  std::vector<int> clients_;
-  std::vector<std::string> buffers_;
+  link::LineClients clients_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
