@@ -10,7 +10,7 @@ amigobot_add_library(amigobot_tracking_link
 target_include_directories(amigobot_tracking_link PUBLIC include)
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(unit address serial_port tcp_client)
+  foreach(unit address serial_port tcp_client line_clients)
     amigobot_add_unit_test(test_link_${unit} test/unit/test_link_${unit}.cpp)
     target_link_libraries(test_link_${unit} amigobot_tracking_link)
   endforeach()

@@ -29,7 +29,7 @@ sources() {  # the sources of target $1 besides test/fuzz/fuzz_$1.cpp
     scip) echo src/sensors/scip.cpp ;;
     cola_a) echo src/sensors/cola_a.cpp ;;
     rplidar) echo src/sensors/rplidar.cpp ;;
-    status_line) echo src/aria/emulator_status.cpp src/aria/transport.cpp src/link/address.cpp src/link/serial_port.cpp src/link/tcp_client.cpp src/core/diamond.cpp src/core/error_text.cpp ;;
+    status_line) echo src/aria/emulator_status.cpp src/aria/transport.cpp src/link/address.cpp src/link/emulator_link.cpp src/link/serial_port.cpp src/link/tcp_client.cpp src/core/diamond.cpp src/core/error_text.cpp ;;
     param_value) echo src/core/field_table.cpp ;;
     world) echo src/world/world.cpp src/core/input_file.cpp src/core/diamond.cpp src/core/obstacle_motion.cpp ;;
     scenario) echo src/sim/*.cpp src/core/*.cpp ;;

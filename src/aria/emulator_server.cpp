@@ -4,28 +4,13 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
-#include <csignal>
-#include <cstdio>
-#include <cstring>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/steady_seconds.h"
 #include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/link/serial_port.h"
 
 namespace amigobot_tracking {
 namespace aria {
-namespace {
-
-std::runtime_error systemError(const std::string& what) {
-  return std::runtime_error("amigobot_emulator: " + what + ": " + std::strerror(errno));
-}
-
-void writeAll(int fd, const std::vector<std::uint8_t>& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
-
-}  // namespace
-
 EmulatorServer::EmulatorServer(RobotEmulator& robot, EmulatorServerOptions options)
     : robot_(robot), options_(std::move(options)), noise_(options_.corrupt_seed) {
   if (!(options_.corrupt_probability >= 0.0 && options_.corrupt_probability <= 1.0)) {
@@ -38,7 +23,6 @@ EmulatorServer::EmulatorServer(RobotEmulator& robot, EmulatorServerOptions optio
 
 EmulatorServer::~EmulatorServer() {
   if (tcp_client_.fd >= 0) ::close(tcp_client_.fd);
-  for (int fd : status_clients_) ::close(fd);
 }
 
 void EmulatorServer::open() {
@@ -53,10 +37,10 @@ void EmulatorServer::open() {
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("amigobot_emulator: ") + e.what());
   }
-  start_wall_ = core::steadySeconds();
+  start_wall_ = link::steadySeconds();
 }
 
-double EmulatorServer::now() const { return (core::steadySeconds() - start_wall_) * options_.time_scale; }
+double EmulatorServer::now() const { return (link::steadySeconds() - start_wall_) * options_.time_scale; }
 
 void EmulatorServer::dropTcpClient() {
   if (tcp_client_.fd < 0) return;
@@ -81,9 +65,9 @@ void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
   // The pty's bytes go through the robot's UART model; TCP has no baud.
   const auto deliver = [&](const std::vector<std::uint8_t>& out) {
     if (tcp_active_) {
-      writeAll(fd, out);
+      link::sendAvailable(fd, out);
     } else {
-      pty_line_.transmit(out, robot_.baud(), core::steadySeconds());
+      pty_line_.transmit(out, robot_.baud(), link::steadySeconds());
     }
   };
   if (options_.corrupt_probability <= 0.0) {
@@ -107,8 +91,8 @@ void EmulatorServer::sendToActive(const std::vector<std::uint8_t>& bytes) {
 
 void EmulatorServer::flushPtyLine() {
   if (pty_.fd < 0) return;
-  const std::vector<std::uint8_t> out = pty_line_.due(core::steadySeconds(), link::lineBaud(pty_terminal_.slave()));
-  if (!out.empty()) writeAll(pty_.fd, out);
+  const std::vector<std::uint8_t> out = pty_line_.due(link::steadySeconds(), link::lineBaud(pty_terminal_.slave()));
+  if (!out.empty()) link::sendAvailable(pty_.fd, out);
 }
 
 void EmulatorServer::readLink(Link& link, bool is_tcp) {
@@ -139,24 +123,11 @@ void EmulatorServer::readLink(Link& link, bool is_tcp) {
 }
 
 void EmulatorServer::serveStatus(std::size_t index, bool& quit) {
-  char buffer[256];
-  const ssize_t n = ::read(status_clients_[index], buffer, sizeof(buffer));
-  if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return;  // non-blocking: nothing yet
-  if (n <= 0) {
-    ::close(status_clients_[index]);
-    status_clients_[index] = -1;
-    return;
-  }
-  std::string& pending = status_buffers_[index];
-  pending.append(buffer, static_cast<std::size_t>(n));
-  std::size_t eol;
-  while ((eol = pending.find('\n')) != std::string::npos) {
-    const std::string line = pending.substr(0, eol);
-    pending.erase(0, eol + 1);
+  status_clients_.read(index, [&](int fd, const std::string& line) {
     if (line.rfind("quit", 0) == 0) quit = true;
-    const std::string reply = formatStatusLine(robot_.status(now())) + "\n";
-    writeAll(status_clients_[index], std::vector<std::uint8_t>(reply.begin(), reply.end()));
-  }
+    link::sendAvailable(fd, formatStatusLine(robot_.status(now())) + "\n");
+    return true;
+  });
 }
 
 void EmulatorServer::run(const std::atomic<bool>& stop) {
@@ -172,10 +143,10 @@ void EmulatorServer::run(const std::atomic<bool>& stop) {
     const int i_tcp = add(tcp_client_.fd);
     const int i_pty = add(pty_.fd);
     const int i_status0 = static_cast<int>(fds.size());
-    for (int fd : status_clients_) fds.push_back({fd, POLLIN, 0});
+    for (std::size_t k = 0; k < status_clients_.size(); ++k) fds.push_back({status_clients_.fd(k), POLLIN, 0});
     // Wake often enough for the physics step and the SIP cycle in wall time.
     const int timeout_ms = std::max(1, static_cast<int>(5.0 / options_.time_scale));
-    if (::poll(fds.data(), fds.size(), timeout_ms) < 0 && errno != EINTR) throw systemError("poll");
+    if (::poll(fds.data(), fds.size(), timeout_ms) < 0 && errno != EINTR) throw link::systemError("amigobot_emulator: poll");
     auto ready = [&](int i) { return i >= 0 && (fds[static_cast<std::size_t>(i)].revents & (POLLIN | POLLHUP | POLLERR)); };
     if (ready(i_tcp_listen)) acceptRobotClient();
     if (ready(i_tcp) && tcp_client_.fd == fds[static_cast<std::size_t>(i_tcp)].fd) readLink(tcp_client_, true);
@@ -186,20 +157,12 @@ void EmulatorServer::run(const std::atomic<bool>& stop) {
     const std::size_t n_status = status_clients_.size();
     if (ready(i_status_listen)) {
       const int fd = status_listen_.accept();
-      if (fd >= 0) {
-        status_clients_.push_back(fd);
-        status_buffers_.emplace_back();
-      }
+      if (fd >= 0) status_clients_.add(fd);
     }
     for (std::size_t k = 0; k < n_status; ++k) {
       if (ready(i_status0 + static_cast<int>(k))) serveStatus(k, quit);
     }
-    for (std::size_t k = status_clients_.size(); k-- > 0;) {
-      if (status_clients_[k] < 0) {
-        status_clients_.erase(status_clients_.begin() + static_cast<std::ptrdiff_t>(k));
-        status_buffers_.erase(status_buffers_.begin() + static_cast<std::ptrdiff_t>(k));
-      }
-    }
+    status_clients_.sweep();
     sendToActive(robot_.advance(now()));
     flushPtyLine();
   }

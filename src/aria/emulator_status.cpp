@@ -1,20 +1,14 @@
 #include "amigobot_tracking/aria/emulator_status.h"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/steady_seconds.h"
 #include "amigobot_tracking/aria/transport.h"
 
 namespace amigobot_tracking {
@@ -74,14 +68,14 @@ std::string StatusClient::where() const { return "emulator status socket " + hos
 std::string StatusClient::fail(const std::string& why) {
   link_.reset();
   buffer_.clear();
-  next_attempt_ = core::steadySeconds() + reconnect_period_;
+  next_attempt_ = link::steadySeconds() + reconnect_period_;
   last_error_ = why;
   return why;
 }
 
 std::string StatusClient::query(EmulatorStatus* status) {
   if (!link_) {
-    if (core::steadySeconds() < next_attempt_) return last_error_;
+    if (link::steadySeconds() < next_attempt_) return last_error_;
     try {
       link_ = makeTransport(host_ + ":" + std::to_string(port_), 0);
       link_->open();
@@ -92,18 +86,16 @@ std::string StatusClient::query(EmulatorStatus* status) {
   try {
     link_->write({'\n'});
     // The first complete line answers this request (one reply per request, in order).
-    const double deadline = core::steadySeconds() + timeout_;
-    std::size_t end;
-    while ((end = buffer_.find('\n')) == std::string::npos) {
-      const double left = deadline - core::steadySeconds();
+    const double deadline = link::steadySeconds() + timeout_;
+    std::string line;
+    while (!link::takeLine(buffer_, &line)) {
+      const double left = deadline - link::steadySeconds();
       if (left <= 0.0) return fail("no reply from the " + where() + " within " + std::to_string(timeout_) + " s");
       std::uint8_t chunk[512];
       const std::size_t n = link_->read(chunk, sizeof(chunk), static_cast<int>(std::ceil(left * 1e3)));
       buffer_.append(reinterpret_cast<const char*>(chunk), n);
       if (buffer_.size() > kMaxLine) return fail(where() + " sends no line breaks");
     }
-    const std::string line = buffer_.substr(0, end);
-    buffer_.erase(0, end + 1);
     const std::string error = parseStatusLine(line, status);
     return error.empty() ? error : fail(where() + ": " + error);
   } catch (const std::exception& e) {
@@ -157,77 +149,48 @@ std::optional<core::Pose2> TeleportMailbox::take() {
 
 ControlServer::ControlServer(TeleportMailbox& mailbox, const std::string& bind_address, int port)
     : mailbox_(mailbox) {
-  const std::string where = "emulator control socket " + bind_address + ":" + std::to_string(port);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(static_cast<std::uint16_t>(port));
-  if (port < 0 || port > 65535) throw std::runtime_error(where + ": the port must be within 0..65535");
-  if (::inet_pton(AF_INET, bind_address.c_str(), &addr.sin_addr) != 1) {
-    throw std::runtime_error(where + ": '" + bind_address + "' is not an IPv4 address");
+  try {
+    listener_.open(bind_address, port);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("emulator control socket " + bind_address + ":" + std::to_string(port) + ": " + e.what());
   }
-  listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  const int one = 1;
-  if (listen_fd_ >= 0) ::setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
-  socklen_t len = sizeof(addr);
-  if (listen_fd_ < 0 || ::bind(listen_fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0 ||
-      ::listen(listen_fd_, 4) < 0 || ::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len) < 0) {
-    const std::string error = std::strerror(errno);
-    if (listen_fd_ >= 0) ::close(listen_fd_);
-    throw std::runtime_error(where + ": " + error);
-  }
-  port_ = ntohs(addr.sin_port);
   thread_ = std::thread([this] { run(); });
 }
 
 ControlServer::~ControlServer() {
   stop_ = true;
   thread_.join();
-  for (int fd : clients_) ::close(fd);
-  ::close(listen_fd_);
 }
 
-bool ControlServer::serve(int fd, std::string& pending) {
-  char buffer[256];
-  const ssize_t n = ::read(fd, buffer, sizeof(buffer));
-  if (n <= 0) return false;
-  pending.append(buffer, static_cast<std::size_t>(n));
-  std::size_t eol;
-  while ((eol = pending.find('\n')) != std::string::npos) {
-    const std::string line = pending.substr(0, eol);
-    pending.erase(0, eol + 1);
-    std::string error;
-    if (line.rfind("deaf", 0) == 0) {
-      bool deaf = false;
-      error = parseDeafLine(line, &deaf);
-      if (error.empty()) mailbox_.setDeaf(deaf);
-    } else {
-      core::Pose2 pose;
-      error = parseControlLine(line, &pose);
-      if (error.empty()) mailbox_.post(pose);
-    }
-    const std::string reply = error.empty() ? "ok\n" : "error: " + error + "\n";
-    if (::send(fd, reply.data(), reply.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(reply.size())) return false;
+bool ControlServer::answer(int fd, const std::string& line) {
+  std::string error;
+  if (line.rfind("deaf", 0) == 0) {
+    bool deaf = false;
+    error = parseDeafLine(line, &deaf);
+    if (error.empty()) mailbox_.setDeaf(deaf);
+  } else {
+    core::Pose2 pose;
+    error = parseControlLine(line, &pose);
+    if (error.empty()) mailbox_.post(pose);
   }
-  return pending.size() <= kMaxControlLine;  // a client that sends no line breaks is dropped
+  const std::string reply = error.empty() ? "ok\n" : "error: " + error + "\n";
+  return ::send(fd, reply.data(), reply.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(reply.size());
 }
 
 void ControlServer::run() {
   while (!stop_) {
-    std::vector<pollfd> fds{{listen_fd_, POLLIN, 0}};
-    for (int fd : clients_) fds.push_back({fd, POLLIN, 0});
+    std::vector<pollfd> fds{{listener_.fd(), POLLIN, 0}};
+    for (std::size_t k = 0; k < clients_.size(); ++k) fds.push_back({clients_.fd(k), POLLIN, 0});
     if (::poll(fds.data(), fds.size(), 50) <= 0) continue;  // 50 ms: how soon the destructor returns
-    for (std::size_t k = clients_.size(); k-- > 0;) {
-      if (!(fds[k + 1].revents & (POLLIN | POLLHUP | POLLERR)) || serve(clients_[k], buffers_[k])) continue;
-      ::close(clients_[k]);
-      clients_.erase(clients_.begin() + static_cast<std::ptrdiff_t>(k));
-      buffers_.erase(buffers_.begin() + static_cast<std::ptrdiff_t>(k));
+    for (std::size_t k = 0; k < clients_.size(); ++k) {
+      if (!(fds[k + 1].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      // A client that sends no line breaks is dropped.
+      clients_.read(k, [this](int fd, const std::string& line) { return answer(fd, line); }, kMaxControlLine);
     }
+    clients_.sweep();
     if (fds[0].revents & POLLIN) {
-      const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
-      if (fd >= 0) {
-        clients_.push_back(fd);
-        buffers_.emplace_back();
-      }
+      const int fd = listener_.accept();
+      if (fd >= 0) clients_.add(fd);
     }
   }
 }
@@ -243,16 +206,15 @@ std::string requestControl(const std::string& host, int port, const std::string&
     link->open();
     const std::string line = request + "\n";
     link->write(std::vector<std::uint8_t>(line.begin(), line.end()));
-    std::string reply;
-    const double deadline = core::steadySeconds() + timeout;
-    while (reply.find('\n') == std::string::npos) {
-      const double left = deadline - core::steadySeconds();
-      if (left <= 0.0 || reply.size() > kMaxControlLine) return "no answer from the " + where;
+    std::string pending, reply;
+    const double deadline = link::steadySeconds() + timeout;
+    while (!link::takeLine(pending, &reply)) {
+      const double left = deadline - link::steadySeconds();
+      if (left <= 0.0 || pending.size() > kMaxControlLine) return "no answer from the " + where;
       std::uint8_t chunk[256];
       const std::size_t n = link->read(chunk, sizeof(chunk), static_cast<int>(std::ceil(left * 1e3)));
-      reply.append(reinterpret_cast<const char*>(chunk), n);
+      pending.append(reinterpret_cast<const char*>(chunk), n);
     }
-    reply.erase(reply.find('\n'));
     return reply == "ok" ? "" : where + ": " + reply;
   } catch (const std::exception& e) {
     return where + ": " + e.what();

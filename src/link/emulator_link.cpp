@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -19,9 +21,37 @@ namespace amigobot_tracking {
 namespace link {
 namespace {
 
-std::runtime_error systemError(const std::string& what) { return std::runtime_error(what + ": " + std::strerror(errno)); }
+std::atomic<bool> g_stop_requested{false};
+std::atomic<int> g_stop_signal{0};
+void onStopSignal(int signal) {  // lock-free atomics only: safe in a signal handler
+  g_stop_signal = signal;
+  g_stop_requested = true;
+}
 
 }  // namespace
+
+std::runtime_error systemError(const std::string& what) { return std::runtime_error(what + ": " + std::strerror(errno)); }
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+bool takeLine(std::string& pending, std::string* line) {
+  const std::size_t eol = pending.find('\n');
+  if (eol == std::string::npos) return false;
+  *line = pending.substr(0, eol);
+  pending.erase(0, eol + 1);
+  return true;
+}
+
+const std::atomic<bool>& stopOnSignals() {
+  std::signal(SIGINT, onStopSignal);
+  std::signal(SIGTERM, onStopSignal);
+  std::signal(SIGPIPE, SIG_IGN);
+  return g_stop_requested;
+}
+
+int stopSignal() { return g_stop_signal; }
 
 TcpListener::~TcpListener() {
   if (fd_ >= 0) ::close(fd_);
@@ -78,6 +108,44 @@ void PseudoTerminal::open(const std::string& link_path, int baud) {
   ::unlink(link_path.c_str());
   if (::symlink(name_.c_str(), link_path.c_str()) < 0) throw systemError("symlink " + link_path + " -> " + name_);
   link_path_ = link_path;
+}
+
+LineClients::~LineClients() {
+  for (int fd : fds_) {
+    if (fd >= 0) ::close(fd);
+  }
+}
+
+void LineClients::add(int fd) {
+  fds_.push_back(fd);
+  pending_.emplace_back();
+}
+
+void LineClients::read(std::size_t k, const std::function<bool(int fd, const std::string& line)>& serve,
+                       std::size_t max_line) {
+  char buffer[256];
+  const ssize_t n = ::read(fds_[k], buffer, sizeof(buffer));
+  if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return;  // non-blocking: nothing yet
+  bool open = n > 0;
+  if (open) {
+    std::string& pending = pending_[k];
+    pending.append(buffer, static_cast<std::size_t>(n));
+    std::string line;
+    while (open && takeLine(pending, &line)) open = serve(fds_[k], line);
+    open = open && pending.size() <= max_line;  // a client that sends no line breaks is dropped
+  }
+  if (!open) {
+    ::close(fds_[k]);
+    fds_[k] = -1;
+  }
+}
+
+void LineClients::sweep() {
+  for (std::size_t k = fds_.size(); k-- > 0;) {
+    if (fds_[k] >= 0) continue;
+    fds_.erase(fds_.begin() + static_cast<std::ptrdiff_t>(k));
+    pending_.erase(pending_.begin() + static_cast<std::ptrdiff_t>(k));
+  }
 }
 
 void sendAvailable(int fd, const void* data, std::size_t size) {

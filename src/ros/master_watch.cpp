@@ -10,7 +10,7 @@
 #include <ros/service_manager.h>
 #include <ros/xmlrpc_manager.h>
 
-#include "amigobot_tracking/core/steady_seconds.h"
+#include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/ros/xmlrpc_call.h"
 
 namespace amigobot_tracking {
@@ -81,7 +81,7 @@ MasterWatch::State MasterWatch::state() const {
   std::lock_guard<std::mutex> lock(mutex_);
   State s = state_;
   s.reachable = presence_.reachable();
-  s.unreachable_for = presence_.unreachableFor(core::steadySeconds());
+  s.unreachable_for = presence_.unreachableFor(link::steadySeconds());
   return s;
 }
 
@@ -175,13 +175,13 @@ std::string MasterWatch::registerEverything() {
 
 void MasterWatch::run() {
   while (!stop_) {
-    const double started = core::steadySeconds();
+    const double started = link::steadySeconds();
     std::string error;
     const std::optional<std::string> pid = pollPid(&error);
     MasterPresence::Change change;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      change = presence_.observe(core::steadySeconds(), pid);
+      change = presence_.observe(link::steadySeconds(), pid);
     }
     if (change == MasterPresence::Change::kNewMaster) {
       const std::string summary = registerEverything();
@@ -194,7 +194,7 @@ void MasterWatch::run() {
       next_service_refresh_ = started + service_refresh_;
       service_refresh_ = std::min(2.0 * service_refresh_, kServiceRefreshLast);
     }
-    const double left = kPollPeriod - (core::steadySeconds() - started);
+    const double left = kPollPeriod - (link::steadySeconds() - started);
     if (left > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(left));
   }
 }

@@ -9,7 +9,7 @@
 #include <chrono>
 #include <cstring>
 
-#include "amigobot_tracking/core/steady_seconds.h"
+#include "amigobot_tracking/link/emulator_link.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
@@ -17,7 +17,7 @@ namespace {
 
 // Waits for `events` on fd until `deadline`; false on timeout or error.
 bool waitFor(int fd, short events, double deadline) {
-  const double left = deadline - core::steadySeconds();
+  const double left = deadline - link::steadySeconds();
   if (left <= 0.0) return false;
   pollfd p{fd, events, 0};
   return ::poll(&p, 1, static_cast<int>(left * 1e3) + 1) > 0 && (p.revents & (events | POLLHUP | POLLERR));
@@ -50,7 +50,7 @@ bool splitHttpUri(const std::string& uri, std::string* host, int* port) {
 
 std::string callXmlRpc(const std::string& host, int port, const std::string& method,
                        const XmlRpc::XmlRpcValue& params, double timeout, XmlRpc::XmlRpcValue* result) {
-  const double deadline = core::steadySeconds() + timeout;
+  const double deadline = link::steadySeconds() + timeout;
   addrinfo hints{};
   hints.ai_family = AF_INET;
   hints.ai_socktype = SOCK_STREAM;

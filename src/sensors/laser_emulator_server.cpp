@@ -4,29 +4,16 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
-#include "amigobot_tracking/core/steady_seconds.h"
 #include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/sensors/laser_protocol.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
 
 namespace amigobot_tracking {
 namespace sensors {
-namespace {
-
-std::runtime_error failure(const std::string& what) {
-  return std::runtime_error("laser_emulator: " + what + ": " + std::strerror(errno));
-}
-
-void sendAll(int fd, const std::string& bytes) { link::sendAvailable(fd, bytes.data(), bytes.size()); }
-
-}  // namespace
-
 std::string scanSettingChoices() {
   std::string choices;
   for (const LaserModelEntry& e : laserModels()) {
@@ -102,7 +89,7 @@ void LaserEmulatorServer::open() {
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("laser_emulator: ") + e.what());
   }
-  next_scan_ = core::steadySeconds();
+  next_scan_ = link::steadySeconds();
 }
 
 void LaserEmulatorServer::accept() {
@@ -130,7 +117,7 @@ void LaserEmulatorServer::serve(Link& link) {
   }
   if (n < 0) return;
   const std::string out = link.session->receive(std::string(buffer, static_cast<std::size_t>(n)), latest_);
-  if (!out.empty()) sendAll(link.fd, out);
+  if (!out.empty()) link::sendAvailable(link.fd, out);
 }
 
 std::string LaserEmulatorServer::damage(std::string telegram) {
@@ -143,7 +130,7 @@ std::string LaserEmulatorServer::damage(std::string telegram) {
 }
 
 void LaserEmulatorServer::tick() {
-  const double now = core::steadySeconds();
+  const double now = link::steadySeconds();
   // A scan leaves the device once its last beam is measured: cast at the first beam, sent
   // one sweep of the measured beams later.
   if (has_pending_ && now >= pending_due_) {
@@ -189,7 +176,7 @@ void LaserEmulatorServer::send(double now) {
       link->paced_from = now;
       link->paced_rate = static_cast<double>(link->paced.size()) / model_.scanTime();
     } else {
-      sendAll(link->fd, telegram);
+      link::sendAvailable(link->fd, telegram);
     }
   }
 }
@@ -198,7 +185,7 @@ void LaserEmulatorServer::drain(Link& link, double now) {
   if (link.fd < 0 || link.paced_sent >= link.paced.size()) return;
   const auto due = std::min(link.paced.size(), static_cast<std::size_t>((now - link.paced_from) * link.paced_rate));
   if (due <= link.paced_sent) return;
-  sendAll(link.fd, link.paced.substr(link.paced_sent, due - link.paced_sent));
+  link::sendAvailable(link.fd, link.paced.substr(link.paced_sent, due - link.paced_sent));
   link.paced_sent = due;
 }
 
@@ -208,7 +195,7 @@ void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
     if (listener_.isOpen()) fds.push_back({listener_.fd(), POLLIN, 0});
     if (tcp_.fd >= 0) fds.push_back({tcp_.fd, POLLIN, 0});
     if (pty_.fd >= 0) fds.push_back({pty_.fd, POLLIN, 0});
-    if (::poll(fds.data(), fds.size(), 5) < 0 && errno != EINTR) throw failure("poll");
+    if (::poll(fds.data(), fds.size(), 5) < 0 && errno != EINTR) throw link::systemError("laser_emulator: poll");
     for (const pollfd& p : fds) {
       if (!(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
       if (p.fd == listener_.fd()) {
@@ -220,8 +207,8 @@ void LaserEmulatorServer::run(const std::atomic<bool>& stop) {
       }
     }
     tick();
-    drain(tcp_, core::steadySeconds());
-    drain(pty_, core::steadySeconds());
+    drain(tcp_, link::steadySeconds());
+    drain(pty_, link::steadySeconds());
   }
 }
 

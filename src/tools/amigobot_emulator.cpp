@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -17,18 +16,12 @@
 #include "amigobot_tracking/aria/emulator.h"
 #include "amigobot_tracking/aria/emulator_server.h"
 #include "amigobot_tracking/core/program_arguments.h"
+#include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/world/world.h"
 
 using namespace amigobot_tracking::aria;
 
 namespace {
-
-std::atomic<bool> g_stop{false};
-std::atomic<int> g_signal{0};
-void onSignal(int signal) {
-  g_signal = signal;
-  g_stop = true;
-}
 
 // --exit-report: the emulator's last word for whoever started it without reading its stderr
 // (roslaunch's output="log" in the end-to-end tests): "running pid N" while it serves, then
@@ -115,21 +108,20 @@ int main(int argc, char** argv) {
       control = std::make_unique<ControlServer>(teleports, server.bind_address, control_port);
       emulator.setTeleportMailbox(&teleports);
     }
-    std::signal(SIGINT, onSignal);
-    std::signal(SIGTERM, onSignal);
-    std::signal(SIGPIPE, SIG_IGN);
+    const std::atomic<bool>& stop = amigobot_tracking::link::stopOnSignals();
     std::printf("READY tcp=%d status=%d pty=%s%s\n", io.tcpPort(), io.statusPort(),
                 io.ptyName().empty() ? "-" : io.ptyName().c_str(),
                 control ? (" control=" + std::to_string(control->port())).c_str() : "");
     std::fflush(stdout);
     report(exit_report, "running pid " + std::to_string(::getpid()));
-    io.run(g_stop);
+    io.run(stop);
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";
     report(exit_report, std::string("exit 1: ") + e.what());
     return 1;
   }
-  report(exit_report, g_signal ? "exit 0: stopped by signal " + std::to_string(g_signal.load())
-                               : std::string("exit 0: asked to quit on the status socket"));
+  const int stop_signal = amigobot_tracking::link::stopSignal();
+  report(exit_report, stop_signal ? "exit 0: stopped by signal " + std::to_string(stop_signal)
+                                  : std::string("exit 0: asked to quit on the status socket"));
   return 0;
 }

@@ -18,6 +18,7 @@
 
 #include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/core/program_arguments.h"
+#include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/sensors/laser_emulator_server.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
 #include "amigobot_tracking/world/world.h"
@@ -26,8 +27,6 @@ using namespace amigobot_tracking;
 
 namespace {
 
-std::atomic<bool> g_stop{false};
-void onSignal(int) { g_stop = true; }
 // Live faults for the e2e tests (lock-free atomics: safe in a signal handler).
 std::atomic<bool> g_blind{false}, g_halve{false};
 void onToggle(int signal) {
@@ -117,15 +116,13 @@ int main(int argc, char** argv) {
     };
     sensors::LaserEmulatorServer io(model, sensors::ScanSource(model, room, scan), source, server);
     io.open();
-    std::signal(SIGINT, onSignal);
-    std::signal(SIGTERM, onSignal);
-    std::signal(SIGPIPE, SIG_IGN);
+    const std::atomic<bool>& stop = link::stopOnSignals();
     io.setLiveFaults(&g_blind, &g_halve);
     std::signal(SIGUSR1, onToggle);
     std::signal(SIGUSR2, onToggle);
     std::printf("READY tcp=%d pty=%s\n", io.tcpPort(), io.ptyName().empty() ? "-" : io.ptyName().c_str());
     std::fflush(stdout);
-    io.run(g_stop);
+    io.run(stop);
   } catch (const std::exception& e) {
     std::cerr << "laser_emulator: " << e.what() << "\n";
     return 1;

@@ -62,8 +62,7 @@ class EmulatorServer {
   link::PseudoTerminal pty_terminal_;
   Link tcp_client_, pty_;  // pty_.fd is pty_terminal_'s master
   bool tcp_active_ = true;  // where the robot's replies go: the link that spoke last
-  std::vector<int> status_clients_;
-  std::vector<std::string> status_buffers_;
+  link::LineClients status_clients_;
   double start_wall_ = 0.0;
   std::mt19937 noise_;
   std::uint64_t corrupted_ = 0;

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/link/emulator_link.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -107,16 +108,15 @@ class ControlServer {
   ~ControlServer();
   ControlServer(const ControlServer&) = delete;
   ControlServer& operator=(const ControlServer&) = delete;
-  int port() const { return port_; }
+  int port() const { return listener_.port(); }
 
  private:
   void run();
-  bool serve(int fd, std::string& pending);  // false: close the client
+  bool answer(int fd, const std::string& line);  // false: close the client
 
   TeleportMailbox& mailbox_;
-  int listen_fd_ = -1, port_ = -1;
-  std::vector<int> clients_;
-  std::vector<std::string> buffers_;
+  link::TcpListener listener_;
+  link::LineClients clients_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
