@@ -97,15 +97,10 @@ soak: build ## soak: SOAK_MINUTES (15) of tracking on sim.launch, RSS growth MB/
 # rho_inf + tolerance after the obstacles (or at the end); 6: safe and tracked, but a recorded
 # message holds a NaN (scripts/test/check_bag_finite.py). DEMO_ARGS="--paper-law": the paper's
 # law alone; DEMO_ARGS="--tolerance 0.05 --recovery-time 10": the tracking verdict's margins.
-# The demo builds what it runs and nothing more: sim.launch's nodes and nodelets (emulated robot
-# and laser, driver, laser, localisation, tracking, reference, trails, world markers; sim_laser
-# for laser:=sim), run_report, the Python messages `rostopic pub` needs, the cfg headers.
-# `make build` adds the offline simulator, the tools, tele-operation and the standalone nodes.
-DEMO_TARGETS := amigobot_emulator laser_emulator ground_truth_localization reference_publisher world_markers \
-  trail_publisher sim_laser run_report amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser \
-  amigobot_tracking_ros_localization amigobot_tracking_generate_messages amigobot_tracking_gencfg
+# The demo builds what it runs and nothing more: the amigobot_demo target (cmake/ros_report.cmake
+# lists it). `make build` adds the offline simulator, the tools, tele-operation and the standalone nodes.
 demo: deps-workstation $(WS)/src/amigobot_tracking ## the whole stack on the emulated robot, headless, scored report in report/demo
-	$(call timed,build of the demo,$(CATKIN) $(DEMO_TARGETS))
+	$(call timed,build of the demo,$(CATKIN) amigobot_demo)
 	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
 # A world's map built by SLAM (the pose graph) on the emulated robot (scripts/reports/make_map.py): the
