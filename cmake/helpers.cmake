@@ -30,11 +30,14 @@ function(amigobot_add_library name)
 endfunction()
 
 # A gtest unit (one file per unit under test). Call the test helpers inside
-# if(CATKIN_ENABLE_TESTING). The units of one fragment (core.cmake, aria.cmake, ...) link into
+# if(CATKIN_ENABLE_TESTING). The units of one fragment (core.cmake, aria.cmake, ...) compile into
 # one executable, test_<fragment>_units, made by amigobot_link_unit_tests() once every fragment
-# has given its units their libraries (~90 links against MRPT and ROS were 61 of the test build's
-# 846 CPU-s on a cold build: a small saving, the rest is compiling). NAME is an object library that carries the unit's own links, definitions and
-# dependencies (target_link_libraries(NAME ...) etc. work as on an executable); run one unit with
+# has given its units their libraries: one link per layer instead of ~90, and with
+# AMIGOBOT_UNITY_BUILD their sources compile a batch at a time (gtest, Eigen, MRPT and ROS
+# headers parsed once per batch), so two units of one fragment must not define the same name in
+# their anonymous namespaces. NAME is a stand-in target that only carries the unit's links,
+# definitions and dependencies (target_link_libraries(NAME ...) etc. work as on an executable)
+# for the group to take; it is never built. Run one unit with
 # test_<fragment>_units --gtest_filter='Suite.*'. Sources under test/integration (each a device
 # driven through an emulator for tens of seconds) keep their own executable NAME, so make's jobs
 # run them side by side.
@@ -43,19 +46,19 @@ function(amigobot_add_unit_test name)
   if(first_source MATCHES "^test/integration/")
     catkin_add_gtest(${name} ${ARGN})
     target_link_libraries(${name} ${GTEST_MAIN_LIBRARIES})
+    target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
+    target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
   else()
     add_library(${name} OBJECT EXCLUDE_FROM_ALL ${ARGN})
-    target_link_libraries(${name} ${GTEST_LIBRARIES})
     get_filename_component(group ${CMAKE_CURRENT_LIST_FILE} NAME_WE)
     set_property(GLOBAL APPEND PROPERTY AMIGOBOT_UNITS_${group} ${name})
     set_property(GLOBAL APPEND PROPERTY AMIGOBOT_UNIT_GROUPS ${group})
   endif()
-  target_compile_options(${name} PRIVATE ${AMIGOBOT_WARNINGS})
-  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
 endfunction()
 
-# One gtest executable per fragment for the units amigobot_add_unit_test collected (called once:
-# before plain CMake's early return, or at the end of the catkin build).
+# One gtest executable per fragment from the sources amigobot_add_unit_test collected, with each
+# unit's links, definitions and dependencies (called once: before plain CMake's early return, or
+# at the end of the catkin build).
 function(amigobot_link_unit_tests)
   if(NOT CATKIN_ENABLE_TESTING)
     return()
@@ -64,11 +67,33 @@ function(amigobot_link_unit_tests)
   list(REMOVE_DUPLICATES groups)
   foreach(group ${groups})
     get_property(units GLOBAL PROPERTY AMIGOBOT_UNITS_${group})
-    # An executable needs one source of its own; the units' objects come with the links below.
-    set(anchor ${CMAKE_CURRENT_BINARY_DIR}/test_${group}_units.cpp)
-    file(WRITE ${anchor} "// The gtest units of cmake/${group}.cmake: ${units}\n")
-    catkin_add_gtest(test_${group}_units ${anchor})
-    target_link_libraries(test_${group}_units ${units} ${GTEST_MAIN_LIBRARIES})
+    set(sources "")
+    foreach(unit ${units})
+      get_target_property(unit_sources ${unit} SOURCES)
+      list(APPEND sources ${unit_sources})
+    endforeach()
+    set(exe test_${group}_units)
+    catkin_add_gtest(${exe} ${sources})
+    target_link_libraries(${exe} ${GTEST_MAIN_LIBRARIES})
+    # A fixture in a unit's anonymous namespace is a base of its TEST classes: in a unity batch the
+    # unit is an included file, which GCC flags (-Wsubobject-linkage) though nothing leaks.
+    target_compile_options(${exe} PRIVATE ${AMIGOBOT_WARNINGS} -Wno-subobject-linkage)
+    target_include_directories(${exe} PRIVATE ${PROJECT_SOURCE_DIR}/test/support)
+    set_target_properties(${exe} PROPERTIES UNITY_BUILD ${AMIGOBOT_UNITY_BUILD} UNITY_BUILD_BATCH_SIZE ${AMIGOBOT_UNITY_BATCH})
+    foreach(unit ${units})
+      foreach(property LINK_LIBRARIES COMPILE_DEFINITIONS MANUALLY_ADDED_DEPENDENCIES)
+        get_target_property(values ${unit} ${property})
+        if(values)
+          if(property STREQUAL "LINK_LIBRARIES")
+            target_link_libraries(${exe} ${values})
+          elseif(property STREQUAL "COMPILE_DEFINITIONS")
+            target_compile_definitions(${exe} PRIVATE ${values})
+          else()
+            add_dependencies(${exe} ${values})
+          endif()
+        endif()
+      endforeach()
+    endforeach()
   endforeach()
 endfunction()
 

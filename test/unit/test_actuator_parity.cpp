@@ -28,21 +28,21 @@ using amigobot_test::packetOf;
 
 namespace {
 
-constexpr double kPeriod = 0.05;  // [s] the tracking nodelet's 20 Hz
+constexpr double kTrackingPeriod = 0.05;  // [s] the tracking nodelet's 20 Hz
 constexpr double kDuration = 9.0;  // [s]
-constexpr double kDegToRad = M_PI / 180.0;
+constexpr double kRadPerDegree = M_PI / 180.0;
 
 // The sequence in the firmware's units (VEL mm/s, RVEL deg/s), so both sides see the same numbers.
-struct Segment {
+struct CommandSegment {
   double until;  // [s]
   int vel_mm_s, rvel_deg_s;
 };
-const std::vector<Segment> kSequence = {
+const std::vector<CommandSegment> kCommands = {
     {2.0, 300, 0}, {4.0, 200, 60}, {5.5, -200, 0}, {6.5, 0, -120}, {7.0, 250, 30}, {kDuration + 1.0, 0, 0}};
 
 core::Twist2 commandAt(double t) {
-  for (const Segment& s : kSequence)
-    if (t < s.until - 1e-9) return {s.vel_mm_s * 1e-3, s.rvel_deg_s * kDegToRad};
+  for (const CommandSegment& s : kCommands)
+    if (t < s.until - 1e-9) return {s.vel_mm_s * 1e-3, s.rvel_deg_s * kRadPerDegree};
   return {};
 }
 
@@ -74,14 +74,14 @@ std::vector<core::Pose2> emulatorTrajectory() {
   openRobot(robot, 0.0);
   robot.handle(packetOf(aria::commandPacket(aria::Command::kEnable, 1)), 0.0);
   std::vector<core::Pose2> poses;
-  for (int k = 0; k * kPeriod <= kDuration + 1e-9; ++k) {
-    const double t = k * kPeriod;
+  for (int k = 0; k * kTrackingPeriod <= kDuration + 1e-9; ++k) {
+    const double t = k * kTrackingPeriod;
     robot.advance(t);
     poses.push_back(robot.truePose());
     const core::Twist2 u = commandAt(t);
     robot.handle(packetOf(aria::commandPacket(aria::Command::kVel, static_cast<int>(std::lround(u.v * 1e3)))), t);
     robot.handle(packetOf(aria::commandPacket(aria::Command::kRVel,
-                                              static_cast<int>(std::lround(u.omega / kDegToRad)))), t);
+                                              static_cast<int>(std::lround(u.omega / kRadPerDegree)))), t);
   }
   return poses;
 }
@@ -92,7 +92,7 @@ std::vector<core::Pose2> simulatorTrajectory(bool ideal, bool no_delay = false) 
   sim::ClosedLoopSetup setup;
   setup.controller.v_max = setup.controller.w_max = 10.0;
   setup.duration = kDuration;
-  setup.control_period = kPeriod;
+  setup.control_period = kTrackingPeriod;
   setup.law = "mrpt_reactive";  // the slot Replay is provided in
   const core::LawFactory before =
       core::provideLaw("mrpt_reactive", [](const core::LawSetup&) { return std::make_unique<Replay>(); });

@@ -15,34 +15,34 @@ using namespace amigobot_tracking::core;
 
 namespace {
 
-constexpr double kOffset = 0.3, kRadius = 0.2, kDelta = 0.016, kMinMargin = 1e-3;
-const DiamondSet kDiamond(15.0, 15.0);
-const Disk kDisk{Eigen::Vector2d(0.0, 0.0), 0.15, Eigen::Vector2d::Zero()};
+constexpr double kOffset = 0.3, kBandRadius = 0.2, kBandDelta = 0.016, kMinMargin = 1e-3;
+const DiamondSet kBandDiamond(15.0, 15.0);
+const Disk kBandDisk{Eigen::Vector2d(0.0, 0.0), 0.15, Eigen::Vector2d::Zero()};
 
 double clearanceOf(const Pose2& pose) {
-  return clearance(offsetPoint(pose, kOffset), kRadius, {kDisk});
+  return clearance(offsetPoint(pose, kOffset), kBandRadius, {kBandDisk});
 }
 
 // u_r = rest + u_c (k_o = 1) through (11)-(12), held for h.
 Pose2 hold(const Pose2& pose, const Eigen::Vector2d& rest, const Eigen::Vector2d& u_c, double h) {
-  const Twist2 u = *kDiamond.saturate(offsetVelocityToTwist(rest + u_c, pose.theta, kOffset));
+  const Twist2 u = *kBandDiamond.saturate(offsetVelocityToTwist(rest + u_c, pose.theta, kOffset));
   return integrateUnicycle(pose, u, h);
 }
 
 // The problem of a step held for h from `pose` with the constant rest of (9).
 BandImplicitProblem problem(const Pose2& pose, const Eigen::Vector2d& rest, double h) {
   // pose, offset, rest, k_o, obstacle, robot_radius, delta, min_margin, h
-  return {pose, kOffset, rest, 1.0, kDisk, kRadius, kDelta, kMinMargin, h};
+  return {pose, kOffset, rest, 1.0, kBandDisk, kBandRadius, kBandDelta, kMinMargin, h};
 }
 
 // One step of the loop: explicit (10) at the start of the step, or the band-implicit term.
 Pose2 step(const Pose2& pose, const Eigen::Vector2d& rest, double h, bool implicit) {
   if (!implicit) {
-    const AvoidanceResult a = repulsiveTerm(offsetPoint(pose, kOffset), {kDisk}, kRadius, kDelta,
+    const AvoidanceResult a = repulsiveTerm(offsetPoint(pose, kOffset), {kBandDisk}, kBandRadius, kBandDelta,
                                             Eigen::Vector2d(std::cos(pose.theta), std::sin(pose.theta)), kMinMargin);
     return hold(pose, rest, a.u_c, h);
   }
-  return hold(pose, rest, solveBandImplicit(problem(pose, rest, h), kDiamond).u_c, h);
+  return hold(pose, rest, solveBandImplicit(problem(pose, rest, h), kBandDiamond).u_c, h);
 }
 
 // The offset point starts `clearance` outside contact, on the ray at angle `bearing` from the
@@ -54,7 +54,7 @@ struct Approach {
 };
 Approach approach(double bearing, double clearance, double pull, double slant) {
   const Eigen::Vector2d out(std::cos(bearing), std::sin(bearing));
-  const Eigen::Vector2d p_r = (kRadius + kDisk.radius + clearance) * out;
+  const Eigen::Vector2d p_r = (kBandRadius + kBandDisk.radius + clearance) * out;
   Pose2 pose;
   pose.theta = bearing + M_PI;
   pose.x = p_r.x() - kOffset * std::cos(pose.theta);
@@ -69,7 +69,7 @@ TEST(BandImplicit, ReportedClearanceIsTheOneTheHeldCommandReaches) {
   for (double h : {0.0005, 0.005, 0.02}) {
     for (double slant : {0.0, 0.6, 1.2}) {
       const Approach a = approach(0.4, 0.01, 12.0, slant);
-      const BandImplicitResult r = solveBandImplicit(problem(a.start, a.rest, h), kDiamond);
+      const BandImplicitResult r = solveBandImplicit(problem(a.start, a.rest, h), kBandDiamond);
       ASSERT_TRUE(r.solved) << h << " " << slant;
       EXPECT_LT(r.iterations, 40) << h << " " << slant;
       EXPECT_GT(r.end_clearance, 0.0);
@@ -102,7 +102,7 @@ TEST(BandImplicit, AgreesWithAFineExplicitReferenceOnApproachesToADisk) {
     std::printf("slant %.1f: clearance fine %.5f coarse %.5f (worst gap %.5f), min fine %.5f coarse %.5f explicit %.5f, "
                 "position gap %.5f\n", slant, clearanceOf(fine), clearanceOf(coarse), worst_gap, min_fine, min_coarse,
                 min_explicit, (offsetPoint(coarse, kOffset) - offsetPoint(fine, kOffset)).norm());
-    EXPECT_LT(min_fine, 0.85 * kDelta) << slant << ": the reference never went deep into the band";
+    EXPECT_LT(min_fine, 0.85 * kBandDelta) << slant << ": the reference never went deep into the band";
     // The closest approach and the clearance at the end within half a millimetre of the
     // reference, 2500x finer; on entering the band (the offset point covers 5 cm per long
     // step there) within 3 mm.
@@ -134,15 +134,15 @@ TEST(BandImplicit, NeverEndsAStepInsideTheDisk) {
 TEST(BandImplicit, FarFromTheBandTheTermIsZeroAndWithoutAStepItIsTheExplicitOne) {
   const Approach far = approach(1.0, 0.5, 10.0, 0.0);
   // 5 ms: 7.5 cm at most, the band stays out of reach.
-  const BandImplicitResult r = solveBandImplicit(problem(far.start, far.rest, 0.005), kDiamond);
+  const BandImplicitResult r = solveBandImplicit(problem(far.start, far.rest, 0.005), kBandDiamond);
   EXPECT_TRUE(r.solved);
   EXPECT_TRUE(r.u_c.isZero(0.0));
-  EXPECT_GT(r.end_clearance, kDelta);
+  EXPECT_GT(r.end_clearance, kBandDelta);
 
   const Approach near = approach(1.0, 0.008, 10.0, 0.0);
-  const BandImplicitResult none = solveBandImplicit(problem(near.start, near.rest, 0.0), kDiamond);
+  const BandImplicitResult none = solveBandImplicit(problem(near.start, near.rest, 0.0), kBandDiamond);
   EXPECT_FALSE(none.solved);
-  const AvoidanceResult explicit_term = repulsiveTerm(offsetPoint(near.start, kOffset), {kDisk}, kRadius, kDelta,
+  const AvoidanceResult explicit_term = repulsiveTerm(offsetPoint(near.start, kOffset), {kBandDisk}, kBandRadius, kBandDelta,
                                                       Eigen::Vector2d::UnitX(), kMinMargin);
   EXPECT_LT((none.u_c - explicit_term.u_c).norm(), 1e-9 * explicit_term.u_c.norm());
 }

@@ -17,14 +17,14 @@ using namespace amigobot_tracking;
 
 namespace {
 
-struct Outcome {
+struct LookaheadOutcome {
   double true_ase = 0.0;
   double longest_still = 0.0;  // [s] the longest time p_r moved slower than 3 cm/s while the target moved
   std::uint64_t contacts = 0, widenings = 0, violations = 0;
 };
 
 // The target drives along y = 0 over a disk of radius `radius` at x = 2.5, at 0.2 m/s.
-Outcome overADisk(double radius, double lookahead) {
+LookaheadOutcome overADisk(double radius, double lookahead) {
   sim::ClosedLoopSetup setup;
   setup.law = "recommended";
   setup.controller.field_lookahead = lookahead;
@@ -37,7 +37,7 @@ Outcome overADisk(double radius, double lookahead) {
   setup.duration = 35.0;
   setup.control_period = 0.05;
   const core::SplineReference reference({{0.6, 0.0}, {6.0, 0.0}}, 27.0);
-  Outcome r;
+  LookaheadOutcome r;
   double still = 0.0;
   Eigen::Vector2d last(NAN, NAN);
   auto observe = [&](const sim::ClosedLoopStep& step) {
@@ -60,8 +60,8 @@ Outcome overADisk(double radius, double lookahead) {
 
 TEST(FieldLookahead, GoesRoundADiskTheTargetDrivesOverInsteadOfWaiting) {
   for (double radius : {0.2, 0.3}) {
-    const Outcome ahead = overADisk(radius, core::ControllerConfig().field_lookahead);
-    const Outcome at_target = overADisk(radius, 0.0);
+    const LookaheadOutcome ahead = overADisk(radius, core::ControllerConfig().field_lookahead);
+    const LookaheadOutcome at_target = overADisk(radius, 0.0);
     std::printf("disk %.1f m: look-ahead ASE %.4f, still %.2f s; at the target ASE %.4f, still %.2f s\n", radius,
                 ahead.true_ase, ahead.longest_still, at_target.true_ase, at_target.longest_still);
     EXPECT_GT(at_target.longest_still, 1.5) << "disk " << radius << ": the scene no longer shows the wait";
@@ -75,7 +75,7 @@ TEST(FieldLookahead, GoesRoundADiskTheTargetDrivesOverInsteadOfWaiting) {
 
 TEST(FieldLookahead, TracksAsBeforeInFreeSpace) {
   // No disk near the course: the look-ahead's weight is 0, the commands are the same.
-  const Outcome ahead = overADisk(0.2, 2.0), off = overADisk(0.2, 0.0);
+  const LookaheadOutcome ahead = overADisk(0.2, 2.0), off = overADisk(0.2, 0.0);
   auto free_run = [&](double lookahead) {
     sim::ClosedLoopSetup s;
     s.law = "recommended";

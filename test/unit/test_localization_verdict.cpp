@@ -11,7 +11,7 @@ using namespace amigobot_tracking::localization;
 
 namespace {
 
-VerdictConfig config() {
+VerdictConfig verdictConfig() {
   VerdictConfig c;
   c.min_match = 0.4;
   c.localized_match = 0.8;
@@ -23,7 +23,7 @@ VerdictConfig config() {
 }  // namespace
 
 TEST(LocalizationVerdict, AWrongPoseInAnIcpMinimumIsNotLocalizedThoughItsMatchPassesMinMatch) {
-  LocalizationVerdict verdict(config());
+  LocalizationVerdict verdict(verdictConfig());
   verdict.poseSet();  // a wrong /initialpose
   // ICP pulls the pose (large corrections), then settles in a wrong minimum that fits part of
   // the scan: 0.6 of the beams, above min_match, small corrections.
@@ -43,7 +43,7 @@ TEST(LocalizationVerdict, AWrongPoseInAnIcpMinimumIsNotLocalizedThoughItsMatchPa
 }
 
 TEST(LocalizationVerdict, LocalizedHoldsThroughClutterButNotThroughLossOrAJump) {
-  LocalizationVerdict verdict(config());
+  LocalizationVerdict verdict(verdictConfig());
   for (int i = 0; i < 5; ++i) verdict.update({0.9, 0.0, 0.0});
   ASSERT_TRUE(verdict.localized());
   EXPECT_EQ(verdict.update({0.5, 0.02, 0.0}), LocalizationVerdict::State::kLocalized);  // a passer-by

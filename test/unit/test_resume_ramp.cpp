@@ -15,7 +15,7 @@ namespace {
 
 const RampLimits kLimits;  // 0.3 m/s^2, 1.745 rad/s^2 (AmigoBot)
 const double kDt = 0.05;   // [s] one control period at 20 Hz
-const DiamondSet kDiamond(0.3, 0.8);
+const DiamondSet kRampDiamond(0.3, 0.8);
 
 // The component moved at most `step` from p, or stayed between 0 and p (braking).
 bool withinStepOrBraking(double u, double p, double step) {
@@ -80,11 +80,11 @@ TEST(ResumeRamp, DiamondDirectionAndStepOnRandomCommands) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> v(-0.3, 0.3), w(-0.8, 0.8), dt(0.0, 0.2);
   for (int i = 0; i < 20000; ++i) {
-    const Twist2 desired = *kDiamond.saturate({v(rng), w(rng)});
-    const Twist2 previous = *kDiamond.saturate({v(rng), w(rng)});
+    const Twist2 desired = *kRampDiamond.saturate({v(rng), w(rng)});
+    const Twist2 previous = *kRampDiamond.saturate({v(rng), w(rng)});
     const double h = dt(rng);
     const RampStep r = rampTowards(desired, previous, kLimits, h);
-    ASSERT_TRUE(kDiamond.contains(r.u, 1e-12));
+    ASSERT_TRUE(kRampDiamond.contains(r.u, 1e-12));
     ASSERT_NEAR(r.u.v * desired.omega, r.u.omega * desired.v, 1e-12);
     ASSERT_GE(r.u.v * desired.v, 0.0);  // same ray, not the opposite one
     ASSERT_GE(r.u.omega * desired.omega, 0.0);

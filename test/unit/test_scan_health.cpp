@@ -12,7 +12,7 @@ using namespace amigobot_tracking::core;
 
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity(), kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInfRange = std::numeric_limits<float>::infinity(), kNaNRange = std::numeric_limits<float>::quiet_NaN();
 
 // A TiM-like scan: 541 beams over 270 degrees, 0.05..25 m.
 ScanGeometry tim() {
@@ -39,10 +39,10 @@ TEST(BlindScan, AllAtRangeMaxInfOrBeyondIsBlindAndNamed) {
   EXPECT_EQ(blind(std::vector<float>(541, 25.0f)),
             "laser sees nothing: 541 beams, all at or beyond range_max 25 m; set ~open_space if the lab really is "
             "empty around the laser");
-  EXPECT_NE(blind(std::vector<float>(541, kInf)), "");
+  EXPECT_NE(blind(std::vector<float>(541, kInfRange)), "");
   EXPECT_NE(blind(std::vector<float>(541, 25.01f)), "");  // just above range_max
-  std::vector<float> mixed(541, kInf);
-  mixed[3] = kNaN;
+  std::vector<float> mixed(541, kInfRange);
+  mixed[3] = kNaNRange;
   mixed[4] = 0.01f;  // below range_min
   mixed[5] = 30.0f;
   const std::string why = blind(mixed);
@@ -53,7 +53,7 @@ TEST(BlindScan, AllAtRangeMaxInfOrBeyondIsBlindAndNamed) {
 }
 
 TEST(BlindScan, OneReturnInsideTheRangeSees) {
-  std::vector<float> ranges(541, kInf);
+  std::vector<float> ranges(541, kInfRange);
   ranges[270] = 24.9f;  // a pole far ahead
   EXPECT_EQ(blind(ranges), "");
   ranges[270] = 0.05f;  // at range_min: a return

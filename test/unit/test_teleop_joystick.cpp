@@ -24,7 +24,7 @@ JoystickEvent event(std::uint8_t type, std::uint8_t number, std::int16_t value) 
 JoystickEvent button(std::uint8_t number, bool pressed) { return event(JoystickEvent::kButton, number, pressed ? 1 : 0); }
 JoystickEvent axis(std::uint8_t number, std::int16_t value) { return event(JoystickEvent::kAxis, number, value); }
 
-teleop::JoystickConfig config() {
+teleop::JoystickConfig joystickConfig() {
   teleop::JoystickConfig c;
   c.axis_linear = 1;
   c.axis_angular = 3;
@@ -78,7 +78,7 @@ TEST(JoystickMapping, AxesAreNegatedNormalisedAndDeadzoned) {
 
 TEST(JoystickMapping, ScalesAxesAndTurbo) {
   teleop::JoystickState s;
-  const teleop::JoystickConfig c = config();
+  const teleop::JoystickConfig c = joystickConfig();
   EXPECT_DOUBLE_EQ(teleop::mapAxes(s, c).v, 0.0);  // no axis seen yet
   teleop::applyEvent(axis(1, -32767), 0.0, &s);      // full forward
   teleop::applyEvent(axis(3, 16384), 0.0, &s);       // half right
@@ -99,7 +99,7 @@ TEST(JoystickMapping, ScalesAxesAndTurbo) {
 }
 
 TEST(JoystickTeleop, MotionOnlyWhileTheDeadmanIsHeldThenOneZero) {
-  teleop::JoystickTeleop t(config());
+  teleop::JoystickTeleop t(joystickConfig());
   EXPECT_FALSE(t.tick(0.0));  // nothing before the deadman
   t.onEvent(axis(1, -32767), 0.0);
   EXPECT_FALSE(t.tick(0.05));  // sticks alone never move the robot
@@ -119,7 +119,7 @@ TEST(JoystickTeleop, MotionOnlyWhileTheDeadmanIsHeldThenOneZero) {
 }
 
 TEST(JoystickTeleop, DeviceLostGivesOneZeroAndForgetsTheState) {
-  teleop::JoystickTeleop t(config());
+  teleop::JoystickTeleop t(joystickConfig());
   t.onEvent(button(4, true), 0.0);
   t.onEvent(axis(1, -32767), 0.0);
   ASSERT_TRUE(t.tick(0.05));
@@ -135,7 +135,7 @@ TEST(JoystickTeleop, DeviceLostGivesOneZeroAndForgetsTheState) {
 }
 
 TEST(JoystickTeleop, StaleEventsStopUntilTheNextEvent) {
-  teleop::JoystickConfig c = config();
+  teleop::JoystickConfig c = joystickConfig();
   c.stale_timeout = 1.0;
   teleop::JoystickTeleop t(c);
   t.onEvent(button(4, true), 0.0);

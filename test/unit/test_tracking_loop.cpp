@@ -13,11 +13,11 @@ using namespace amigobot_tracking::core;
 
 namespace {
 
-const double kPeriod = 0.05;  // [s]
+const double kLoopPeriod = 0.05;  // [s]
 
 TrackingLoopConfig loopConfig() {
   TrackingLoopConfig c;
-  c.supervisor.control_period = kPeriod;
+  c.supervisor.control_period = kLoopPeriod;
   c.supervisor.require_scan = false;
   c.target_exclusion_radius = 0.3;
   return c;
@@ -42,7 +42,7 @@ TEST(TrackingLoop, StalePoseStopsAtOnceAndResumesOnTheRamp) {
   ASSERT_TRUE(loop.enable());
   double t = 0.0;
   TrackingLoopResult r;
-  for (int i = 0; i < 100; ++i, t += kPeriod) r = loop.step(inputsAt(t));
+  for (int i = 0; i < 100; ++i, t += kLoopPeriod) r = loop.step(inputsAt(t));
   ASSERT_TRUE(r.tracking);
   ASSERT_GT(std::abs(r.u.v) + std::abs(r.u.omega), 0.05);
   const Twist2 cruising = r.u;
@@ -59,12 +59,12 @@ TEST(TrackingLoop, StalePoseStopsAtOnceAndResumesOnTheRamp) {
 
   // Fresh again: the controller restarts and the command leaves zero by at most one
   // period of the ramp's acceleration.
-  t += kPeriod;
+  t += kLoopPeriod;
   r = loop.step(inputsAt(t));
   ASSERT_TRUE(r.tracking);
   const RampLimits ramp = loopConfig().supervisor.ramp;
-  EXPECT_LE(std::abs(r.u.v), ramp.v_accel * kPeriod + 1e-12);
-  EXPECT_LE(std::abs(r.u.omega), ramp.w_accel * kPeriod + 1e-12);
+  EXPECT_LE(std::abs(r.u.v), ramp.v_accel * kLoopPeriod + 1e-12);
+  EXPECT_LE(std::abs(r.u.omega), ramp.w_accel * kLoopPeriod + 1e-12);
   EXPECT_TRUE(loop.supervisor().ramping());
   EXPECT_LT(std::abs(r.u.v) + std::abs(r.u.omega), std::abs(cruising.v) + std::abs(cruising.omega));
 }
@@ -81,9 +81,9 @@ TEST(TrackingLoop, PendingConfigIsUsedFromTheNextStep) {
   EXPECT_TRUE(loop.configPending());
   EXPECT_EQ(loop.nextConfig().v_max, 0.1);
   EXPECT_EQ(loop.controller().config().v_max, 0.3);  // not before the step
-  double t = kPeriod;
+  double t = kLoopPeriod;
   TrackingLoopResult r;
-  for (int i = 0; i < 60; ++i, t += kPeriod) {
+  for (int i = 0; i < 60; ++i, t += kLoopPeriod) {
     r = loop.step(inputsAt(t));
     ASSERT_TRUE(r.tracking);
     EXPECT_TRUE(DiamondSet(0.1, 0.3).contains(r.u, 1e-9)) << "step " << i;
@@ -108,7 +108,7 @@ TEST(TrackingLoop, LaserDisksOnTheTargetAreDroppedVirtualOnesKept) {
   EXPECT_EQ(loop.obstacles()[0].center.x(), -1.0);
   EXPECT_EQ(loop.obstacles()[1].center.y(), 0.6);
 
-  in.t = in.pose.stamp = in.target.stamp = kPeriod;
+  in.t = in.pose.stamp = in.target.stamp = kLoopPeriod;
   in.supervisor.scan_age = 0.6;  // stale scan: no laser disks (require_scan off: still tracking)
   r = loop.step(in);
   EXPECT_TRUE(r.tracking);
@@ -131,7 +131,7 @@ TEST(TrackingLoop, StartWithoutResumeSendsTheControllersCommand) {
   EXPECT_EQ(direct.controller().rho(), reference.rho());
   EXPECT_LT(std::abs(a.u.v), std::abs(expected.u.v));
   for (int i = 1; i < 50; ++i) {
-    in.t = in.pose.stamp = in.target.stamp = i * kPeriod;
+    in.t = in.pose.stamp = in.target.stamp = i * kLoopPeriod;
     const ControllerOutput e = reference.stepStamped(in.t, in.pose, in.target, {});
     const TrackingLoopResult r = direct.step(in);
     ASSERT_EQ(r.u.v, e.u.v) << "step " << i;
@@ -150,10 +150,10 @@ TEST(TrackingLoop, PoseJumpLimitFollowsTheReconfiguredRhoInf) {
   auto jumpAfter = [&](TrackingLoop& loop, const ControllerConfig* pending) {
     loop.enable();
     double t = 0.0;
-    for (int i = 0; i < 5; ++i, t += kPeriod) EXPECT_TRUE(loop.step(inputsAt(t)).tracking) << loop.supervisor().status();
+    for (int i = 0; i < 5; ++i, t += kLoopPeriod) EXPECT_TRUE(loop.step(inputsAt(t)).tracking) << loop.supervisor().status();
     if (pending) loop.setPendingConfig(*pending);
     EXPECT_TRUE(loop.step(inputsAt(t)).tracking);
-    TrackingLoopInputs jumped = inputsAt(t + kPeriod);
+    TrackingLoopInputs jumped = inputsAt(t + kLoopPeriod);
     jumped.pose.pose.x += jump;
     return loop.step(jumped);
   };
@@ -181,8 +181,8 @@ TEST(TrackingLoop, DisabledSendsNothingAndDisableOneZero) {
   TrackingLoop loop(loopConfig());
   EXPECT_FALSE(loop.step(inputsAt(0.0)).publish);
   loop.enable();
-  EXPECT_TRUE(loop.step(inputsAt(kPeriod)).publish);
-  const Twist2 zero = loop.disable(2 * kPeriod);
+  EXPECT_TRUE(loop.step(inputsAt(kLoopPeriod)).publish);
+  const Twist2 zero = loop.disable(2 * kLoopPeriod);
   EXPECT_EQ(zero.v, 0.0);
-  EXPECT_FALSE(loop.step(inputsAt(3 * kPeriod)).publish);
+  EXPECT_FALSE(loop.step(inputsAt(3 * kLoopPeriod)).publish);
 }

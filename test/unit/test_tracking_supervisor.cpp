@@ -16,7 +16,7 @@ namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kPeriod = 0.05;  // [s] 20 Hz
-const DiamondSet kDiamond(0.3, 0.8);
+const DiamondSet kSupervisorDiamond(0.3, 0.8);
 
 SupervisorInputs freshInputs() {
   SupervisorInputs in;
@@ -39,7 +39,7 @@ TrackingSupervisor trackingAt(double v, double omega, double* t) {
   s.enable();
   for (int i = 0; i < 200 && (i == 0 || s.ramping()); ++i, *t += kPeriod) {
     EXPECT_TRUE(s.begin(*t, freshInputs()).step);
-    s.finish(*t, output(v, omega), kDiamond);
+    s.finish(*t, output(v, omega), kSupervisorDiamond);
   }
   EXPECT_FALSE(s.ramping());
   return s;
@@ -102,7 +102,7 @@ TEST(TrackingSupervisor, StaleOrMissingInputsStopWithTheReason) {
     TrackingSupervisor s(config);
     s.enable();
     s.begin(t, freshInputs());
-    s.finish(t, output(0.01, 0.0), kDiamond);
+    s.finish(t, output(0.01, 0.0), kSupervisorDiamond);
     const auto d = s.begin(t + kPeriod, c.in);
     EXPECT_FALSE(d.step) << c.reason;
     EXPECT_TRUE(d.publish) << c.reason;
@@ -137,7 +137,7 @@ TEST(TrackingSupervisor, FreshAgainRestartsOnceThenSteps) {
   const auto resumed = s.begin(0.15, freshInputs());
   EXPECT_TRUE(resumed.step);
   EXPECT_TRUE(resumed.restart);
-  s.finish(0.15, output(0.1, 0.0), kDiamond);
+  s.finish(0.15, output(0.1, 0.0), kSupervisorDiamond);
   EXPECT_FALSE(s.begin(0.20, freshInputs()).restart);
 }
 
@@ -169,38 +169,38 @@ TEST(TrackingSupervisor, RampsAfterItsOwnStopAndCapsTheTimeStep) {
   EXPECT_TRUE(s.ramping());
   t += 10.0;  // a long gap earns no more than one period of acceleration
   ASSERT_TRUE(s.begin(t, freshInputs()).step);
-  const Twist2 first = s.finish(t, output(0.3, 0.0), kDiamond);
+  const Twist2 first = s.finish(t, output(0.3, 0.0), kSupervisorDiamond);
   EXPECT_NEAR(first.v, s.config().ramp.v_accel * kPeriod, 1e-12);
   int periods = 1;
   for (Twist2 sent = first; s.ramping(); ++periods) {
     ASSERT_LT(periods, 100);
     t += kPeriod;
     s.begin(t, freshInputs());
-    const Twist2 next = s.finish(t, output(0.3, 0.0), kDiamond);
+    const Twist2 next = s.finish(t, output(0.3, 0.0), kSupervisorDiamond);
     EXPECT_LE(next.v - sent.v, s.config().ramp.v_accel * kPeriod + 1e-9);
     sent = next;
   }
   EXPECT_EQ(periods, 20);  // 0.3 m/s at 0.3 m/s^2: 1 s
   t += kPeriod;
   s.begin(t, freshInputs());
-  EXPECT_EQ(s.finish(t, output(0.3, 0.0), kDiamond).v, 0.3) << "ramp over: passes unchanged";
+  EXPECT_EQ(s.finish(t, output(0.3, 0.0), kSupervisorDiamond).v, 0.3) << "ramp over: passes unchanged";
 }
 
 TEST(TrackingSupervisor, BrakingIsNeverHeldBack) {
   double t = 0.0;
   TrackingSupervisor s = trackingAt(0.3, 0.0, &t);
   s.begin(t, freshInputs());
-  EXPECT_EQ(s.finish(t, output(0.05, 0.0), kDiamond).v, 0.05) << "not ramping: 0.25 m/s less in one period";
+  EXPECT_EQ(s.finish(t, output(0.05, 0.0), kSupervisorDiamond).v, 0.05) << "not ramping: 0.25 m/s less in one period";
   // While ramping: the command falls back toward zero at once.
   SupervisorInputs stale = freshInputs();
   stale.target_age = 1.0;
   s.begin(t += kPeriod, stale);
   s.begin(t += kPeriod, freshInputs());
-  const Twist2 up = s.finish(t, output(0.3, 0.0), kDiamond);
+  const Twist2 up = s.finish(t, output(0.3, 0.0), kSupervisorDiamond);
   ASSERT_GT(up.v, 0.0);
   ASSERT_TRUE(s.ramping());
   s.begin(t += kPeriod, freshInputs());
-  EXPECT_EQ(s.finish(t, output(0.001, 0.0), kDiamond).v, 0.001);
+  EXPECT_EQ(s.finish(t, output(0.001, 0.0), kSupervisorDiamond).v, 0.001);
 }
 
 TEST(TrackingSupervisor, RefusedStepsStopAndInvalidOnesRestart) {
@@ -209,11 +209,11 @@ TEST(TrackingSupervisor, RefusedStepsStopAndInvalidOnesRestart) {
   ControllerOutput invalid;
   invalid.error = "time went backwards";
   s.begin(t, freshInputs());
-  EXPECT_EQ(s.finish(t, invalid, kDiamond).v, 0.0);
+  EXPECT_EQ(s.finish(t, invalid, kSupervisorDiamond).v, 0.0);
   EXPECT_EQ(s.state(), TrackingSupervisor::State::kStepInvalid);
   EXPECT_EQ(s.status(), "controller: time went backwards");
   EXPECT_TRUE(s.begin(t += kPeriod, freshInputs()).restart);
-  EXPECT_EQ(s.finish(t, output(0.31, 0.0), kDiamond).v, 0.0) << "outside the diamond";
+  EXPECT_EQ(s.finish(t, output(0.31, 0.0), kSupervisorDiamond).v, 0.0) << "outside the diamond";
   EXPECT_EQ(s.state(), TrackingSupervisor::State::kCommandRefused);
   EXPECT_TRUE(s.ramping());
 }
@@ -237,7 +237,7 @@ TEST(TrackingSupervisor, NaNInputsNeverPass) {
     double t = 0.0;
     TrackingSupervisor s = trackingAt(0.2, 0.1, &t);
     s.begin(t, freshInputs());
-    const Twist2 sent = s.finish(t, output(bad.v, bad.omega), kDiamond);
+    const Twist2 sent = s.finish(t, output(bad.v, bad.omega), kSupervisorDiamond);
     EXPECT_EQ(sent.v, 0.0);
     EXPECT_EQ(sent.omega, 0.0);
     EXPECT_EQ(s.state(), TrackingSupervisor::State::kCommandRefused);
@@ -245,7 +245,7 @@ TEST(TrackingSupervisor, NaNInputsNeverPass) {
   double t = 0.0;
   TrackingSupervisor s = trackingAt(0.2, 0.1, &t);
   s.begin(t, freshInputs());
-  EXPECT_EQ(s.finish(kNaN, output(0.2, 0.1), kDiamond).v, 0.0) << "a NaN time never passes a command";
+  EXPECT_EQ(s.finish(kNaN, output(0.2, 0.1), kSupervisorDiamond).v, 0.0) << "a NaN time never passes a command";
 }
 
 // Issue 25: after a wrong /initialpose the robot drove 2.85 m on a pose 3 m off.
@@ -255,7 +255,7 @@ TEST(TrackingSupervisor, BadLocalisationStopsAndResumesOnTheRampWhenGood) {
   SupervisorInputs lost = freshInputs();
   lost.localization_problem = "match 0.31 < min_match 0.50";
   EXPECT_TRUE(s.begin(0.0, freshInputs()).step);
-  s.finish(0.0, output(0.1, 0.0), kDiamond);
+  s.finish(0.0, output(0.1, 0.0), kSupervisorDiamond);
   const auto d = s.begin(kPeriod, lost);
   EXPECT_FALSE(d.step);
   EXPECT_TRUE(d.publish);
@@ -279,7 +279,7 @@ TEST(TrackingSupervisor, APoseJumpBeyondTheTrackingBoundHoldsUntilLocalisationSe
   for (; t < 1.0; t += kPeriod) {  // driving at 0.3 m/s is no jump, nor a late cycle
     in.pose_position.x() += 0.3 * kPeriod;
     EXPECT_TRUE(s.begin(t, in).step) << t << ": " << s.status();
-    s.finish(t, output(0.1, 0.0), kDiamond);
+    s.finish(t, output(0.1, 0.0), kSupervisorDiamond);
   }
   in.pose_position.x() += 0.3 * 0.5;  // a cycle 0.5 s late
   EXPECT_TRUE(s.begin(t += 0.5, in).step) << s.status();

@@ -14,8 +14,8 @@
 using namespace amigobot_tracking::core;
 
 namespace {
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
-const double kInf = std::numeric_limits<double>::infinity();
+const double kIntakeNaN = std::numeric_limits<double>::quiet_NaN();
+const double kIntakeInf = std::numeric_limits<double>::infinity();
 const Translation3 kOrigin{};
 const Quaternion4 kIdentity{};
 
@@ -29,10 +29,10 @@ TEST(TransformCheck, AGoodTransformPasses) {
 }
 
 TEST(TransformCheck, NaNAndInfAreNamedByField) {
-  EXPECT_EQ(transformProblem({kNaN, 0.0, 0.0}, kIdentity), "translation x is nan");
-  EXPECT_EQ(transformProblem({0.0, 0.0, -kInf}, kIdentity), "translation z is -inf");
-  EXPECT_EQ(transformProblem(kOrigin, {kNaN, kNaN, kNaN, kNaN}), "rotation x is nan");
-  EXPECT_EQ(transformProblem(kOrigin, {0.0, 0.0, 0.0, kInf}), "rotation w is inf");
+  EXPECT_EQ(transformProblem({kIntakeNaN, 0.0, 0.0}, kIdentity), "translation x is nan");
+  EXPECT_EQ(transformProblem({0.0, 0.0, -kIntakeInf}, kIdentity), "translation z is -inf");
+  EXPECT_EQ(transformProblem(kOrigin, {kIntakeNaN, kIntakeNaN, kIntakeNaN, kIntakeNaN}), "rotation x is nan");
+  EXPECT_EQ(transformProblem(kOrigin, {0.0, 0.0, 0.0, kIntakeInf}), "rotation w is inf");
 }
 
 TEST(TransformCheck, ZeroAndNonUnitQuaternionsAreRefused) {
@@ -69,7 +69,7 @@ TEST(ClockOffset, OldSamplesLeaveTheWindow) {
   EXPECT_NEAR(clock.at(111.0).offset, 0.005, 1e-9);
   EXPECT_EQ(clock.at(111.0).samples, 10u);
   EXPECT_EQ(clock.at(120.0).samples, 0u);
-  clock.add(kNaN, 120.0);  // ignored
+  clock.add(kIntakeNaN, 120.0);  // ignored
   EXPECT_DOUBLE_EQ(clock.lastArrival(), 110.905);
 }
 
@@ -88,7 +88,7 @@ TEST(TransformIntake, ASampleStampedAheadIsDroppedAndTheNextGoodOneTaken) {
 
 TEST(TransformIntake, BadPosesAreRefusedStaticOrNot) {
   TransformIntake intake(0.1);
-  EXPECT_EQ(intake.judge("target", 100.0, 100.0, {kNaN, 0.0, 0.0}, kIdentity, false).problem, "translation x is nan");
+  EXPECT_EQ(intake.judge("target", 100.0, 100.0, {kIntakeNaN, 0.0, 0.0}, kIdentity, false).problem, "translation x is nan");
   const IntakeVerdict zero = intake.judge("laser", 0.0, 100.0, kOrigin, {0.0, 0.0, 0.0, 0.0}, true);
   EXPECT_FALSE(zero.accept);
   EXPECT_TRUE(contains(zero.problem, "not a unit quaternion")) << zero.problem;

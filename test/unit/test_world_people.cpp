@@ -28,7 +28,7 @@ people:
       - {duration: 8.0, velocity: [0.0, 0.5]}
 )";
 
-std::string errorFor(const std::string& text) {
+std::string parseErrorFor(const std::string& text) {
   try {
     parseWorld(text, "w.yaml");
   } catch (const std::runtime_error& e) {
@@ -78,19 +78,19 @@ TEST(WorldPeople, TheLaserSeesThePersonOnlyWhenItIsThere) {
 }
 
 TEST(WorldPeople, BadPeopleAreNamedWithFileLineAndKey) {
-  EXPECT_EQ(errorFor("people:\n  - {start: [0, 0]}\n"), "w.yaml:2: people[0].radius: missing: a radius > 0 in metres");
-  EXPECT_EQ(errorFor("people:\n  - {radius: 0.2}\n"),
+  EXPECT_EQ(parseErrorFor("people:\n  - {start: [0, 0]}\n"), "w.yaml:2: people[0].radius: missing: a radius > 0 in metres");
+  EXPECT_EQ(parseErrorFor("people:\n  - {radius: 0.2}\n"),
             "w.yaml:2: people[0].start: missing: where it stands first, [x, y] in metres");
-  EXPECT_EQ(errorFor("people:\n  - {radius: 0.2, start: [0, 0], legs: [{duration: 0, velocity: [1, 0]}]}\n"),
+  EXPECT_EQ(parseErrorFor("people:\n  - {radius: 0.2, start: [0, 0], legs: [{duration: 0, velocity: [1, 0]}]}\n"),
             "w.yaml:2: people[0].legs[0].duration: 0 is not a finite duration > 0");
-  EXPECT_EQ(errorFor("people:\n  - {radius: 0.2, start: [0, 0], legs: [{duration: 1, velocity: [1]}]}\n"),
+  EXPECT_EQ(parseErrorFor("people:\n  - {radius: 0.2, start: [0, 0], legs: [{duration: 1, velocity: [1]}]}\n"),
             "w.yaml:2: people[0].legs[0].velocity: expected [vx, vy] in m/s (finite)");
-  EXPECT_EQ(errorFor("people:\n  - {radius: 0.2, start: [0, 0], speed: 1}\n"),
+  EXPECT_EQ(parseErrorFor("people:\n  - {radius: 0.2, start: [0, 0], speed: 1}\n"),
             "w.yaml:2: people[0].speed: unknown key (misspelt?)");
-  EXPECT_EQ(errorFor("people:\n  - {radius: 0.2, start: [0, 0], repeat: true, legs: [{duration: 1, velocity: [1, 0]}]}\n")
+  EXPECT_EQ(parseErrorFor("people:\n  - {radius: 0.2, start: [0, 0], repeat: true, legs: [{duration: 1, velocity: [1, 0]}]}\n")
                 .rfind("w.yaml:2: people[0].repeat: the legs end 1 m from the start", 0),
             0u);
-  EXPECT_EQ(errorFor("people:\n  - {radius: -1, start: [0, 0]}\n"), "w.yaml:2: people[0].radius: expected a radius > 0 in metres");
+  EXPECT_EQ(parseErrorFor("people:\n  - {radius: -1, start: [0, 0]}\n"), "w.yaml:2: people[0].radius: expected a radius > 0 in metres");
 }
 
 TEST(WorldPeople, YamlRoundTripsAndValidateNamesABadPerson) {
