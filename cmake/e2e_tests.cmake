@@ -20,15 +20,16 @@ target_include_directories(test_e2e SYSTEM PRIVATE ${GTEST_INCLUDE_DIRS})
 target_include_directories(test_e2e PRIVATE test/support test/e2e/include)
 target_compile_definitions(test_e2e PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
 target_compile_options(test_e2e PRIVATE ${AMIGOBOT_WARNINGS})
-set_target_properties(test_e2e PROPERTIES UNITY_BUILD ${AMIGOBOT_UNITY_BUILD} UNITY_BUILD_BATCH_SIZE ${AMIGOBOT_UNITY_BATCH})
+amigobot_unity_build(test_e2e)
 add_dependencies(test_e2e ${PROJECT_NAME}_generate_messages_cpp)
 add_dependencies(tests test_e2e)
-set(AMIGOBOT_E2E_NODES test_e2e amigobot_emulator amigobot_tracking_ros amigobot_tracking_ros_driver
-    sim_laser ground_truth_localization reference_publisher trail_publisher laser_emulator amigobot_tracking_ros_laser amigobot_tracking_ros_localization
-    laser_node)
+# What the e2e tier runs: the demo's stack (amigobot_demo, cmake/ros_report.cmake: the
+# emulators, nodelets, sim_laser, ground truth, the reference and trail publishers, the
+# messages), the judge and a lab's own laser driver (external_laser.test).
+set(AMIGOBOT_E2E_NODES test_e2e laser_node amigobot_demo)
 # Everything the e2e tier runs, built in one go (make test-under-load builds it before loading the cores).
 add_custom_target(amigobot_e2e_nodes)
-add_dependencies(amigobot_e2e_nodes ${AMIGOBOT_E2E_NODES} world_markers ${PROJECT_NAME}_generate_messages)  # two_robots.launch; Python judges import the messages
+add_dependencies(amigobot_e2e_nodes ${AMIGOBOT_E2E_NODES})
 
 # amigobot_add_e2e_test(FILE PORT_ARG...): rostest FILE with a free port for each PORT_ARG.
 function(amigobot_add_e2e_test file)

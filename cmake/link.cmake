@@ -5,6 +5,7 @@ amigobot_add_library(amigobot_tracking_link
   src/link/address.cpp
   src/link/serial_port.cpp
   src/link/emulator_link.cpp
+  src/link/system_clock_errors.cpp
   src/link/tcp_client.cpp
 )
 target_include_directories(amigobot_tracking_link PUBLIC include)

@@ -30,12 +30,6 @@ void onStopSignal(int signal) {  // lock-free atomics only: safe in a signal han
 
 }  // namespace
 
-std::runtime_error systemError(const std::string& what) { return std::runtime_error(what + ": " + std::strerror(errno)); }
-
-double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 bool takeLine(std::string& pending, std::string* line) {
   const std::size_t eol = pending.find('\n');
   if (eol == std::string::npos) return false;

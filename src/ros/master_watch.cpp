@@ -10,7 +10,7 @@
 #include <ros/service_manager.h>
 #include <ros/xmlrpc_manager.h>
 
-#include "amigobot_tracking/link/emulator_link.h"
+#include "amigobot_tracking/link/system_clock_errors.h"
 #include "amigobot_tracking/ros/xmlrpc_call.h"
 
 namespace amigobot_tracking {

@@ -9,7 +9,7 @@
 #include <chrono>
 #include <cstring>
 
-#include "amigobot_tracking/link/emulator_link.h"
+#include "amigobot_tracking/link/system_clock_errors.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "amigobot_tracking/link/system_clock_errors.h"  // steadySeconds, systemError: the emulators use both
+
 namespace amigobot_tracking {
 namespace link {
 
@@ -97,13 +99,6 @@ inline void sendAvailable(int fd, const std::vector<std::uint8_t>& bytes) { send
 // nothing taken, while no line is complete. The line framing of the status and control
 // sockets, on both their ends.
 bool takeLine(std::string& pending, std::string* line);
-
-// Monotonic seconds from an arbitrary start, for deadlines and ages the wall clock must not
-// stretch (it may jump): the emulators' clock, the master watch's and XML-RPC calls' timeouts.
-double steadySeconds();
-
-// std::runtime_error "what: strerror(errno)", for the system call that just failed.
-std::runtime_error systemError(const std::string& what);
 
 // An emulator process's signals: SIGINT and SIGTERM set the returned flag (its run loop's
 // `stop`), stopSignal() then says which; SIGPIPE is ignored, so a client that hangs up is an
