@@ -95,7 +95,7 @@ bool RecommendedController::command(const Pose2& pose, const std::vector<Disk>& 
   // step) would move the goal by decimetres round a parked target. Averaged over the
   // look-ahead itself, the goal's offset is about the target's displacement over that time,
   // whose noise is the sample noise (a few cm), not tau times a velocity's.
-  const double tau = config_.field_lookahead;
+  const double tau = config_.recommended.field_lookahead;
   if (!smoothed_velocity_.allFinite() || tau <= 0.0) smoothed_velocity_ = feed_forward_;
   else smoothed_velocity_ += (feed_forward_ - smoothed_velocity_) * std::min(1.0, h / tau);
   in.v_smooth = smoothed_velocity_;

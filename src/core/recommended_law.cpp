@@ -18,7 +18,7 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // The law holds the body itself (body_safe: the body disk and the disk of radius R around
   // p_r, safety_filter.h), not the disk of radius R + r around p_r of (10), so its zones are
   // R wide (plus body_margin): a gap the body passes is a gap for the field.
-  const double radius = config.robot_radius + config.body_margin;
+  const double radius = config.robot_radius + config.recommended.body_margin;
   const double error_norm = in.e.norm();
   const double xi = error_norm / in.rho;
   const Eigen::Vector2d e_hat = error_norm > 1e-12 ? Eigen::Vector2d(in.e / error_norm) : Eigen::Vector2d::Zero();
@@ -45,11 +45,11 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // The field routes round where a moving disk will be, not only where it is: its path over
   // obstacle_lookahead (withPredictedPaths), so the robot passes behind a person crossing its way
   // and steps out of the way of one coming from behind instead of fleeing ahead of them.
-  const std::vector<Disk> seen = withPredictedPaths(held, config.obstacle_lookahead, in.p_r, config.v_max, radius);
+  const std::vector<Disk> seen = withPredictedPaths(held, config.recommended.obstacle_lookahead, in.p_r, config.v_max, radius);
 
   NavigationFieldConfig field;
   field.robot_radius = radius;
-  field.margin = config.field_margin;
+  field.margin = config.recommended.field_margin;
   // A target in or near a zone (the threshold, saddle and doorway classes: it drives over a
   // disk) pulls the field to the zone's near side, where the robot waited until the target came
   // out (4 s in front of a 0.2 m disk). The field aims instead up to tau |v_smooth| ahead of it,
@@ -60,7 +60,7 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // target that parks behind a pillar). Continuous in the state and the geometry. The
   // line-of-sight blend and (13') still use p_d itself.
   const Eigen::Vector2d p_d = in.p_r + in.e;
-  Eigen::Vector2d ahead = config.field_lookahead * in.v_smooth;
+  Eigen::Vector2d ahead = config.recommended.field_lookahead * in.v_smooth;
   if (!ahead.allFinite()) ahead.setZero();
   if (ahead.norm() > error_norm) ahead *= error_norm / ahead.norm();
   const double q_d = segmentClearance(p_d, p_d + ahead, seen, radius);
@@ -68,7 +68,7 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // A target on a person's path (where they walk within obstacle_lookahead): the field aims
   // beside that path, so the robot steps aside and lets them pass (goalOutOfPaths; the person's
   // own radius: the widened one of `held` would send it up to r farther aside than it needs).
-  const Eigen::Vector2d goal = goalOutOfPaths(p_d + target_blocked * ahead, in.p_r, obstacles, config.obstacle_lookahead,
+  const Eigen::Vector2d goal = goalOutOfPaths(p_d + target_blocked * ahead, in.p_r, obstacles, config.recommended.obstacle_lookahead,
                                               radius, field.margin);
   const NavigationDirection nav = navigationDirection(in.p_r, p_d, goal, seen, field);
   out.direction = nav.direction;
@@ -83,10 +83,10 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   filter.pose = in.pose;
   filter.offset = config.offset;
   filter.robot_radius = radius;
-  filter.gamma = config.barrier_rate;
+  filter.gamma = config.recommended.barrier_rate;
   filter.min_margin = config.min_margin;
   filter.obstacle_velocities = config.obstacleVelocities();
-  filter.braking = config.plan_braking;
+  filter.braking = config.recommended.plan_braking;
   filter.limits = config.actuator;
   filter.hold = in.h;
   filter.body_rows = config.body_safe;
@@ -94,10 +94,10 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // Under 3 cm of target noise the law's command followed the noise: |dv| up to 0.52 m/s and
   // |dw| up to 1.59 rad/s in one step (50 noisy runs per clutter class). No target motion
   // the robot can follow needs a corner of the diamond reached faster than command_rise_time.
-  if (in.h > 0.0 && config.command_rise_time > 0.0) {
+  if (in.h > 0.0 && config.recommended.command_rise_time > 0.0) {
     filter.previous = in.previous;
-    filter.max_change = {diamond.vMax() * in.h / config.command_rise_time,
-                         diamond.wMax() * in.h / config.command_rise_time};
+    filter.max_change = {diamond.vMax() * in.h / config.recommended.command_rise_time,
+                         diamond.wMax() * in.h / config.recommended.command_rise_time};
   }
   const SafetyFilterResult safe = safetyFilter(filter, diamond, held);
   if (!safe.solved || !safe.u.isFinite()) return out;

@@ -39,7 +39,7 @@ struct Jumps {
 Jumps noisyPillar(double rise_time) {
   sim::ClosedLoopSetup setup;
   setup.law = "recommended";
-  setup.controller.command_rise_time = rise_time;
+  setup.controller.recommended.command_rise_time = rise_time;
   setup.controller.body_safe = true;
   core::Disk pillar;
   pillar.center = {2.0, 0.6};
@@ -121,7 +121,7 @@ TEST(CommandRateBox, StartsFromTheShrunkDiamondUnderAHeldCommand) {
 }
 
 TEST(CommandRateBox, KeepsNoisyCommandsSmooth) {
-  const double rise = core::ControllerConfig().command_rise_time;
+  const double rise = core::ControllerConfig().recommended.command_rise_time;
   const Jumps boxed = noisyPillar(rise), unboxed = noisyPillar(0.0);
   std::printf("box %.2f s: |dv| %.3f m/s, |dw| %.3f rad/s, ASE %.4f; none: |dv| %.3f, |dw| %.3f, ASE %.4f\n", rise,
               boxed.dv, boxed.dw, boxed.true_ase, unboxed.dv, unboxed.dw, unboxed.true_ase);
@@ -136,8 +136,8 @@ TEST(CommandRateBox, KeepsNoisyCommandsSmooth) {
 
 TEST(CommandRateBox, IsAValidatedGain) {
   core::ControllerConfig c;
-  c.command_rise_time = -0.1;
+  c.recommended.command_rise_time = -0.1;
   EXPECT_NE(c.validate().find("command_rise_time"), std::string::npos) << c.validate();
-  c.command_rise_time = 0.0;
+  c.recommended.command_rise_time = 0.0;
   EXPECT_EQ(c.validate(), "");
 }

@@ -27,7 +27,7 @@ struct LookaheadOutcome {
 LookaheadOutcome overADisk(double radius, double lookahead) {
   sim::ClosedLoopSetup setup;
   setup.law = "recommended";
-  setup.controller.field_lookahead = lookahead;
+  setup.controller.recommended.field_lookahead = lookahead;
   setup.controller.body_safe = true;
   setup.initial_pose = {0.0, 0.0, 0.0};
   core::Disk disk;
@@ -60,7 +60,7 @@ LookaheadOutcome overADisk(double radius, double lookahead) {
 
 TEST(FieldLookahead, GoesRoundADiskTheTargetDrivesOverInsteadOfWaiting) {
   for (double radius : {0.2, 0.3}) {
-    const LookaheadOutcome ahead = overADisk(radius, core::ControllerConfig().field_lookahead);
+    const LookaheadOutcome ahead = overADisk(radius, core::ControllerConfig().recommended.field_lookahead);
     const LookaheadOutcome at_target = overADisk(radius, 0.0);
     std::printf("disk %.1f m: look-ahead ASE %.4f, still %.2f s; at the target ASE %.4f, still %.2f s\n", radius,
                 ahead.true_ase, ahead.longest_still, at_target.true_ase, at_target.longest_still);
@@ -79,7 +79,7 @@ TEST(FieldLookahead, TracksAsBeforeInFreeSpace) {
   auto free_run = [&](double lookahead) {
     sim::ClosedLoopSetup s;
     s.law = "recommended";
-    s.controller.field_lookahead = lookahead;
+    s.controller.recommended.field_lookahead = lookahead;
     s.duration = 20.0;
     s.control_period = 0.05;
     const core::SplineReference reference({{0.6, 0.0}, {2.0, 1.0}, {4.0, 0.0}}, 18.0);
@@ -91,8 +91,8 @@ TEST(FieldLookahead, TracksAsBeforeInFreeSpace) {
 
 TEST(FieldLookahead, IsAValidatedGain) {
   core::ControllerConfig c;
-  c.field_lookahead = -1.0;
+  c.recommended.field_lookahead = -1.0;
   EXPECT_NE(c.validate().find("field_lookahead"), std::string::npos) << c.validate();
-  c.field_lookahead = 0.0;
+  c.recommended.field_lookahead = 0.0;
   EXPECT_EQ(c.validate(), "");
 }

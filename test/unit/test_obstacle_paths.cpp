@@ -25,7 +25,7 @@ Disk person(double x, double y, double vx, double vy) {
 RecommendedCommand commandAmong(const std::vector<Disk>& disks, double lookahead) {
   ControllerConfig config;
   config.law = "recommended";
-  config.obstacle_lookahead = lookahead;
+  config.recommended.obstacle_lookahead = lookahead;
   RecommendedInput in;
   in.pose = {0.0, 0.0, 0.0};
   in.p_r = {0.3, 0.0};

@@ -253,7 +253,7 @@ TEST(RecommendedLaw, FeedForwardFollowsTheTargetNotTheNoise) {
     setup.control_period = 0.05;
     setup.law = "recommended";
     setup.controller.estimator.max_acceleration = a_max;
-    setup.controller.command_rise_time = 0.0;  // the feed-forward's bound alone (test_command_rate_box: the box's)
+    setup.controller.recommended.command_rise_time = 0.0;  // the feed-forward's bound alone (test_command_rate_box: the box's)
     setup.sensor.sample_period = 0.1;
     setup.sensor.noise_std = noise;
     setup.sensor.seed = 7;

@@ -25,6 +25,29 @@ struct PaperOptions {
                                        // by approach speed * horizon
 };
 
+// The recommended law's own options (recommended_law.h; its keys are read at the top level:
+// barrier_rate, body_margin, ...). The paper's law never reads them.
+struct RecommendedOptions {
+  double barrier_rate = 5.333;         // [1/s] gamma of the barrier rows (amigobot_sim --tune):
+                                       // clearance' >= -gamma (clearance - min_margin)
+  double body_margin = 0.0;            // [m] the recommended law holds the body (and the disk of
+                                       // radius R around p_r) this much wider: laser noise and
+                                       // localisation error on a real robot (config/tracking.yaml)
+  double field_margin = 0.1;           // [m] the recommended law's field bends around a disk's
+                                       // zone within this, and blends in when the line of sight
+                                       // to the target passes closer than this
+  double field_lookahead = 1.5;        // [s] a target in or near a zone: the field aims this far
+                                       // ahead along its smoothed velocity (0: at the target)
+  double command_rise_time = 0.25;     // [s] the recommended law's command changes by at most
+                                       // (v_bar, w_bar) h / this per step: the safety filter's
+                                       // rate box, which gives way to a barrier (0: no bound)
+  bool plan_braking = true;            // the recommended law's barrier rows bound the approach speed
+                                       // by what the base can still brake (`actuator`'s ramps and
+                                       // delays: safety_filter.h); false: gamma alone
+  double obstacle_lookahead = 2.0;     // [s] the recommended law's field sees a moving disk along
+                                       // the path it walks over this long (0: where it is now)
+};
+
 struct ControllerConfig {
   // Robot.
   double robot_radius = 0.18;  // R [m]: AmigoBot body radius (ARIA RobotRadius 180 mm).
@@ -68,29 +91,13 @@ struct ControllerConfig {
   // with its options `paper`), "fixed_rho" (the same without (13)'s adaptation) or "recommended"
   // (recommended_law.h: a navigation field, a safety filter over the diamond and (13')).
   std::string law = "paper";
-  double barrier_rate = 5.333;         // [1/s] gamma of the recommended law's barrier rows (amigobot_sim --tune):
-                                       // clearance' >= -gamma (clearance - min_margin)
-  double body_margin = 0.0;            // [m] the recommended law holds the body (and the disk of
-                                       // radius R around p_r) this much wider: laser noise and
-                                       // localisation error on a real robot (config/tracking.yaml)
-  double field_margin = 0.1;           // [m] the recommended law's field bends around a disk's
-                                       // zone within this, and blends in when the line of sight
-                                       // to the target passes closer than this
-  double field_lookahead = 1.5;        // [s] a target in or near a zone: the field aims this far
-                                       // ahead along its smoothed velocity (0: at the target)
-  double command_rise_time = 0.25;     // [s] the recommended law's command changes by at most
-                                       // (v_bar, w_bar) h / this per step: the safety filter's
-                                       // rate box, which gives way to a barrier (0: no bound)
-  bool plan_braking = true;            // the recommended law's barrier rows bound the approach speed
-                                       // by what the base can still brake (`actuator`'s ramps and
-                                       // delays: safety_filter.h); false: gamma alone
-  double obstacle_lookahead = 2.0;     // [s] the recommended law's field sees a moving disk along
-                                       // the path it walks over this long (0: where it is now)
   // The base's dynamics the recommended law brakes with: not a parameter of its own, the robot
   // description's (config/robots/); defaults the AmigoBot's.
   ActuatorLimits actuator;
   // The paper's law's options (its keys are read at this level: tangential_avoidance, k_t, ...).
   PaperOptions paper;
+  // The recommended law's options (barrier_rate, body_margin, field_margin, ...: this level too).
+  RecommendedOptions recommended;
   // Beyond the paper: each switch off reproduces the paper exactly.
   bool moving_obstacles = false;       // use obstacle velocities in (10) (avoidance.h), and on the
                                        // robot the laser disks carry the tracker's velocities
