@@ -210,7 +210,7 @@ def write_page(path, results, runs, seconds, quick, sets):
          f"{runs} Monte Carlo variants per class, each run by every law, {seconds:.0f} s on this machine"
          + (f", with {', '.join(sets)}" if sets else "") + ". "
          "Scenes: config/scenarios/pedestrians/ (body-safe, Section 5.3's gains and limits, 20 Hz; on the "
-         "AmigoBot's dynamics: the firmware's ramps, 0.1 s cycle and 0.1 s latency, core/actuator_model.h). People are disks of 0.25 m on piecewise-constant velocities. "
+         "AmigoBot's dynamics: the firmware's ramps, 0.1 s cycle and 0.1 s latency, core/robot/actuator_model.h). People are disks of 0.25 m on piecewise-constant velocities. "
          f"Each variant draws every person's walking speed in [{SPEEDS[0]}, {SPEEDS[1]}] m/s (legs slower than "
          f"{WALKING} m/s, standing or pacing beside the target, keep theirs), keeps where they are at the "
          f"encounter (t = {ENCOUNTER:.0f} s) within ±{TIMING} s, shifts their paths within {PERSON_SHIFT} m and the "

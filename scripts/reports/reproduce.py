@@ -338,7 +338,7 @@ def write_results(path, results, fidelity, speed_free, mc, beyond):
     w(f"stiff as 1/margin, chatters along the 16 mm band ({100 * (explicit_1ms[1]['tec'] - ref['tec']) / ref['tec']:+.0f} % control energy), so ≈ 2200 of its")
     w("steps had to be 0.5 ms. Three pieces, each measured on its own:")
     w("")
-    w("- *band_implicit* (core/band_implicit.h): the repulsion of the nearest reachable obstacle is evaluated")
+    w("- *band_implicit* (core/law/band_implicit.h): the repulsion of the nearest reachable obstacle is evaluated")
     w("  backward-Euler, at the clearance the held command reaches at the end of the step (exact unicycle arc,")
     w("  a scalar secant solve). Long steps neither chatter nor enter a disk (rows \"band_implicit\"), but the")
     w("  error stays ≈ proportional to the step: error × steps ≈ constant (≈ 3 % at ≈ 3700 steps).")

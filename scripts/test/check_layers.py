@@ -29,6 +29,18 @@ ALLOWED = {
     "tools": {"std", "posix", "eigen", "core", "sim", "sim_mrpt", "link", "aria", "sensors", "localization", "world", "mrpt", "yaml", "json", "cli11"},
     "ros": None,  # anything
 }
+# Inside core, each folder is a concern, and a concern includes only those below it: support
+# (types, field tables, files, arguments) <- robot (its limits, diamond, kinematics) and
+# reference (the target's trajectory) <- law (the control laws and their parts) and perception
+# (obstacles from scans and virtual disks) <- supervision (staleness, locks, the loop).
+CORE_ALLOWED = {
+    "support": set(),
+    "robot": {"support"},
+    "reference": {"support"},
+    "law": {"support", "robot"},
+    "perception": {"support", "robot"},
+    "supervision": {"support", "robot", "reference", "law", "perception"},
+}
 LIBRARIES = {"Eigen": "eigen", "yaml-cpp": "yaml", "nlohmann": "json", "mrpt": "mrpt", "CLI": "cli11",
              "linux": "linux"}  # linux: the kernel's user-space API headers (linux/joystick.h)
 POSIX_FOLDERS = {"sys", "netinet", "arpa"}
@@ -61,6 +73,15 @@ def kind_of(bracket, path):
     return LIBRARIES.get(parts[0], "other")
 
 
+def core_concern(path):
+    """The concern folder of a core file or include path ('support', 'law', ...), or None."""
+    parts = path.replace(os.sep, "/").split("/")
+    for i in range(len(parts) - 2):
+        if parts[i] == "core" and parts[i + 1] in CORE_ALLOWED:
+            return parts[i + 1]
+    return None
+
+
 def layer_files(root):
     """(layer, path) of every source file of every layer folder that exists."""
     for layer in ALLOWED:
@@ -84,10 +105,19 @@ def violations(root):
                     continue
                 includes += 1
                 kind = kind_of(match.group(1), match.group(2))
+                shown = f"{match.group(1)}{match.group(2)}{'>' if match.group(1) == '<' else chr(34)}"
                 if allowed is not None and kind != layer and kind not in allowed:
-                    shown = f"{match.group(1)}{match.group(2)}{'>' if match.group(1) == '<' else chr(34)}"
                     messages.append(f"{os.path.relpath(path, root)}:{number}: {shown} ({kind}) is not allowed "
                                     f"in layer {layer} (allowed: {', '.join(sorted(allowed))})")
+                if layer == "core" and kind == "core":
+                    concern, used = core_concern(os.path.relpath(path, root)), core_concern(match.group(2))
+                    if concern is None or used is None:
+                        messages.append(f"{os.path.relpath(path, root)}:{number}: {shown}: core files live in a "
+                                        f"concern folder ({', '.join(CORE_ALLOWED)})")
+                    elif used != concern and used not in CORE_ALLOWED[concern]:
+                        messages.append(f"{os.path.relpath(path, root)}:{number}: {shown} (core/{used}) is not "
+                                        f"allowed in core/{concern} (allowed: "
+                                        f"{', '.join(sorted(CORE_ALLOWED[concern])) or 'nothing else in core'})")
     return messages, includes, files
 
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/aria/commands.h"
-#include "amigobot_tracking/core/error_text.h"
+#include "amigobot_tracking/core/support/error_text.h"
 
 namespace amigobot_tracking {
 namespace aria {

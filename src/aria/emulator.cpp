@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/aria/commands.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 namespace amigobot_tracking {
 namespace aria {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 namespace amigobot_tracking {
 namespace aria {

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "amigobot_tracking/LocalizationStatus.h"
-#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 
 #include "amigobot_tracking/localization/initial_pose.h"
 #include "amigobot_tracking/localization/poses.h"
@@ -91,7 +91,7 @@ bool LocalizationNode::lookup(const std::string& parent, const std::string& chil
 }
 
 void LocalizationNode::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
-  // A scan whose geometry or beams cannot be used (core/scan_obstacles.h) is not matched:
+  // A scan whose geometry or beams cannot be used (core/perception/scan_obstacles.h) is not matched:
   // the pose keeps its last correction and ages, as with no scan.
   const core::ScanGeometry geometry{msg->angle_min, msg->angle_increment, msg->range_min, msg->range_max};
   const std::string refused = core::scanBeamsProblem(geometry, msg->angle_max, msg->ranges.data(), msg->ranges.size());

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/core/law_registry.h"
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/law/avoidance.h"
+#include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/law/law_registry.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
 #include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/world/geometry.h"
 

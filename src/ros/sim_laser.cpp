@@ -7,7 +7,7 @@
 #include "amigobot_tracking/ros/param_reader.h"
 
 #include "amigobot_tracking/world/raycast.h"
-#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

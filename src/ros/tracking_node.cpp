@@ -7,7 +7,7 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "amigobot_tracking/core/body_intrusion.h"
+#include "amigobot_tracking/core/perception/body_intrusion.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/markers.h"
 #include "amigobot_tracking/ros/reconfigure_mapping.h"

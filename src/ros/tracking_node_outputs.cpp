@@ -2,7 +2,7 @@
 // diagnostics task.
 #include <limits>
 
-#include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/law/avoidance.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/markers.h"
 #include "amigobot_tracking/ros/tracking_node.h"

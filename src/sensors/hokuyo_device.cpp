@@ -13,7 +13,7 @@
 #include <mrpt/hwdrivers/CHokuyoURG.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
-#include "amigobot_tracking/core/error_text.h"
+#include "amigobot_tracking/core/support/error_text.h"
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/link/tcp_client.h"
 #include "amigobot_tracking/sensors/laser_device.h"

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "amigobot_tracking/core/error_text.h"
+#include "amigobot_tracking/core/support/error_text.h"
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/sensors/laser_registry.h"
 

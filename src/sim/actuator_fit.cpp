@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/input_file.h"
+#include "amigobot_tracking/core/support/input_file.h"
 
 namespace amigobot_tracking {
 namespace sim {

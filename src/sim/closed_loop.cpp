@@ -7,13 +7,13 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/law_registry.h"
+#include "amigobot_tracking/core/law/avoidance.h"
+#include "amigobot_tracking/core/law/law_registry.h"
 #include "amigobot_tracking/sim/baseline_estimators.h"
-#include "amigobot_tracking/core/offset_point.h"
-#include "amigobot_tracking/core/small_angle.h"
-#include "amigobot_tracking/core/tracking_loop.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
+#include "amigobot_tracking/core/support/small_angle.h"
+#include "amigobot_tracking/core/supervision/tracking_loop.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 namespace amigobot_tracking {
 namespace sim {

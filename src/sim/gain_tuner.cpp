@@ -9,8 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/support/field_table.h"
 #include "amigobot_tracking/sim/scenario.h"
 
 namespace amigobot_tracking {

@@ -11,8 +11,8 @@
 #include <random>
 #include <thread>
 
-#include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/law/avoidance.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
 #include "amigobot_tracking/sim/simulator.h"
 
 namespace amigobot_tracking {

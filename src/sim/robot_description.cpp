@@ -6,8 +6,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "amigobot_tracking/core/input_file.h"
-#include "amigobot_tracking/core/robot_description.h"
+#include "amigobot_tracking/core/support/input_file.h"
+#include "amigobot_tracking/core/robot/robot_description.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/yaml_section.h"
 

@@ -7,8 +7,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "amigobot_tracking/core/input_file.h"
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/support/input_file.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
 #include "amigobot_tracking/sim/scenario_fields.h"
 #include "amigobot_tracking/sim/yaml_section.h"
 

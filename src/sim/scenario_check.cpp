@@ -4,8 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/law_registry.h"
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/law/law_registry.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/scenario_fields.h"
 

@@ -63,7 +63,7 @@ core::FieldTable<Scenario> makeTable() {
   t.push_back(field("simulation/name", &Scenario::name, "-", "run name (default: the file's stem)"));
   t.push_back(field("robot/dynamics", &Scenario::dynamics, "-",
                     "firmware: the command reaches the body through the robot's ramps, cycle, latency and wheel "
-                    "limit (core/actuator_model.h); ideal: at once (the paper's unicycle)",
+                    "limit (core/robot/actuator_model.h); ideal: at once (the paper's unicycle)",
                     core::oneOf({"firmware", "ideal"})));
   t.push_back(field("robot/description", &Scenario::robot_description, "-",
                     "robot YAML (config/robots/) whose dynamics keys the firmware base takes, relative to the "

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "amigobot_tracking/core/law_registry.h"
+#include "amigobot_tracking/core/law/law_registry.h"
 #include "amigobot_tracking/sim/scenario.h"
 
 namespace amigobot_tracking {

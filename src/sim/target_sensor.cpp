@@ -5,7 +5,7 @@
 #include <limits>
 #include <sstream>
 
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 namespace amigobot_tracking {
 namespace sim {

@@ -15,8 +15,8 @@
 #include <mrpt/nav/reactive/CReactiveNavigationSystem.h>
 #include <mrpt/nav/reactive/CRobot2NavInterface.h>
 
-#include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/law/avoidance.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
 #include "amigobot_tracking/world/raycast.h"
 
 namespace amigobot_tracking {

@@ -15,7 +15,7 @@
 
 #include "amigobot_tracking/aria/emulator.h"
 #include "amigobot_tracking/aria/emulator_server.h"
-#include "amigobot_tracking/core/program_arguments.h"
+#include "amigobot_tracking/core/support/program_arguments.h"
 #include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/world/world.h"
 

@@ -25,7 +25,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
-#include "amigobot_tracking/core/law_registry.h"
+#include "amigobot_tracking/core/law/law_registry.h"
 #include "amigobot_tracking/sim/actuator_fit.h"
 #include "amigobot_tracking/sim/gain_tuner.h"
 #include "amigobot_tracking/sim/monte_carlo.h"

@@ -9,9 +9,9 @@
 #include <CLI/CLI.hpp>
 
 #include "amigobot_tracking/aria/wheel_command.h"
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/reference.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/reference/reference.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 using namespace amigobot_tracking;
 

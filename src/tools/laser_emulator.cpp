@@ -17,7 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include "amigobot_tracking/aria/emulator_status.h"
-#include "amigobot_tracking/core/program_arguments.h"
+#include "amigobot_tracking/core/support/program_arguments.h"
 #include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/sensors/laser_emulator_server.h"
 #include "amigobot_tracking/sensors/laser_registry.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/law/avoidance.h"
 
 namespace amigobot_tracking {
 namespace world {

@@ -7,7 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "amigobot_tracking/core/input_file.h"
+#include "amigobot_tracking/core/support/input_file.h"
 
 namespace amigobot_tracking {
 namespace world {

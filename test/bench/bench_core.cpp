@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "amigobot_tracking/sim/closed_loop.h"
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/estimator.h"
-#include "amigobot_tracking/core/scan_obstacles.h"
-#include "amigobot_tracking/core/tracking_loop.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/law/estimator.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
+#include "amigobot_tracking/core/supervision/tracking_loop.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 using namespace amigobot_tracking::core;
 using namespace amigobot_tracking::sim;

@@ -1,4 +1,4 @@
-// Google Benchmark: laser scan -> bounded disks (core/scan_obstacles.h). Printed, never
+// Google Benchmark: laser scan -> bounded disks (core/perception/scan_obstacles.h). Printed, never
 // asserted. Target: <= 30 us for a 720-beam scan.
 #include <benchmark/benchmark.h>
 
@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 
 using namespace amigobot_tracking::core;
 

@@ -54,7 +54,7 @@ TEST(E2E, ATargetStampedAheadThenSilentStops) {
 
 // A target sample stamped 30 s ahead, 3 s of silence, then the normal target again: the old
 // tf listener kept the future sample as the frame's "latest" and tracking stayed stopped 27 s.
-// Now the sample is dropped where it enters (core/transform_intake.h): the robot stops on the
+// Now the sample is dropped where it enters (core/supervision/transform_intake.h): the robot stops on the
 // silence and drives again as soon as the good samples are back (a moving setpoint on the
 // wire within kResumeBound, true speed above 0.1 m/s within 3 s).
 TEST(E2E, OneSampleStampedAheadDoesNotBlockTheGoodOnesAfterIt) {
@@ -89,7 +89,7 @@ TEST(E2E, OneSampleStampedAheadDoesNotBlockTheGoodOnesAfterIt) {
 }
 
 // A second publisher on cmd_vel at 100 Hz, commanding a spin on the spot, while tracking drives
-// the circle: the driver keeps to the first publisher (core/command_lock.h), so no spin
+// the circle: the driver keeps to the first publisher (core/supervision/command_lock.h), so no spin
 // setpoint reaches the wire and the robot keeps its course.
 TEST(E2E, ASecondCmdVelPublisherIsNotFollowed) {
   ros::NodeHandle nh;

@@ -125,7 +125,7 @@ TEST(E2E, ALaserThatSeesNothingOrLosesScansStops) {
   const std::string fault = requiredParam<std::string>("fault");
   ASSERT_TRUE(fault == "blind" || fault == "halved") << "~fault: blind | halved";
   // Blind: the last scan with returns ages past scan_timeout. Halved: the measured rate falls
-  // below 0.7 x 15 Hz within one rate window (2 s, core/scan_health.h) of halved scans.
+  // below 0.7 x 15 Hz within one rate window (2 s, core/perception/scan_health.h) of halved scans.
   const double detection = fault == "blind" ? kScanTimeout : 2.0;
   const double hold = fault == "blind" ? 3.0 : 4.0;  // [s] the fault lasts
   const std::vector<std::string> named = fault == "blind"

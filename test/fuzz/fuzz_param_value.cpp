@@ -1,4 +1,4 @@
-// libFuzzer target: the field tables' value parser (core/field_table.h parseValue, the one
+// libFuzzer target: the field tables' value parser (core/support/field_table.h parseValue, the one
 // reader of every parameter typed as text: rosparam strings, --set, reconfigure) on
 // arbitrary text for each type. Invariants: no crash or UB; a parsed value formats to text
 // that parses back to the same value, and checkValue answers for it against some bounds.
@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 #include "fuzz_support.h"
 
 using namespace amigobot_tracking::core;

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "amigobot_tracking/aria/client.h"
-#include "amigobot_tracking/core/actuator_limits.h"
+#include "amigobot_tracking/core/robot/actuator_limits.h"
 #include "emulator_process.h"
 
 using namespace amigobot_test;
@@ -45,7 +45,7 @@ Pose2 odom(const AriaClient& c) {
   return s.robot ? s.robot->odometry.pose : Pose2{};
 }
 
-// The firmware acts on a command latency .. latency + cycle after it arrives (core/actuator_model.h):
+// The firmware acts on a command latency .. latency + cycle after it arrives (core/robot/actuator_model.h):
 // the stop is sent that much early, on the mean, as a client of the real robot has to.
 const double kFirmwareDelay =
     amigobot_tracking::core::ActuatorLimits{}.latency + 0.5 * amigobot_tracking::core::ActuatorLimits{}.cycle;  // [s]

@@ -12,7 +12,7 @@
 #include <ros/ros.h>
 #include <rosgraph_msgs/Log.h>
 
-#include "amigobot_tracking/core/obstacle_tracker.h"
+#include "amigobot_tracking/core/perception/obstacle_tracker.h"
 #include "amigobot_tracking/ros/driver.h"
 #include "amigobot_tracking/ros/laser_scan.h"
 #include "amigobot_tracking/ros/localization_node.h"

@@ -16,8 +16,8 @@ class CheckLayers(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
         self.root = self.tmp.name
-        self.write("include/amigobot_tracking/core/unit.h", "#include <Eigen/Dense>\n#include <vector>\n")
-        self.write("src/core/unit.cpp", '#include "amigobot_tracking/core/unit.h"\n#include <cmath>\n')
+        self.write("include/amigobot_tracking/core/support/unit.h", "#include <Eigen/Dense>\n#include <vector>\n")
+        self.write("src/core/support/unit.cpp", '#include "amigobot_tracking/core/support/unit.h"\n#include <cmath>\n')
         self.write("src/ros/node.cpp", "#include <ros/ros.h>\n#include \"amigobot_tracking/sim/scenario.h\"\n")
 
     def tearDown(self):
@@ -39,6 +39,23 @@ class CheckLayers(unittest.TestCase):
         messages, includes, files = check_layers.violations(self.root)
         self.assertEqual(messages, [])
         self.assertEqual((includes, files), (6, 3))
+
+    def test_a_core_concern_includes_only_those_below_it(self):
+        self.write("src/core/law/law.cpp", '#include "amigobot_tracking/core/support/unit.h"\n'
+                   '#include "amigobot_tracking/core/supervision/loop.h"\n')
+        self.assertIn('src/core/law/law.cpp:2: "amigobot_tracking/core/supervision/loop.h" (core/supervision) is not '
+                      "allowed in core/law (allowed: robot, support)", self.only_violation())
+
+    def test_supervision_may_include_every_other_concern(self):
+        self.write("src/core/supervision/loop.cpp", "".join(
+            f'#include "amigobot_tracking/core/{c}/x.h"\n' for c in ("support", "robot", "reference", "law", "perception")))
+        messages, _, _ = check_layers.violations(self.root)
+        self.assertEqual(messages, [])
+
+    def test_a_core_file_outside_a_concern_folder_is_named(self):
+        self.write("src/core/loose.cpp", '#include "amigobot_tracking/core/support/unit.h"\n')
+        self.assertIn("src/core/loose.cpp:1:", self.only_violation())
+        self.assertIn("core files live in a concern folder", self.only_violation())
 
     def test_ros_in_core_names_the_file_line_and_include(self):
         self.write("src/core/bad.cpp", "#include <cmath>\n#include <ros/ros.h>\n")
@@ -71,7 +88,7 @@ class CheckLayers(unittest.TestCase):
 
     def test_teleop_may_use_termios_and_linux_headers_but_not_ros_nor_aria(self):
         self.write("src/teleop/device.cpp", "#include <termios.h>\n#include <linux/joystick.h>\n"
-                   '#include "amigobot_tracking/core/types.h"\n#include "amigobot_tracking/aria/client.h"\n')
+                   '#include "amigobot_tracking/core/support/types.h"\n#include "amigobot_tracking/aria/client.h"\n')
         self.write("src/core/joystick.cpp", "#include <linux/joystick.h>\n")
         messages, _, _ = check_layers.violations(self.root)
         self.assertEqual([m.split(" is not")[0] for m in messages],
@@ -80,14 +97,14 @@ class CheckLayers(unittest.TestCase):
 
     def test_link_may_use_posix_only_and_aria_sensors_may_use_link(self):
         self.write("src/link/serial_port.cpp", "#include <termios.h>\n#include <sys/socket.h>\n#include <string>\n"
-                   '#include "amigobot_tracking/core/types.h"\n#include <mrpt/comms/CSerialPort.h>\n#include <ros/ros.h>\n')
+                   '#include "amigobot_tracking/core/support/types.h"\n#include <mrpt/comms/CSerialPort.h>\n#include <ros/ros.h>\n')
         self.write("src/aria/transport.cpp", '#include "amigobot_tracking/link/address.h"\n')
         self.write("src/sensors/device.cpp", '#include "amigobot_tracking/link/serial_port.h"\n')
         self.write("src/core/uses_link.cpp", '#include "amigobot_tracking/link/address.h"\n')
         messages, _, _ = check_layers.violations(self.root)
         self.assertEqual([m.split(" is not")[0] for m in messages],
                          ['src/core/uses_link.cpp:1: "amigobot_tracking/link/address.h" (link)',
-                          'src/link/serial_port.cpp:4: "amigobot_tracking/core/types.h" (core)',
+                          'src/link/serial_port.cpp:4: "amigobot_tracking/core/support/types.h" (core)',
                           "src/link/serial_port.cpp:5: <mrpt/comms/CSerialPort.h> (mrpt)",
                           "src/link/serial_port.cpp:6: <ros/ros.h> (other)"])
 

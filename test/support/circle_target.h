@@ -7,7 +7,7 @@
 
 #include <ros/ros.h>
 
-#include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/reference/reference.h"
 #include "target_publisher.h"
 
 namespace e2e {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "amigobot_tracking/core/actuator_limits.h"
+#include "amigobot_tracking/core/robot/actuator_limits.h"
 
 namespace e2e {
 
@@ -26,7 +26,7 @@ constexpr double kOffset = 0.3;
 constexpr double kPoseLagTolerance = 0.05;  // [m]
 
 // [s] from a zero setpoint reaching the emulated robot to its standstill: the firmware counts
-// it latency .. latency + cycle after its arrival (core/actuator_model.h), then brakes from
+// it latency .. latency + cycle after its arrival (core/robot/actuator_model.h), then brakes from
 // (v, w) at its decelerations (config/robots/amigo.yaml).
 inline double firmwareStopTime(double v, double w) {
   const amigobot_tracking::core::ActuatorLimits amigo;

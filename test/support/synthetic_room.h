@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 #include "amigobot_tracking/localization/occupancy_map.h"
 #include "amigobot_tracking/localization/poses.h"
 #include "amigobot_tracking/localization/range_scan.h"

@@ -2,7 +2,7 @@
 // unit tests that run the paper's own numbers: the paper's radius (body_safe false).
 #pragma once
 
-#include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/core/law/controller_config.h"
 
 inline amigobot_tracking::core::ControllerConfig table1Config() {
   amigobot_tracking::core::ControllerConfig c;

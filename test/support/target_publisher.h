@@ -11,7 +11,7 @@
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "periodic_thread.h"
 

@@ -22,7 +22,7 @@
 #include "amigobot_tracking/TrackingState.h"
 #include "amigobot_tracking/VirtualObstacle.h"
 #include "amigobot_tracking/VirtualObstacleArray.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 #include "amigobot_tracking/ros/conversions.h"
 
 namespace tracking_world {

@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace clutter_scenes {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/actuator_model.h"
+#include "amigobot_tracking/core/robot/actuator_model.h"
 
 using amigobot_tracking::core::ActuatorLimits;
 using amigobot_tracking::core::ActuatorModel;

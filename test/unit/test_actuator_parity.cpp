@@ -17,8 +17,8 @@
 
 #include "amigobot_tracking/aria/commands.h"
 #include "amigobot_tracking/aria/emulator.h"
-#include "amigobot_tracking/core/law_registry.h"
-#include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/law/law_registry.h"
+#include "amigobot_tracking/core/reference/reference.h"
 #include "amigobot_tracking/sim/closed_loop.h"
 #include "aria_packets.h"
 

@@ -1,5 +1,5 @@
 // Error texts carry the library's message, never a backtrace frame or a stray byte
-// (core/error_text.h): on real MRPT exceptions (a TCP connect to a port nobody serves); and
+// (core/support/error_text.h): on real MRPT exceptions (a TCP connect to a port nobody serves); and
 // the robot link's transport (link::TcpClient) and the emulator's status client, which printed
 // "cannot connect: [6 ]     0x556f10c727a1" when they were on MRPT's socket, name the reason once.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 
 #include "amigobot_tracking/aria/emulator_status.h"
 #include "amigobot_tracking/aria/transport.h"
-#include "amigobot_tracking/core/error_text.h"
+#include "amigobot_tracking/core/support/error_text.h"
 #include "child_process.h"
 
 using amigobot_tracking::core::libraryMessage;

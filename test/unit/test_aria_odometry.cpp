@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "amigobot_tracking/aria/odometry.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 using namespace amigobot_tracking::aria;
 using amigobot_tracking::core::Pose2;

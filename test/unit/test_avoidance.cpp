@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/law/avoidance.h"
 
 using namespace amigobot_tracking::core;
 

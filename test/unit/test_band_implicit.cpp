@@ -1,4 +1,4 @@
-// The band-implicit repulsive term (core/band_implicit.h): on hand-made approaches to a disk
+// The band-implicit repulsive term (core/law/band_implicit.h): on hand-made approaches to a disk
 // it agrees with a fine explicit reference at steps 50-100x longer, it never ends a step
 // inside the disk, and the clearance it reports is the one the held command reaches.
 #include <gtest/gtest.h>
@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/band_implicit.h"
-#include "amigobot_tracking/core/offset_point.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/law/avoidance.h"
+#include "amigobot_tracking/core/law/band_implicit.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 using namespace amigobot_tracking::core;
 

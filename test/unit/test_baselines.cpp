@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/proportional_controller.h"
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/law/proportional_controller.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,7 +1,7 @@
-// Something inside the body stops the robot (core/body_intrusion.h).
+// Something inside the body stops the robot (core/perception/body_intrusion.h).
 #include <gtest/gtest.h>
 
-#include "amigobot_tracking/core/body_intrusion.h"
+#include "amigobot_tracking/core/perception/body_intrusion.h"
 
 using namespace amigobot_tracking::core;
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "amigobot_tracking/sim/closed_loop.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 #include "table1.h"
 
 using namespace amigobot_tracking::core;

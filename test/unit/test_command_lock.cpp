@@ -1,9 +1,9 @@
-// cmd_vel arbitration (core/command_lock.h): one source drives, others are refused.
+// cmd_vel arbitration (core/supervision/command_lock.h): one source drives, others are refused.
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "amigobot_tracking/core/command_lock.h"
+#include "amigobot_tracking/core/supervision/command_lock.h"
 
 using amigobot_tracking::core::CommandLock;
 

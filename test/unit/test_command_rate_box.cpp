@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "amigobot_tracking/core/reference.h"
-#include "amigobot_tracking/core/safety_filter.h"
+#include "amigobot_tracking/core/reference/reference.h"
+#include "amigobot_tracking/core/law/safety_filter.h"
 #include "amigobot_tracking/sim/closed_loop.h"
 
 using namespace amigobot_tracking;

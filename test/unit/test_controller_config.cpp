@@ -5,7 +5,7 @@
 #include <functional>
 #include <limits>
 
-#include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/core/law/controller_config.h"
 
 using namespace amigobot_tracking::core;
 

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <random>
 
-#include "amigobot_tracking/core/avoidance.h"
+#include "amigobot_tracking/core/law/avoidance.h"
 #include "amigobot_tracking/sim/closed_loop.h"
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 using namespace amigobot_tracking::core;
 using namespace amigobot_tracking::sim;

@@ -7,8 +7,8 @@
 #include <limits>
 #include <vector>
 
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 #include "table1.h"
 
 using namespace amigobot_tracking::core;

@@ -5,7 +5,7 @@
 #include <limits>
 #include <random>
 
-#include "amigobot_tracking/core/diamond.h"
+#include "amigobot_tracking/core/robot/diamond.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,7 +1,7 @@
-// When two disks are one obstacle for the offset point (core/disk_clusters.h).
+// When two disks are one obstacle for the offset point (core/law/disk_clusters.h).
 #include <gtest/gtest.h>
 
-#include "amigobot_tracking/core/disk_clusters.h"
+#include "amigobot_tracking/core/law/disk_clusters.h"
 
 using namespace amigobot_tracking::core;
 

@@ -13,8 +13,8 @@
 #include <limits>
 #include <random>
 
-#include "amigobot_tracking/core/estimator.h"
-#include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/law/estimator.h"
+#include "amigobot_tracking/core/reference/reference.h"
 
 using namespace amigobot_tracking::core;
 

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/reference/reference.h"
 #include "amigobot_tracking/sim/closed_loop.h"
 
 using namespace amigobot_tracking;

@@ -6,8 +6,8 @@
 #include <limits>
 #include <map>
 
-#include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/support/field_table.h"
 #include "amigobot_tracking/sim/config_json.h"
 
 using namespace amigobot_tracking::core;

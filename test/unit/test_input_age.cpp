@@ -1,10 +1,10 @@
-// Input age on the receiver's clock (core/input_age.h): untrusted stamps are stale and named,
+// Input age on the receiver's clock (core/supervision/input_age.h): untrusted stamps are stale and named,
 // a stream that stops is stale however it was stamped.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "amigobot_tracking/core/input_age.h"
+#include "amigobot_tracking/core/supervision/input_age.h"
 
 using amigobot_tracking::core::InputAge;
 using amigobot_tracking::core::InputAgeTracker;

@@ -1,4 +1,4 @@
-// Hostile input files for every loader (core/input_file.h): special files, sizes that would
+// Hostile input files for every loader (core/support/input_file.h): special files, sizes that would
 // allocate gigabytes, alias bombs, overflowing pixels and keys that are not words are each
 // refused with an error naming the file (and the line and key where there is one), quickly
 // and without a crash.
@@ -14,7 +14,7 @@
 #include <string>
 
 #include "amigobot_tracking/aria/robot_params.h"
-#include "amigobot_tracking/core/input_file.h"
+#include "amigobot_tracking/core/support/input_file.h"
 #include "amigobot_tracking/localization/occupancy_map.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/world/world.h"

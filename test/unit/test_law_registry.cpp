@@ -5,10 +5,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/core/law_registry.h"
-#include "amigobot_tracking/core/paper_controller.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/law/law_registry.h"
+#include "amigobot_tracking/core/law/paper_controller.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "amigobot_tracking/core/obstacle_motion.h"
+#include "amigobot_tracking/core/perception/obstacle_motion.h"
 
 using amigobot_tracking::core::MotionLeg;
 using amigobot_tracking::core::ObstacleMotion;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "amigobot_tracking/core/navigation_field.h"
-#include "amigobot_tracking/core/recommended_law.h"
+#include "amigobot_tracking/core/law/navigation_field.h"
+#include "amigobot_tracking/core/law/recommended_law.h"
 
 using namespace amigobot_tracking::core;
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <random>
 
-#include "amigobot_tracking/core/obstacle_tracker.h"
+#include "amigobot_tracking/core/perception/obstacle_tracker.h"
 
 using namespace amigobot_tracking::core;
 

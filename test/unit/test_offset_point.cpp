@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "amigobot_tracking/core/offset_point.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 
 using namespace amigobot_tracking::core;
 

@@ -14,9 +14,9 @@
 #include <sstream>
 
 #include "amigobot_tracking/aria/client.h"
-#include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/core/obstacle_tracker.h"
-#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/perception/obstacle_tracker.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 #include "amigobot_tracking/localization/localization_config.h"
 #include "amigobot_tracking/ros/driver.h"
 #include "amigobot_tracking/ros/laser_scan.h"

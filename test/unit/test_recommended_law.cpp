@@ -1,4 +1,4 @@
-// The recommended law (core/recommended_law.h) in the offline closed loop, class by class
+// The recommended law (core/law/recommended_law.h) in the offline closed loop, class by class
 // (clutter_scenes.h): no contact, inside the diamond, no widening of rho by the guard, no NaN,
 // no orbit, few side flips, and a true ASE no worse than the paper's law's. The paper's law
 // is run on the same scenes, and where it fails a check the test says so (so the checks can
@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/navigation_field.h"
-#include "amigobot_tracking/core/recommended_law.h"
-#include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/law/navigation_field.h"
+#include "amigobot_tracking/core/law/recommended_law.h"
+#include "amigobot_tracking/core/reference/reference.h"
 #include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"

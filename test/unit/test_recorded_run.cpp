@@ -6,7 +6,7 @@
 
 #include "amigobot_tracking/ros/recorded_run.h"
 
-#include "amigobot_tracking/core/controller_config.h"
+#include "amigobot_tracking/core/law/controller_config.h"
 
 using namespace amigobot_tracking;
 

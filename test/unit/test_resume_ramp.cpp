@@ -1,4 +1,4 @@
-// The resume ramp (core/resume_ramp.h): leaves zero at the robot's accelerations, keeps the
+// The resume ramp (core/supervision/resume_ramp.h): leaves zero at the robot's accelerations, keeps the
 // direction of (v, w) and the diamond, never holds back braking.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <limits>
 #include <random>
 
-#include "amigobot_tracking/core/diamond.h"
-#include "amigobot_tracking/core/resume_ramp.h"
+#include "amigobot_tracking/core/robot/diamond.h"
+#include "amigobot_tracking/core/supervision/resume_ramp.h"
 
 using namespace amigobot_tracking::core;
 

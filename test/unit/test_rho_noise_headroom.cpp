@@ -3,8 +3,8 @@
 // |e| at any height, not only at its floor: one noisy sample can move the measured |e| by it.
 #include <gtest/gtest.h>
 
-#include "amigobot_tracking/core/diamond.h"
-#include "amigobot_tracking/core/recommended_law.h"
+#include "amigobot_tracking/core/robot/diamond.h"
+#include "amigobot_tracking/core/law/recommended_law.h"
 
 using namespace amigobot_tracking;
 

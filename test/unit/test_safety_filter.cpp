@@ -1,4 +1,4 @@
-// The recommended law's safety filter (core/safety_filter.h): the exact small QP against a
+// The recommended law's safety filter (core/law/safety_filter.h): the exact small QP against a
 // brute-force search, its constraints, and the continuity of its command in the geometry.
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "amigobot_tracking/core/actuator_model.h"
-#include "amigobot_tracking/core/safety_filter.h"
+#include "amigobot_tracking/core/robot/actuator_model.h"
+#include "amigobot_tracking/core/law/safety_filter.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,4 +1,4 @@
-// A laser that sees nothing, or too few scans (core/scan_health.h): the blind and rate
+// A laser that sees nothing, or too few scans (core/perception/scan_health.h): the blind and rate
 // judgements on synthetic scans and arrival times.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "amigobot_tracking/core/scan_health.h"
+#include "amigobot_tracking/core/perception/scan_health.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,4 +1,4 @@
-// Laser scan -> bounded disks (core/scan_obstacles.h) on synthetic scans.
+// Laser scan -> bounded disks (core/perception/scan_obstacles.h) on synthetic scans.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <limits>
 #include <vector>
 
-#include "amigobot_tracking/core/avoidance.h"
-#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/core/law/avoidance.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 
 using namespace amigobot_tracking::core;
 

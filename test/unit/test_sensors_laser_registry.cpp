@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 #include "amigobot_tracking/sensors/laser_emulator_server.h"
 #include "amigobot_tracking/sensors/laser_protocol.h"
 #include "amigobot_tracking/sensors/laser_registry.h"

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/controller.h"
+#include "amigobot_tracking/core/law/controller.h"
 #include "amigobot_tracking/sim/metrics.h"
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
 #include "amigobot_tracking/sim/target_sensor.h"
-#include "amigobot_tracking/core/unicycle.h"
+#include "amigobot_tracking/core/robot/unicycle.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"
 #include "amigobot_tracking/sim/simulator.h"

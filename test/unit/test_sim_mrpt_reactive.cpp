@@ -7,7 +7,7 @@
 
 #include <mrpt/core/Clock.h>
 
-#include "amigobot_tracking/core/offset_point.h"
+#include "amigobot_tracking/core/robot/offset_point.h"
 #include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/sim/monte_carlo.h"
 #include "amigobot_tracking/sim/scenario.h"

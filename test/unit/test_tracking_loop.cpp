@@ -1,4 +1,4 @@
-// The tracking loop (core/tracking_loop.h): one call per cycle from plain inputs to the
+// The tracking loop (core/supervision/tracking_loop.h): one call per cycle from plain inputs to the
 // command. A stale pose stops at once, a pending config is used from the next step on, laser
 // disks on the target are dropped (virtual ones never), the resume ramps up from zero, and
 // the simulator's unramped start sends the controller's own command.
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "amigobot_tracking/core/tracking_loop.h"
+#include "amigobot_tracking/core/supervision/tracking_loop.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,4 +1,4 @@
-// The tracking supervisor (core/tracking_supervisor.h) on pure inputs: stale inputs stop at
+// The tracking supervisor (core/supervision/tracking_supervisor.h) on pure inputs: stale inputs stop at
 // once with a reason, fresh inputs restart the controller, the ramp leaves zero after the
 // supervisor's own stops, braking passes, NaN never does.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/tracking_loop.h"
-#include "amigobot_tracking/core/tracking_supervisor.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/supervision/tracking_loop.h"
+#include "amigobot_tracking/core/supervision/tracking_supervisor.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,5 +1,5 @@
-// Poses checked where they enter (core/transform_check.h, core/clock_offset.h,
-// core/transform_intake.h): NaN and non-unit quaternions refused by field, a sample stamped
+// Poses checked where they enter (core/supervision/transform_check.h, core/supervision/clock_offset.h,
+// core/supervision/transform_intake.h): NaN and non-unit quaternions refused by field, a sample stamped
 // ahead dropped without hiding the next good one, a publisher's clock offset named.
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <limits>
 #include <string>
 
-#include "amigobot_tracking/core/clock_offset.h"
-#include "amigobot_tracking/core/transform_check.h"
-#include "amigobot_tracking/core/transform_intake.h"
+#include "amigobot_tracking/core/supervision/clock_offset.h"
+#include "amigobot_tracking/core/supervision/transform_check.h"
+#include "amigobot_tracking/core/supervision/transform_intake.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,9 +1,9 @@
-// Virtual obstacle bookkeeping (core/virtual_obstacles.h).
+// Virtual obstacle bookkeeping (core/perception/virtual_obstacles.h).
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "amigobot_tracking/core/virtual_obstacles.h"
+#include "amigobot_tracking/core/perception/virtual_obstacles.h"
 
 using namespace amigobot_tracking::core;
 

@@ -1,11 +1,11 @@
-// Piecewise-linear waypoint reference (core/waypoint_reference.h).
+// Piecewise-linear waypoint reference (core/reference/waypoint_reference.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "amigobot_tracking/core/reference.h"
-#include "amigobot_tracking/core/waypoint_reference.h"
+#include "amigobot_tracking/core/reference/reference.h"
+#include "amigobot_tracking/core/reference/waypoint_reference.h"
 
 using namespace amigobot_tracking::core;
 

@@ -23,7 +23,7 @@
 #include "amigobot_tracking/aria/sip.h"
 #include "amigobot_tracking/aria/transport.h"
 #include "amigobot_tracking/aria/wheel_command.h"
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 
 namespace amigobot_tracking {
 namespace aria {

@@ -15,9 +15,9 @@
 #include "amigobot_tracking/aria/packet.h"
 #include "amigobot_tracking/aria/robot_params.h"
 #include "amigobot_tracking/aria/sip.h"
-#include "amigobot_tracking/core/actuator_model.h"
-#include "amigobot_tracking/core/field_table.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/robot/actuator_model.h"
+#include "amigobot_tracking/core/support/field_table.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {

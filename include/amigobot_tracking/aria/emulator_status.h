@@ -21,7 +21,7 @@
 #include <thread>
 #include <vector>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/link/emulator_link.h"
 
 namespace amigobot_tracking {

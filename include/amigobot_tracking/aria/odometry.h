@@ -5,7 +5,7 @@
 
 #include "amigobot_tracking/aria/robot_params.h"
 #include "amigobot_tracking/aria/sip.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace aria {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/robot_description.h"
+#include "amigobot_tracking/core/robot/robot_description.h"
 
 namespace amigobot_tracking {
 namespace aria {
@@ -18,7 +18,7 @@ struct SonarPose {
   double yaw = 0.0;  // [rad]
 };
 
-// The robot description (core/robot_description.h: geometry, dynamics, the diamond) plus
+// The robot description (core/robot/robot_description.h: geometry, dynamics, the diamond) plus
 // what only the ARIA driver and the robot emulator need: the protocol's conversion factors,
 // the firmware's watchdog and baud, and the sonar table.
 struct RobotParams : core::RobotDescription {

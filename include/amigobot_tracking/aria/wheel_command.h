@@ -7,8 +7,8 @@
 #include <string>
 
 #include "amigobot_tracking/aria/robot_params.h"
-#include "amigobot_tracking/core/diamond.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/robot/diamond.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace aria {

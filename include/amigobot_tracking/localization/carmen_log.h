@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/localization/range_scan.h"
 
 namespace amigobot_tracking {

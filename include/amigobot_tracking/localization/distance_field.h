@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/localization/occupancy_map.h"
 
 namespace amigobot_tracking {

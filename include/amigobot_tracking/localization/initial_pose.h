@@ -1,7 +1,7 @@
 // Is an operator's initial pose (/initialpose, rviz's "2D Pose Estimate") usable? Refused, by
 // name, when it is in another frame than the map's, has a NaN/inf coordinate, a rotation that
 // is not a unit quaternion (a hand-written message's all-zero default; within 1e-3 of unit it
-// is normalised, core/transform_check.h), or lies far outside the map: beyond its bounds by
+// is normalised, core/supervision/transform_check.h), or lies far outside the map: beyond its bounds by
 // more than kInitialPoseMapMargin (a click just past the edge is a robot at the door). The
 // localisation keeps its current pose then. An empty frame is taken as the map's (rostopic
 // pub leaves it empty).
@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "amigobot_tracking/core/transform_check.h"
+#include "amigobot_tracking/core/supervision/transform_check.h"
 #include "amigobot_tracking/localization/occupancy_map.h"
 
 namespace amigobot_tracking {

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "amigobot_tracking/core/field_table.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/field_table.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace localization {

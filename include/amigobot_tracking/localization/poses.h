@@ -5,7 +5,7 @@
 
 #include <mrpt/poses/CPose2D.h>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace localization {

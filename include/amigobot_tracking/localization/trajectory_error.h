@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace localization {

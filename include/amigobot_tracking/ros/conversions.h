@@ -9,9 +9,9 @@
 #include <sensor_msgs/LaserScan.h>
 
 #include "amigobot_tracking/TrackingState.h"
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/scan_obstacles.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

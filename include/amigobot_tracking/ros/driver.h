@@ -20,7 +20,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "amigobot_tracking/aria/client.h"
-#include "amigobot_tracking/core/command_lock.h"
+#include "amigobot_tracking/core/supervision/command_lock.h"
 #include "amigobot_tracking/ros/checked_reconfigure.h"
 #include "amigobot_tracking/ros/driver_state_topics.h"
 #include "amigobot_tracking/ros/master_watch.h"
@@ -45,7 +45,7 @@ struct DriverParams {
   double battery_low_voltage = 11.0;  // [V] diagnostics warn below this
   double sonar_min_range = 0.1;       // [m] sensor_msgs/Range min_range
   // The node whose cmd_vel is driven (its caller id, e.g. "/amigobot_manager"); "": the first
-  // publisher, until it has been silent for kCommandLockRelease (core/command_lock.h).
+  // publisher, until it has been silent for kCommandLockRelease (core/supervision/command_lock.h).
   std::string cmd_vel_source;
   // [s] ROS master unreachable this long: stop, motors disabled until enable_motors.
   double master_timeout = 0.5;

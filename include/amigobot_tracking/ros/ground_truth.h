@@ -8,8 +8,8 @@
 
 #include <ros/node_handle.h>
 
-#include "amigobot_tracking/core/field_table.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/field_table.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

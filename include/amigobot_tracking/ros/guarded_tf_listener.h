@@ -21,7 +21,7 @@
 #include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/buffer.h>
 
-#include "amigobot_tracking/core/transform_intake.h"
+#include "amigobot_tracking/core/supervision/transform_intake.h"
 #include "amigobot_tracking/ros/refusal_log.h"
 
 namespace amigobot_tracking {

@@ -1,7 +1,7 @@
 // Laser scans -> obstacle disks in the global frame for the tracking node. `scan` arrives
 // through a tf2 MessageFilter (a scan is used only once its transform is known); the
 // callback only stores the latest scan under this class's mutex, and the control cycle turns
-// it into disks (core/scan_obstacles.h), tracked across scans for moving_obstacles.
+// it into disks (core/perception/scan_obstacles.h), tracked across scans for moving_obstacles.
 #pragma once
 
 #include <memory>
@@ -15,16 +15,16 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
 
-#include "amigobot_tracking/core/input_age.h"
-#include "amigobot_tracking/core/obstacle_tracker.h"
-#include "amigobot_tracking/core/scan_health.h"
-#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/core/supervision/input_age.h"
+#include "amigobot_tracking/core/perception/obstacle_tracker.h"
+#include "amigobot_tracking/core/perception/scan_health.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 #include "amigobot_tracking/ros/refusal_log.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {
 
-// Is the laser still seeing (core/scan_health.h)?
+// Is the laser still seeing (core/perception/scan_health.h)?
 struct LaserHealthConfig {
   bool open_space = false;  // a scan with no return is an empty room, not a blind laser
   core::ScanRateConfig rate;
@@ -49,7 +49,7 @@ class LaserObstacles {
   // last scan turned into disks, -1 when none was yet. A bad scan keeps the previous disks
   // and does not count as fresh: it must not hide a blind laser; a scan that sees nothing
   // is refused so too, unless open_space. The age is taken on this node's clock
-  // (core/input_age.h): +inf for a scan stamped 0 or in the future.
+  // (core/supervision/input_age.h): +inf for a scan stamped 0 or in the future.
   double update(const ros::Time& now);
   // Why the scans cannot be trusted now (their stamp, or too few of them: the rate), or "".
   const std::string& scanProblem() const { return scan_problem_; }

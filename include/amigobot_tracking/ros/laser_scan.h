@@ -10,7 +10,7 @@
 #include <ros/node_handle.h>
 #include <sensor_msgs/LaserScan.h>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 #include "amigobot_tracking/sensors/laser_driver.h"
 
 namespace amigobot_tracking {

@@ -12,7 +12,7 @@
 #include <ros/time.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace tf2 {
 class BufferCore;

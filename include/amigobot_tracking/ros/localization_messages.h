@@ -11,7 +11,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <sensor_msgs/LaserScan.h>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/localization/occupancy_map.h"
 #include "amigobot_tracking/localization/range_scan.h"
 

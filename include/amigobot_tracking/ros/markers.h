@@ -7,8 +7,8 @@
 #include <ros/time.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/virtual_obstacles.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/perception/virtual_obstacles.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

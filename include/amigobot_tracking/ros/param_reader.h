@@ -1,4 +1,4 @@
-// The package's one reader of ROS parameters: a field table (core/field_table.h) read from a
+// The package's one reader of ROS parameters: a field table (core/support/field_table.h) read from a
 // private NodeHandle, nested keys as nested namespaces ("estimator/a1" = ~estimator/a1).
 // Type-checked (an integer is accepted for a real; any other mismatch is an error, never a
 // silent default), every value logged with its unit and whether it is the default, and the
@@ -10,7 +10,7 @@
 
 #include <ros/node_handle.h>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

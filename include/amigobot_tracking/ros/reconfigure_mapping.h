@@ -9,7 +9,7 @@
 
 #include <dynamic_reconfigure/Config.h>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

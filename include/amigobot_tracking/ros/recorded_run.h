@@ -11,8 +11,8 @@
 
 #include "amigobot_tracking/TrackingState.h"
 #include "amigobot_tracking/sim/metrics.h"
-#include "amigobot_tracking/core/robot_description.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/robot/robot_description.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/sim/json.h"
 #include "amigobot_tracking/sim/simulator.h"
 #include "amigobot_tracking/sim/tracking_verdict.h"

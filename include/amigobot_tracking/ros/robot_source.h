@@ -7,7 +7,7 @@
 #include <string>
 
 #include "amigobot_tracking/aria/robot_params.h"
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

@@ -10,8 +10,8 @@
 #include <ros/node_handle.h>
 #include <sensor_msgs/LaserScan.h>
 
-#include "amigobot_tracking/core/field_table.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/field_table.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {

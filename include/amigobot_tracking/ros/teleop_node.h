@@ -6,7 +6,7 @@
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

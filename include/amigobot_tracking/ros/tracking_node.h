@@ -22,8 +22,8 @@
 
 #include "amigobot_tracking/LocalizationStatus.h"
 #include "amigobot_tracking/TrackingConfig.h"
-#include "amigobot_tracking/core/input_age.h"
-#include "amigobot_tracking/core/tracking_loop.h"
+#include "amigobot_tracking/core/supervision/input_age.h"
+#include "amigobot_tracking/core/supervision/tracking_loop.h"
 #include "amigobot_tracking/ros/checked_reconfigure.h"
 #include "amigobot_tracking/ros/guarded_tf_listener.h"
 #include "amigobot_tracking/ros/laser_obstacles.h"
@@ -57,9 +57,9 @@ class TrackingNode {
   struct Lookup {
     bool ok = false;
     geometry_msgs::TransformStamped transform;
-    double age = 0.0;     // [s] on this node's clock (core/input_age.h)
+    double age = 0.0;     // [s] on this node's clock (core/supervision/input_age.h)
     std::string problem;  // why the stamp is not trusted, or ""
-    std::string clock;    // the publisher's clock is off (core/clock_offset.h), or ""
+    std::string clock;    // the publisher's clock is off (core/supervision/clock_offset.h), or ""
     std::string error;
   };
   // `age` tracks the stream's arrivals (a frozen transform ages even when stamped ahead).
@@ -109,7 +109,7 @@ class TrackingNode {
   ros::Time epoch_;
   core::ControllerOutput last_output_;
   double last_pose_age_ = -1.0, last_target_age_ = -1.0, scan_age_ = -1.0;  // [s], -1: none
-  std::string clock_warning_;  // a pose or target publisher's clock is off (core/clock_offset.h), or ""
+  std::string clock_warning_;  // a pose or target publisher's clock is off (core/supervision/clock_offset.h), or ""
   core::InputAgeTracker pose_age_, target_age_;
   TrackingStatistics stats_;
   std::unique_ptr<RateMonitor> control_rate_, cmd_vel_rate_;

@@ -9,11 +9,11 @@
 
 #include <ros/node_handle.h>
 
-#include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/core/field_table.h"
-#include "amigobot_tracking/core/obstacle_tracker.h"
-#include "amigobot_tracking/core/scan_obstacles.h"
-#include "amigobot_tracking/core/virtual_obstacles.h"
+#include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/support/field_table.h"
+#include "amigobot_tracking/core/perception/obstacle_tracker.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
+#include "amigobot_tracking/core/perception/virtual_obstacles.h"
 #include "amigobot_tracking/ros/robot_source.h"
 
 namespace amigobot_tracking {
@@ -30,7 +30,7 @@ struct TrackingNodeConfig {
   double scan_timeout = 0.5;
   double future_stamp_tolerance = 0.1;  // [s] a stamp further ahead of the receiver's clock is stale
   bool require_scan = true;
-  // A laser that sees nothing, or fewer scans than it promises (core/scan_health.h).
+  // A laser that sees nothing, or fewer scans than it promises (core/perception/scan_health.h).
   bool open_space = false;              // true: a scan without any return is an empty room, not a blind laser
   double min_scan_rate_fraction = 0.7;  // [-] measured / promised scan rate below this stops (0 = off)
   double expected_scan_rate = 0.0;      // [Hz] > 0: the laser's rate, instead of each scan's scan_time
@@ -41,7 +41,7 @@ struct TrackingNodeConfig {
   // w_max default to and never exceed, and the ceiling the supervisor explains motion with.
   aria::RobotParams description;
   double target_exclusion_radius = 0.0;
-  // Resume ramp (core/resume_ramp.h): after a zero command of the nodelet's own (inputs lost,
+  // Resume ramp (core/supervision/resume_ramp.h): after a zero command of the nodelet's own (inputs lost,
   // disabled, a refused step) the command grows by at most these per second; stops are
   // immediate. Defaults: the AmigoBot firmware's accelerations (config/robots/amigo.yaml).
   double resume_v_accel = 0.3;

@@ -8,7 +8,7 @@
 
 #include <nav_msgs/Path.h>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

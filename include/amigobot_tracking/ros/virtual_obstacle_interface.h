@@ -19,7 +19,7 @@
 
 #include "amigobot_tracking/RemoveVirtualObstacle.h"
 #include "amigobot_tracking/VirtualObstacle.h"
-#include "amigobot_tracking/core/virtual_obstacles.h"
+#include "amigobot_tracking/core/perception/virtual_obstacles.h"
 
 namespace amigobot_tracking {
 namespace ros_layer {

@@ -6,7 +6,7 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 #include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {

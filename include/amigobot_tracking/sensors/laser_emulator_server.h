@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/link/emulator_link.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 #include "amigobot_tracking/sensors/laser_session.h"

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "amigobot_tracking/core/scan_obstacles.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 
 namespace amigobot_tracking {
 namespace sensors {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_driver.h"
 #include "amigobot_tracking/sensors/laser_model.h"

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 #include "amigobot_tracking/sensors/laser_session.h"
 #include "amigobot_tracking/world/world.h"

@@ -1,4 +1,4 @@
-// Identifies the actuator model (core/actuator_model.h) from a recorded run: the commands as
+// Identifies the actuator model (core/robot/actuator_model.h) from a recorded run: the commands as
 // the base received them (cmd_vel) and the velocities it reported (odometry twist). Replays
 // the commands through the model and minimises the squared velocity error over the ramps,
 // the latency and the wheel-speed limit. The cycle is the odometry's period (one report per

@@ -9,16 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/actuator_limits.h"
-#include "amigobot_tracking/core/actuator_model.h"
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/obstacle_motion.h"
+#include "amigobot_tracking/core/robot/actuator_limits.h"
+#include "amigobot_tracking/core/robot/actuator_model.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/perception/obstacle_motion.h"
 #include "amigobot_tracking/sim/metrics.h"
-#include "amigobot_tracking/core/reference.h"
-#include "amigobot_tracking/core/resume_ramp.h"
+#include "amigobot_tracking/core/reference/reference.h"
+#include "amigobot_tracking/core/supervision/resume_ramp.h"
 #include "amigobot_tracking/sim/step_size.h"
 #include "amigobot_tracking/sim/target_sensor.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace sim {
@@ -52,7 +52,7 @@ struct BaselineParams {
   double kalman_measurement_std = 0.01; // [m] measurement noise of kKalman (> 0)
 };
 
-// What the robot's base does to the law's command (core/actuator_model.h).
+// What the robot's base does to the law's command (core/robot/actuator_model.h).
 struct RobotDynamics {
   // true: the command moves the body at once (the paper's unicycle; Section 5 stays exact).
   // A setup built in code is ideal unless it says otherwise; a scenario file is `firmware`
@@ -67,7 +67,7 @@ struct ClosedLoopSetup {
   core::Pose2 initial_pose;
   RobotDynamics dynamics;        // the base between the law's command and the body
   std::vector<core::Disk> obstacles;
-  // How the obstacles move (core/obstacle_motion.h), one per obstacle; empty: all static. Each
+  // How the obstacles move (core/perception/obstacle_motion.h), one per obstacle; empty: all static. Each
   // path is walked from its obstacle's centre: centre(t) = centre + positionAt(t) - start (a
   // scenario sets start = centre); the controller is given Disk::velocity = velocityAt(t)
   // (ground truth; used with moving_obstacles).
@@ -81,7 +81,7 @@ struct ClosedLoopSetup {
   Integrator integrator = Integrator::kExplicit;
   TargetSensorConfig sensor;     // noise, delay, jumps (its sample_period is replaced by the one above)
   PoseSensorConfig pose_sensor;  // how late and how often the robot's own pose arrives
-  // Which law closes the loop: a name of the law registry (core/law_registry.h).
+  // Which law closes the loop: a name of the law registry (core/law/law_registry.h).
   std::string law = "paper";
   // The robot's laws (LawEntry::on_robot) run core::TrackingLoop (the nodelet's cycle) with inputs
   // that never go stale. resume_at_start: start as the robot resumes (controller restart,

@@ -1,4 +1,4 @@
-// JSON of a config struct driven by its field table (core/field_table.h): one member per row
+// JSON of a config struct driven by its field table (core/support/field_table.h): one member per row
 // under the row's key, '/' in a key nesting objects ("estimator/a1" -> {"estimator": {"a1"}}).
 #pragma once
 
@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/support/field_table.h"
 
 namespace amigobot_tracking {
 namespace core {

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "amigobot_tracking/sim/metrics.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace sim {

@@ -43,7 +43,7 @@
 
 #include <Eigen/Core>
 
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace sim {

@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 
 #include "amigobot_tracking/sim/closed_loop.h"
-#include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/reference/reference.h"
 
 namespace amigobot_tracking {
 namespace sim {

@@ -7,7 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "amigobot_tracking/core/field_table.h"
+#include "amigobot_tracking/core/support/field_table.h"
 #include "amigobot_tracking/sim/scenario.h"
 
 namespace amigobot_tracking {

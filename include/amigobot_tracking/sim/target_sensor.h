@@ -11,8 +11,8 @@
 
 #include <Eigen/Core>
 
-#include "amigobot_tracking/core/controller.h"
-#include "amigobot_tracking/core/reference.h"
+#include "amigobot_tracking/core/law/controller.h"
+#include "amigobot_tracking/core/reference/reference.h"
 
 namespace amigobot_tracking {
 namespace sim {

@@ -14,8 +14,8 @@
 #include <memory>
 #include <string>
 
-#include "amigobot_tracking/core/controller_config.h"
-#include "amigobot_tracking/core/law_registry.h"
+#include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/law/law_registry.h"
 
 namespace amigobot_tracking {
 namespace sim_mrpt {

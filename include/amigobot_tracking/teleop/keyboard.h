@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "amigobot_tracking/core/field_table.h"
-#include "amigobot_tracking/core/robot_description.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/support/field_table.h"
+#include "amigobot_tracking/core/robot/robot_description.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace teleop {

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "amigobot_tracking/core/scan_obstacles.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
+#include "amigobot_tracking/core/support/types.h"
 #include "amigobot_tracking/world/world.h"
 
 namespace amigobot_tracking {

@@ -29,8 +29,8 @@
 #include <utility>
 #include <vector>
 
-#include "amigobot_tracking/core/obstacle_motion.h"
-#include "amigobot_tracking/core/types.h"
+#include "amigobot_tracking/core/perception/obstacle_motion.h"
+#include "amigobot_tracking/core/support/types.h"
 
 namespace amigobot_tracking {
 namespace world {
@@ -79,7 +79,7 @@ inline World disksOnly(std::vector<core::Disk> disks) {
 // Reads a world file. Throws std::runtime_error "FILE:LINE: KEY: what is wrong" for an
 // unreadable file, a malformed entry or an unknown key. Only a regular file up to
 // core::kMaxConfigFileBytes is read, and a tree whose aliases expand past core::kMaxYamlNodes
-// is refused (core/input_file.h).
+// is refused (core/support/input_file.h).
 World loadWorld(const std::string& path);
 // The same from the file's text; `path` names it in the errors.
 World parseWorld(const std::string& text, const std::string& path);

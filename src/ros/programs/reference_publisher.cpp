@@ -1,5 +1,5 @@
 // reference_publisher: broadcasts tf global_frame -> target_frame moving along a reference
-// (rose, circle, spline, waypoints; core/reference.h, core/waypoint_reference.h), so a
+// (rose, circle, spline, waypoints; core/reference/reference.h, core/reference/waypoint_reference.h), so a
 // robot can track a virtual target in an empty room. The frame's x axis points along the
 // velocity. Before start_delay the target waits at its initial point.
 //
@@ -19,8 +19,8 @@
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 
-#include "amigobot_tracking/core/reference.h"
-#include "amigobot_tracking/core/waypoint_reference.h"
+#include "amigobot_tracking/core/reference/reference.h"
+#include "amigobot_tracking/core/reference/waypoint_reference.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/node_command_line.h"

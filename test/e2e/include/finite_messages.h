@@ -6,7 +6,7 @@
 //     header numbers (angles, times, range limits) and intensities must be finite.
 //   - sensor_msgs/Range range: +inf / -inf, REP 117 (the sonar: no echo is +inf).
 //   - amigobot_tracking/TrackingState min_clearance, min_clearance_body: +inf ("no obstacle",
-//     as the message documents); pose_age, target_age: +inf (a stamp not trusted, core/input_age.h).
+//     as the message documents); pose_age, target_age: +inf (a stamp not trusted, core/supervision/input_age.h).
 //   - diagnostic_msgs/DiagnosticArray values: text; one that reads as a number must not be NaN
 //     (NaN) or -inf; +inf is allowed (an age of a stamp not trusted, as in TrackingState).
 // Everything else numeric (tf, Twist, Odometry, poses, markers, paths) must be finite.

@@ -1,0 +1,68 @@
+// Velocity of detected obstacles by associating them across scans (beyond the paper).
+//
+// Each scan's disks are matched one-to-one to the tracks predicted to the scan's stamp
+// (constant velocity), greedily by increasing distance within a gate, so two obstacles
+// that cross keep their ids: a detection is never given to two tracks, and a track that
+// finds no detection (e.g. the two blobs merged for a scan) coasts on its velocity until
+// `forget_after`. Matched tracks update with an alpha-beta filter. Velocities are reported
+// only after `min_hits` matches and below `still_speed` they are zero, so static clutter
+// (wall segments that jitter between scans) stays static.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "amigobot_tracking/core/support/field_table.h"
+#include "amigobot_tracking/core/support/types.h"
+
+namespace amigobot_tracking {
+namespace core {
+
+struct ObstacleTrackerConfig {
+  double gate = 0.4;            // [m] largest distance between prediction and detection
+  double position_gain = 0.6;   // alpha [-], (0, 1]
+  double velocity_gain = 0.3;   // beta [-], (0, 2)
+  double max_speed = 2.0;       // [m/s] velocities are clamped to this
+  double still_speed = 0.05;    // [m/s] slower tracks report zero velocity
+  double forget_after = 0.5;    // [s] a track unseen this long is dropped
+  int min_hits = 3;             // matches before a velocity is reported
+
+  std::string validate() const;  // empty when valid, else "key: reason" for the first bad field
+};
+
+// Its fields (ROS parameters under ~obstacle_tracker/).
+const FieldTable<ObstacleTrackerConfig>& obstacleTrackerFields();
+
+struct TrackedObstacle {
+  std::uint32_t id = 0;
+  Disk disk;                    // centre, radius and the filtered velocity
+  double last_seen = 0.0;       // [s]
+  int hits = 0;
+};
+
+class ObstacleTracker {
+ public:
+  explicit ObstacleTracker(const ObstacleTrackerConfig& config = ObstacleTrackerConfig());
+
+  // Feeds one scan's disks taken at `stamp` [s]; a stamp not after the last one resets the
+  // tracker (time jumped back, e.g. a bag restarted).
+  void update(double stamp, const std::vector<Disk>& detections);
+  // Live tracks (coasting ones included), positions predicted to `stamp`, velocities as
+  // reported (zero until trusted).
+  std::vector<Disk> obstaclesAt(double stamp) const;
+  const std::vector<TrackedObstacle>& tracks() const { return tracks_; }
+  void clear();
+
+ private:
+  Eigen::Vector2d reportedVelocity(const TrackedObstacle& track) const;
+
+  ObstacleTrackerConfig config_;
+  std::vector<TrackedObstacle> tracks_;
+  double last_stamp_ = 0.0;
+  bool started_ = false;
+  std::uint32_t next_id_ = 1;
+};
+
+}  // namespace core
+}  // namespace amigobot_tracking
