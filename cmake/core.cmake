@@ -35,6 +35,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/perception/body_intrusion.cpp
   src/core/supervision/tracking_loop.cpp
   src/core/reference/waypoint_reference.cpp
+  src/core/reference/reference_spec.cpp
   src/core/supervision/transform_check.cpp
   src/core/supervision/clock_offset.cpp
   src/core/supervision/transform_intake.cpp
@@ -46,7 +47,7 @@ target_link_libraries(amigobot_tracking_core PUBLIC Eigen3::Eigen)
 
 if(CATKIN_ENABLE_TESTING)
   foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance disk_clusters band_implicit controller_config controller_guards
-          obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference input_age command_lock body_intrusion safety_filter tracking_loop
+          obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference reference_spec input_age command_lock body_intrusion safety_filter tracking_loop
           rho_noise_headroom transform_intake scan_health obstacle_motion actuator_model law_registry
           obstacle_paths)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)

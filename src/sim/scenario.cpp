@@ -112,13 +112,13 @@ void parseController(Section s, sim::ClosedLoopSetup& setup) {
   s.finish();
 }
 
-ReferenceSpec parseReference(Section s) {
-  ReferenceSpec r;
+core::ReferenceSpec parseReference(Section s) {
+  core::ReferenceSpec r;
   r.type = s.text("type");
   if (r.type == "rose") {
     r.amplitude = positive(s, "amplitude", s.number("amplitude"));
     r.k = positive(s, "k", s.number("k"));
-    r.time_scale = positive(s, "time_scale", s.number("time_scale", 1.0));
+    r.period_scale = positive(s, "period_scale", s.number("period_scale", 1.0));
   } else if (r.type == "circle") {
     r.center = s.point("center");
     r.radius = positive(s, "radius", s.number("radius"));
@@ -251,10 +251,7 @@ std::string stem(const std::string& path) {
 }  // namespace
 
 std::unique_ptr<core::Reference> Scenario::makeReference() const {
-  const ReferenceSpec& r = reference;
-  if (r.type == "rose") return std::make_unique<core::RoseReference>(r.amplitude, r.k, r.time_scale);
-  if (r.type == "circle") return std::make_unique<core::CircleReference>(r.center, r.radius, r.period);
-  return std::make_unique<core::SplineReference>(r.waypoints, r.duration);
+  return core::makeReference(reference);
 }
 
 

@@ -15,7 +15,7 @@ const std::string kMinimum = R"(
 robot:      {radius: 0.2, offset: 0.3, v_max: 5.0, w_max: 5.0, initial_pose: [2.0, -0.5, 1.5708]}
 controller: {k_d: 3, k_o: 1, k_r: 0.5, lambda: 5, rho_inf: 0.1, rho_0: 1.84, delta: 0.016,
              a1: 1, a2: 1, lambda_o: 30, rho_o: 0.01, rho_o0: 1.0, body_safe: false}
-reference:  {type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}
+reference:  {type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}
 obstacles:  [{center: [1.5, 0.0], radius: 0.15}]
 simulation: {duration: 6.283}
 )";
@@ -59,12 +59,12 @@ TEST(SimScenario, AcceptsTheIssueMinimumExactly) {
 
 TEST(SimScenario, AcceptsCircleAndSplineReferences) {
   const auto circle = sim::parseScenario(
-      replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}", "{type: circle, center: [0, 0], radius: 2, period: 20}"),
+      replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}", "{type: circle, center: [0, 0], radius: 2, period: 20}"),
       "c.yaml");
   EXPECT_EQ(circle.reference.type, "circle");
   EXPECT_NEAR(circle.makeReference()->at(0.0).position.x(), 2.0, 1e-12);
   const auto spline = sim::parseScenario(
-      replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}",
+      replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}",
                "{type: spline, waypoints: [[3, 0], [2, 1], [0, 2]], duration: 60}"),
       "s.yaml");
   ASSERT_EQ(spline.reference.waypoints.size(), 3u);
@@ -74,7 +74,7 @@ TEST(SimScenario, AcceptsCircleAndSplineReferences) {
 TEST(SimScenario, RefusesASplineStepNearZero) {
   // A step of 1e-320 m made the knot spacing underflow: std::invalid_argument escaped
   // without the file's name.
-  const std::string rose = "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}";
+  const std::string rose = "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}";
   expectRefused(replaced(kMinimum, rose, "{type: spline, waypoints: [[3, 0], [3, 1e-320], [0, 2]], duration: 60}"),
                 "reference.waypoints[1]: within 1 mm of the previous waypoint");
   expectRefused(replaced(kMinimum, rose, "{type: spline, waypoints: [[3, 0], [3, 0.0005], [0, 2]], duration: 60}"),
@@ -150,6 +150,8 @@ TEST(SimScenario, RefusesWrongTypes) {
 
 TEST(SimScenario, RefusesUnknownReferenceTypeAndUnknownKeys) {
   expectRefused(replaced(kMinimum, "type: rose", "type: lemniscate"), "reference.type");
+  // The rose's own time scale is period_scale, as reference_publisher names it; the old key is refused.
+  expectRefused(replaced(kMinimum, "period_scale: 1.0", "time_scale: 1.0"), "reference.time_scale");
   expectRefused(replaced(kMinimum, "k_o: 1", "k_o: 1, k_oo: 2"), "controller.k_oo");
   expectRefused(replaced(kMinimum, "simulation:", "simulaton: {duration: 1}\nsimulation:"), "simulaton");
   expectRefused(replaced(kMinimum, "body_safe: false}", "body_safe: false, variant: pid}"), "controller.variant");
@@ -168,10 +170,10 @@ TEST(SimScenario, RefusesOutOfRangeValues) {
   expectRefused(replaced(kMinimum, "k_r: 0.5", "k_r: -1"), "controller.k_r");
   expectRefused(replaced(kMinimum, "lambda_o: 30", "lambda_o: 0"), "controller.lambda_o");
   expectRefused(replaced(kMinimum, "{duration: 6.283}", "{duration: -1}"), "simulation.duration");
-  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}",
+  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}",
                          "{type: spline, waypoints: [[0, 0]], duration: 10}"),
                 "reference.waypoints");
-  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, time_scale: 1.0}",
+  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}",
                          "{type: spline, waypoints: [[3, 0], [3, 0]], duration: 10}"),
                 "reference.waypoints[1]");
   expectRefused(kMinimum + "target: {delay: -0.1}\n", "target.delay");

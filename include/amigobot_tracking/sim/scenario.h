@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 
 #include "amigobot_tracking/sim/closed_loop.h"
-#include "amigobot_tracking/core/reference/reference.h"
+#include "amigobot_tracking/core/reference/reference_spec.h"
 
 namespace amigobot_tracking {
 namespace sim {
@@ -23,20 +23,12 @@ class ScenarioError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct ReferenceSpec {
-  std::string type;  // rose | circle | spline
-  double amplitude = 0.0, k = 0.0, time_scale = 1.0;        // rose
-  Eigen::Vector2d center = Eigen::Vector2d::Zero();          // circle
-  double radius = 0.0, period = 0.0;                         // circle
-  std::vector<Eigen::Vector2d> waypoints;                    // spline
-  double duration = 0.0;                                     // spline
-};
 
 struct Scenario {
   std::string file;   // where it came from (for messages)
   std::string name;   // file stem, or simulation.name
   sim::ClosedLoopSetup setup;
-  ReferenceSpec reference;
+  core::ReferenceSpec reference;  // the one reference description (reference_publisher's too)
   double log_period = 0.0;  // [s] CSV row spacing; 0 = every step
   std::string dynamics = "firmware";  // robot.dynamics: firmware | ideal (setup.dynamics.ideal)
   std::string robot_description;      // robot.description: a robot YAML for the firmware's values

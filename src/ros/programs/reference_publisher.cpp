@@ -1,5 +1,5 @@
 // reference_publisher: broadcasts tf global_frame -> target_frame moving along a reference
-// (rose, circle, spline, waypoints; core/reference/reference.h, core/reference/waypoint_reference.h), so a
+// (rose, circle, spline, waypoints; core/reference/reference_spec.h), so a
 // robot can track a virtual target in an empty room. The frame's x axis points along the
 // velocity. Before start_delay the target waits at its initial point.
 //
@@ -19,8 +19,7 @@
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 
-#include "amigobot_tracking/core/reference/reference.h"
-#include "amigobot_tracking/core/reference/waypoint_reference.h"
+#include "amigobot_tracking/core/reference/reference_spec.h"
 #include "amigobot_tracking/ros/conversions.h"
 #include "amigobot_tracking/ros/master_watch.h"
 #include "amigobot_tracking/ros/node_command_line.h"
@@ -66,55 +65,42 @@ std::vector<Eigen::Vector2d> readWaypoints(const ros::NodeHandle& pnh, const std
 }
 
 // The plain parameters; origin, reference/center and reference/waypoints are lists (above).
+// The curve's keys are core::referenceFields() under reference/ (the simulator's scenarios
+// read the same spec).
 struct PublisherConfig {
   std::string global_frame = "map";
   std::string target_frame = "target";
   double rate = 50.0;
   double time_scale = 1.0;
   double start_delay = 0.0;
-  std::string type = "circle";
-  double amplitude = 1.0, k = 3.0, period_scale = 1.0;  // rose
-  double radius = 1.0, period = 30.0;                   // circle
-  double duration = 60.0;                               // spline
-  double speed = 0.2;                                   // waypoints
-  bool loop = false;                                    // waypoints
+  amigobot_tracking::core::ReferenceSpec reference;
 
   std::string validate() const { return amigobot_tracking::core::checkFields(fields(), *this); }
 
   static const amigobot_tracking::core::FieldTable<PublisherConfig>& fields() {
     using P = PublisherConfig;
     using namespace amigobot_tracking::core;
-    static const FieldTable<P> table = {
-        field("global_frame", &P::global_frame, "-", "frame the target moves in"),
-        field("target_frame", &P::target_frame, "-", "the broadcast frame"),
-        field("rate", &P::rate, "Hz", "tf broadcasts per second", positive()),
-        field("time_scale", &P::time_scale, "-", "> 1 runs the reference slower", positive()),
-        field("start_delay", &P::start_delay, "s", "the target waits at its first point this long", nonNegative()),
-        field("reference/type", &P::type, "-", "the curve", oneOf({"rose", "circle", "spline", "waypoints"})),
-        field("reference/amplitude", &P::amplitude, "m", "rose: amplitude", positive()),
-        field("reference/k", &P::k, "-", "rose: petal factor", positive()),
-        field("reference/period_scale", &P::period_scale, "s/rad", "rose: its own time scale", positive()),
-        field("reference/radius", &P::radius, "m", "circle: radius", boundedRadius()),
-        field("reference/period", &P::period, "s", "circle: period", positive()),
-        field("reference/duration", &P::duration, "s", "spline: duration", positive()),
-        field("reference/speed", &P::speed, "m/s", "waypoints: speed", positive()),
-        field("reference/loop", &P::loop, "-", "waypoints: start again after the last"),
-    };
+    static const FieldTable<P> table = [] {
+      FieldTable<P> t = {
+          field("global_frame", &P::global_frame, "-", "frame the target moves in"),
+          field("target_frame", &P::target_frame, "-", "the broadcast frame"),
+          field("rate", &P::rate, "Hz", "tf broadcasts per second", positive()),
+          field("time_scale", &P::time_scale, "-", "> 1 runs the reference slower", positive()),
+          field("start_delay", &P::start_delay, "s", "the target waits at its first point this long", nonNegative()),
+      };
+      include(&t, "reference/", &P::reference, referenceFields());
+      return t;
+    }();
     return table;
   }
 };
 
-std::unique_ptr<Reference> makeReference(const ros::NodeHandle& pnh, const PublisherConfig& c) {
-  using namespace amigobot_tracking::core;
+std::unique_ptr<Reference> makeReference(const ros::NodeHandle& pnh, PublisherConfig c) {
   try {
-    if (c.type == "rose") return std::make_unique<RoseReference>(c.amplitude, c.k, c.period_scale);
-    if (c.type == "circle") {
-      Eigen::Vector2d center(0.0, 0.0);
-      readPoint(pnh, "reference/center", &center);
-      return std::make_unique<CircleReference>(center, c.radius, c.period);
-    }
-    if (c.type == "spline") return std::make_unique<SplineReference>(readWaypoints(pnh, "reference/waypoints"), c.duration);
-    return std::make_unique<WaypointReference>(readWaypoints(pnh, "reference/waypoints"), c.speed, c.loop);
+    if (c.reference.type == "circle") readPoint(pnh, "reference/center", &c.reference.center);
+    if (c.reference.type == "spline" || c.reference.type == "waypoints")
+      c.reference.waypoints = readWaypoints(pnh, "reference/waypoints");
+    return amigobot_tracking::core::makeReference(c.reference);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string(e.what()).find("parameter") == 0
                                     ? e.what()
