@@ -140,6 +140,13 @@ core::ReferenceSpec parseReference(Section s) {
   } else {
     fail(s.file(), s.node()["type"], s.key("type"), "unknown reference type '" + r.type + "' (rose, circle, spline)");
   }
+  // The bounds the factory holds every spec to (core::referenceFields(), e.g. radius <= 100 m),
+  // checked here so a refusal names this file and key before anything runs.
+  const std::string problem = core::checkFields(core::referenceFields(), r);
+  if (!problem.empty()) {
+    const std::string key = problem.substr(0, problem.find(':'));
+    fail(s.file(), s.node()[key], s.key(key), problem.substr(key.size() + 2));
+  }
   s.finish();
   return r;
 }

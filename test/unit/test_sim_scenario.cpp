@@ -152,6 +152,10 @@ TEST(SimScenario, RefusesUnknownReferenceTypeAndUnknownKeys) {
   expectRefused(replaced(kMinimum, "type: rose", "type: lemniscate"), "reference.type");
   // The rose's own time scale is period_scale, as reference_publisher names it; the old key is refused.
   expectRefused(replaced(kMinimum, "period_scale: 1.0", "time_scale: 1.0"), "reference.time_scale");
+  // The reference factory's own bounds are checked at parse time, naming the key.
+  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}",
+                         "{type: circle, center: [0, 0], radius: 200, period: 20}"),
+                "reference.radius");
   expectRefused(replaced(kMinimum, "k_o: 1", "k_o: 1, k_oo: 2"), "controller.k_oo");
   expectRefused(replaced(kMinimum, "simulation:", "simulaton: {duration: 1}\nsimulation:"), "simulaton");
   expectRefused(replaced(kMinimum, "body_safe: false}", "body_safe: false, variant: pid}"), "controller.variant");
