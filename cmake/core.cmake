@@ -17,6 +17,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/law/navigation_field.cpp
   src/core/law/safety_filter.cpp
   src/core/law/recommended_law.cpp
+  src/core/law/yield_rollout.cpp
   src/core/law/controller_config.cpp
   src/core/support/field_table.cpp
   src/core/robot/robot_description.cpp
@@ -49,7 +50,7 @@ if(CATKIN_ENABLE_TESTING)
   foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance disk_clusters band_implicit controller_config controller_guards
           obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference reference_spec input_age command_lock body_intrusion safety_filter tracking_loop
           rho_noise_headroom transform_intake scan_health obstacle_motion actuator_model law_registry
-          obstacle_paths)
+          obstacle_paths yield_rollout)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_core)
   endforeach()

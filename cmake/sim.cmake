@@ -29,7 +29,7 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(test_${unit} amigobot_tracking_sim)
   endforeach()
   # Scenario files and whole simulated runs read the shipped config/scenarios.
-  foreach(unit sim_scenario sim_closed_loop sim_extensions recommended_law field_lookahead command_rate_box gain_tuner sim_dynamics)
+  foreach(unit sim_scenario sim_closed_loop sim_extensions recommended_law field_lookahead command_rate_box gain_tuner sim_dynamics yield_to_people)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_sim)
     target_compile_definitions(test_${unit} PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

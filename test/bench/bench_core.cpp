@@ -10,6 +10,7 @@
 #include "amigobot_tracking/sim/closed_loop.h"
 #include "amigobot_tracking/core/law/controller.h"
 #include "amigobot_tracking/core/law/estimator.h"
+#include "amigobot_tracking/core/law/yield_rollout.h"
 #include "amigobot_tracking/core/perception/scan_obstacles.h"
 #include "amigobot_tracking/core/supervision/tracking_loop.h"
 #include "amigobot_tracking/core/robot/unicycle.h"
@@ -45,6 +46,28 @@ void BM_ControllerStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ControllerStep)->Arg(0)->Arg(10)->Arg(100);
+
+// The recommended law's look-ahead when it searches (yield_rollout.h): a person 2 m behind at
+// 0.8 m/s on the robot's line, a wall of N static disks beside; every call judges the held
+// command, a stop and every manoeuvre on the actuator model. The worst case of a control step
+// among people (20 Hz gives 50 ms).
+void BM_YieldSearch(benchmark::State& state) {
+  YieldInput in;
+  in.pose = {0.0, 0.0, 0.0};
+  in.previous = in.filtered = {0.3, 0.0};
+  in.target = {1.3, 0.0};
+  in.horizon = 5.0;
+  in.enough = 0.15;
+  std::vector<Disk> disks = {{{-2.0, 0.05}, 0.25, {0.8, 0.0}}};
+  for (int i = 0; i < state.range(0); ++i) disks.push_back({{-1.0 + 0.3 * i, -0.9}, 0.2});
+  const DiamondSet diamond(0.3, 0.8);
+  for (auto _ : state) {
+    const YieldResult r = yieldToMovingDisks(in, diamond, disks);
+    if (!r.acted) state.SkipWithError("the search did not run");
+    benchmark::DoNotOptimize(r);
+  }
+}
+BENCHMARK(BM_YieldSearch)->Arg(0)->Arg(20)->Unit(benchmark::kMillisecond);
 
 // One whole control cycle of the tracking nodelet without ROS (what TrackingNode::controlCycle
 // runs between its tf lookups and its publishes): a new 720-beam scan of a 6 x 4 m room ->

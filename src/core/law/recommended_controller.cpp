@@ -28,6 +28,8 @@ void RecommendedController::forgetLawState() {
   smoothed_velocity_ = Eigen::Vector2d::Constant(NAN);
   last_command_ = Twist2{};
   noise_variance_ = 0.0;
+  committed_.reset();
+  since_yield_ = 0.0;
   last_sample_stamp_ = NAN;
 }
 
@@ -103,15 +105,23 @@ bool RecommendedController::command(const Pose2& pose, const std::vector<Disk>& 
   in.rho = envelope_.rho();
   in.previous = last_command_;
   in.h = h;
+  if (committed_) committed_->first_duration = std::max(0.0, committed_->first_duration - h);
+  in.committed = committed_;
   const RecommendedCommand command = recommendedCommand(config_, diamond_, in, obstacles);
   if (!command.valid) return false;
+  // A step where the filter's own command was clear enough keeps the commitment a while: the
+  // person is still there, and a fresh choice a step later swung the robot to the other side.
+  since_yield_ = command.yielded ? 0.0 : since_yield_ + h;
+  if (command.yielded) committed_ = command.manoeuvre;
+  else if (since_yield_ > kYieldMemory) committed_.reset();
   out.u = last_command_ = command.u;
   out.u_d = command.u_nominal;
   out.u_r = command.u_nom;
   out.detected_obstacles = command.barrier_rows;
   out.min_clearance = command.min_clearance;
   out.active.saturated = std::hypot(out.u.v - out.u_d.v, out.u.omega - out.u_d.omega) > 0.0;
-  out.active.avoiding = command.active_barriers > 0;
+  out.active.avoiding = command.active_barriers > 0 || command.yielded;
+  out.active.yielding = command.yielded;
   out.active.conflict = command.shortfall > 0.0;
   // The fixed-rho baseline never relaxes.
   shortfall_ = config_.adaptive_rho ? command.relaxation : 0.0;

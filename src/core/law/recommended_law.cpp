@@ -103,10 +103,36 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   if (!safe.solved || !safe.u.isFinite()) return out;
   out.valid = true;
   out.u = safe.u;
+  if (config.recommended.yield_horizon > 0.0 && anyMoving(obstacles)) {
+    YieldInput look;
+    look.pose = in.pose;
+    look.previous = in.h > 0.0 ? in.previous : safe.u;
+    look.filtered = safe.u;
+    look.target = p_d;
+    look.target_velocity = in.v_hat;
+    look.offset = config.offset;
+    look.radius = radius;
+    look.horizon = config.recommended.yield_horizon;
+    look.enough = config.recommended.yield_clearance;
+    look.limits = config.actuator;
+    look.committed = in.committed;
+    const YieldResult yielded = yieldToMovingDisks(look, diamond, obstacles);
+    out.yielded = yielded.acted;
+    out.manoeuvre = yielded.manoeuvre;
+    out.u = yielded.u;
+    // The manoeuvre is chosen afresh at each step: the command moves to it within the rate box
+    // as the filter's does (the base ramps slower still), so yielding does not jump.
+    if (yielded.acted && std::isfinite(filter.max_change.v) && std::isfinite(filter.max_change.omega)) {
+      out.u.v = std::clamp(out.u.v, in.previous.v - filter.max_change.v, in.previous.v + filter.max_change.v);
+      out.u.omega = std::clamp(out.u.omega, in.previous.omega - filter.max_change.omega, in.previous.omega + filter.max_change.omega);
+      if (const auto inside = diamond.saturate(out.u)) out.u = *inside;
+    }
+  }
   out.slack = safe.slack;
   out.barrier_rows = safe.rows;
   out.active_barriers = safe.active;
-  const Eigen::Vector2d applied = safe.u.v * heading + config.offset * safe.u.omega * Eigen::Vector2d(-heading.y(), heading.x());
+  // What was sent: the filter's command, or the manoeuvre that yields to a person (its shortfall counts too).
+  const Eigen::Vector2d applied = out.u.v * heading + config.offset * out.u.omega * Eigen::Vector2d(-heading.y(), heading.x());
   out.shortfall = std::max(0.0, e_hat.dot(out.u_track - applied));
   // The relaxation is weighed against rho less the noise headroom 5 sigma (rho_floor - rho_inf):
   // one sample's noise can move the measured |e| by that much, so rho keeps it above |e| at any

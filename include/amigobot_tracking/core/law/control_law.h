@@ -42,6 +42,7 @@ struct ActiveConstraints {
   bool conflict = false;          // e_hat^T u_c < 0: avoidance opposes tracking
   bool rho_relaxed = false;       // the adaptive term of (13) widened rho this step
   bool envelope_widened = false;  // rho widened to keep |e|/rho <= max_error_ratio
+  bool yielding = false;          // recommended law: a manoeuvre stepped out of a moving obstacle's way (yield_rollout.h)
 };
 
 struct ControllerOutput {

@@ -46,6 +46,10 @@ struct RecommendedOptions {
                                        // delays: safety_filter.h); false: gamma alone
   double obstacle_lookahead = 2.0;     // [s] the recommended law's field sees a moving disk along
                                        // the path it walks over this long (0: where it is now)
+  double yield_horizon = 5.0;          // [s] when the filter's command would bring the body within
+                                       // yield_clearance of a moving disk within this, a manoeuvre
+                                       // judged on the base's ramps replaces it (yield_rollout.h; 0: off)
+  double yield_clearance = 0.15;       // [m] the predicted body clearance that counts as enough there
 };
 
 struct ControllerConfig {

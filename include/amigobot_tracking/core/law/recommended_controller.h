@@ -7,10 +7,12 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "amigobot_tracking/core/law/bounded_law.h"
+#include "amigobot_tracking/core/law/yield_rollout.h"
 
 namespace amigobot_tracking {
 namespace core {
@@ -37,6 +39,9 @@ class RecommendedController : public BoundedLaw {
   Eigen::Vector2d feed_forward_ = Eigen::Vector2d::Constant(NAN);
   Eigen::Vector2d smoothed_velocity_ = Eigen::Vector2d::Constant(NAN);  // v_f, first-order over field_lookahead
   Twist2 last_command_;  // the rate box is centred on it
+  std::optional<YieldManoeuvre> committed_;  // the manoeuvre yielding to a person, as of the last step
+  double since_yield_ = 0.0;                 // [s] since a step last yielded
+  static constexpr double kYieldMemory = 1.0;  // [s] a commitment outlives the last yielding step this long
   // The noise estimate: the last target sample and the running mean of the squared
   // innovation of the samples against the feed-forward's prediction.
   double noise_variance_ = 0.0;

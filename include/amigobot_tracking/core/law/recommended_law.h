@@ -8,18 +8,22 @@
 //             (d: the field's direction; d = e_hat with a clear line of sight; the max keeps
 //             at least the gain (9) has at steady state while rho is still wide)
 //   u       = safetyFilter(G^-1 u_nom), at most (v_bar, w_bar) h / command_rise_time from the last u
-//             while every barrier row holds (safety_filter.h's rate box)
+//             while every barrier row holds (safety_filter.h's rate box); replaced by a manoeuvre
+//             judged on the base's dynamics when it and a stop would both let a moving disk reach
+//             the body within yield_horizon (yield_rollout.h)
 //   Delta   = max(0, e_hat^T (u_track - G u))                               (the shortfall)
 //   rho'    = -lambda (rho - rho_f) + (1 + k_r) xi^2 Delta                 (13')
 //   v_f: v_hat slew-limited to a_max (RecommendedInput::v_hat); rho_f: rho_inf plus the measured
 //   noise's reach (RecommendedInput::rho_floor); both kept by PerformanceController.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "amigobot_tracking/core/law/controller_config.h"
+#include "amigobot_tracking/core/law/yield_rollout.h"
 #include "amigobot_tracking/core/robot/diamond.h"
 #include "amigobot_tracking/core/support/types.h"
 
@@ -36,6 +40,7 @@ struct RecommendedInput {
   double rho_floor = 0.0;  // where rho decays to: rho_inf, or more under measurement noise (controller.h)
   Twist2 previous;         // the last command, which u leaves at most (v_accel, w_accel) h away from
   double h = 0.0;          // [s] since that command; 0: none (the first step is not bounded)
+  std::optional<YieldManoeuvre> committed;  // the manoeuvre yielding to a person, advanced to now (yield_rollout.h)
 };
 
 struct RecommendedCommand {
@@ -49,6 +54,8 @@ struct RecommendedCommand {
   double shortfall = 0.0;   // Delta of (13')
   double relaxation = 0.0;  // (1 + k_r) xi^2 Delta, the relaxation term of (13')
   double slack = 0.0;       // the filter's slack (0 unless the barrier rows conflict)
+  bool yielded = false;     // u is yield_rollout.h's manoeuvre, not the filter's command
+  YieldManoeuvre manoeuvre; // that manoeuvre (when yielded): the next step's `committed`
   int barrier_rows = 0;
   int active_barriers = 0;
   double min_clearance = 0.0;  // of the disks the filter holds (safetyClearance) [m]; +inf without obstacles

@@ -1,0 +1,73 @@
+// The recommended law's look-ahead for people it cannot outrun: when the safety filter's
+// command, held and ramped by the base over `horizon`, would bring the body within `enough` of a
+// moving disk and so would a stop (a person walking into the robot from behind, head-on, or
+// across: not one crossing ahead, whom a stop lets pass), the command is chosen
+// instead among a few manoeuvres by what the base would really do (core::ActuatorModel: ramps,
+// cycle, latency) against every disk moved along its own velocity: the one whose body keeps the
+// most clearance (up to `enough`), then the one whose offset point ends nearest where the target
+// will be.
+//
+// Why: the filter's barrier rows are instantaneous. A person closing faster than v_bar makes a
+// row infeasible, and the least-slack answer to it is to flee along the person's own line at
+// v_bar (the person catches up anyway); stepping aside needs a turn first, which no row rewards
+// while the robot faces along the person's path. Manoeuvres (candidates): constant (v, w) on a
+// grid of the diamond, and turn-then-drive (w = +-w_bar in place for 0.5, 1 or 1.5 s, then
+// +-v_bar straight); a turn-then-drive's first command is what is sent, and it is chosen again
+// at every step. Static disks count in the clearance too, so stepping aside does not step into
+// a wall.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "amigobot_tracking/core/robot/actuator_limits.h"
+#include "amigobot_tracking/core/robot/diamond.h"
+#include "amigobot_tracking/core/support/types.h"
+
+namespace amigobot_tracking {
+namespace core {
+
+// A manoeuvre: `first` for first_duration [s], then `then` until the horizon.
+struct YieldManoeuvre {
+  Twist2 first;
+  double first_duration = 0.0;
+  Twist2 then;
+};
+
+struct YieldInput {
+  Pose2 pose;
+  Twist2 previous;      // the last command sent (the base is taken to move at it now)
+  Twist2 filtered;      // the safety filter's command
+  Eigen::Vector2d target = Eigen::Vector2d::Zero();           // p_d now
+  Eigen::Vector2d target_velocity = Eigen::Vector2d::Zero();  // its velocity (held over the horizon)
+  double offset = 0.3;  // r [m]
+  double radius = 0.18; // [m] the body's radius as the law holds it (R + body_margin)
+  double horizon = 3.0; // [s] how far ahead the manoeuvres are judged (> 0)
+  double enough = 0.05; // [m] a clearance this large counts as safe: ties beyond it
+  ActuatorLimits limits;
+  double half_track = 0.0;  // [m] 0: the AmigoBot's
+  // The manoeuvre chosen at the last step, advanced to now (first_duration less the time since):
+  // kept while it is as good as the best, so the robot does not swing from one side of a person
+  // to the other as the choice is made afresh (both sides are often nearly as good).
+  std::optional<YieldManoeuvre> committed;
+};
+
+struct YieldResult {
+  bool acted = false;                // the filter's command was replaced
+  Twist2 u;                          // the command to send (= filtered when !acted)
+  YieldManoeuvre manoeuvre;          // the one chosen (when acted): commit to it
+  double filtered_clearance = 0.0;   // [m] the least predicted body clearance of `filtered`
+  double stopped_clearance = 0.0;    // [m] ... of a stop (judged only when `filtered` is short of enough)
+  double chosen_clearance = 0.0;     // [m] ... of u
+  int candidates = 0;
+};
+
+// True when a disk moves (|v_j| > 0): only then can the look-ahead act.
+bool anyMoving(const std::vector<Disk>& obstacles);
+
+YieldResult yieldToMovingDisks(const YieldInput& in, const DiamondSet& diamond, const std::vector<Disk>& obstacles);
+
+}  // namespace core
+}  // namespace amigobot_tracking
