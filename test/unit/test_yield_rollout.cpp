@@ -68,3 +68,29 @@ TEST(YieldRollout, LeavesTheCommandAloneWithoutAPersonInTheWay) {
   off.horizon = 0.0;
   EXPECT_FALSE(yieldToMovingDisks(off, kDiamond, {disk(-2.0, 0.05, 0.25, 0.8, 0.0)}).acted);
 }
+
+// (The person 2.6 m behind: far enough for a manoeuvre that keeps clear.) The manoeuvre under
+// way is kept while it keeps the body clear, without a search, and for at
+// most 3 s; one that would now meet the person is dropped for a fresh choice.
+TEST(YieldRollout, KeepsTheManoeuvreUnderWayWhileItIsClear) {
+  const std::vector<Disk> behind = {disk(-2.6, 0.05, 0.25, 0.8, 0.0)};
+  const YieldResult first = yieldToMovingDisks(driving(), kDiamond, behind);
+  ASSERT_TRUE(first.acted);
+  ASSERT_GE(first.chosen_clearance, 0.0);
+  YieldInput again = driving();
+  again.committed = first.manoeuvre;
+  again.committed->held = 0.05;
+  YieldResult kept = yieldToMovingDisks(again, kDiamond, behind);
+  ASSERT_TRUE(kept.acted);
+  EXPECT_EQ(kept.candidates, 0) << "searched although the manoeuvre under way was clear";
+  EXPECT_EQ(kept.u.v, first.u.v);
+  EXPECT_EQ(kept.u.omega, first.u.omega);
+  // Held past the span: chosen afresh.
+  again.committed->held = 3.5;
+  EXPECT_GT(yieldToMovingDisks(again, kDiamond, behind).candidates, 0);
+  // A manoeuvre that drives straight back into the person is dropped.
+  again.committed = YieldManoeuvre{{-0.3, 0.0}, 0.0, {-0.3, 0.0}, 0.05};
+  const YieldResult dropped = yieldToMovingDisks(again, kDiamond, behind);
+  EXPECT_GT(dropped.candidates, 0);
+  EXPECT_FALSE(dropped.u.v == -0.3 && dropped.u.omega == 0.0);
+}

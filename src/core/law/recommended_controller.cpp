@@ -30,6 +30,7 @@ void RecommendedController::forgetLawState() {
   noise_variance_ = 0.0;
   committed_.reset();
   since_yield_ = 0.0;
+  base_.reset();
   last_sample_stamp_ = NAN;
 }
 
@@ -105,7 +106,13 @@ bool RecommendedController::command(const Pose2& pose, const std::vector<Disk>& 
   in.rho = envelope_.rho();
   in.previous = last_command_;
   in.h = h;
-  if (committed_) committed_->first_duration = std::max(0.0, committed_->first_duration - h);
+  if (!base_) base_.emplace(config_.actuator, kAmigoHalfTrack);
+  else if (h > 0.0) base_->step(last_command_, h);
+  in.base = &*base_;
+  if (committed_) {
+    committed_->first_duration = std::max(0.0, committed_->first_duration - h);
+    committed_->held += h;
+  }
   in.committed = committed_;
   const RecommendedCommand command = recommendedCommand(config_, diamond_, in, obstacles);
   if (!command.valid) return false;

@@ -116,6 +116,7 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
     look.enough = config.recommended.yield_clearance;
     look.limits = config.actuator;
     look.committed = in.committed;
+    look.base = in.base;
     const YieldResult yielded = yieldToMovingDisks(look, diamond, obstacles);
     out.yielded = yielded.acted;
     out.manoeuvre = yielded.manoeuvre;

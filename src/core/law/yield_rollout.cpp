@@ -14,10 +14,13 @@ namespace {
 // v_bar, far less than a person's radius), through the actuator model in sub-steps of kSubstep.
 constexpr double kJudgeStep = 0.1;
 constexpr double kSubstep = 0.02;
+// [s] a manoeuvre is kept at most this long, then chosen afresh (it may be chosen again): kept
+// while merely clear, a reversal in front of a person walking head-on down a corridor was kept
+// the corridor's length (mean true ASE 1.96 in 50 runs; 1.25 with 3 s, 1.51 with 1.5 s and
+// 10 contacts instead of 5).
+constexpr double kCommitSpan = 3.0;
 
 using Manoeuvre = YieldManoeuvre;
-// [m] a committed manoeuvre is kept while its clearance is within this of the best one's.
-constexpr double kKeep = 0.03;
 
 struct Outcome {
   double clearance;  // the least body clearance from every disk (moved along its velocity)
@@ -53,8 +56,12 @@ YieldResult yieldToMovingDisks(const YieldInput& in, const DiamondSet& diamond, 
   // The base as it moves now: the model brought to the last command (its ramps from rest take
   // at most v_bar / trans_accel; the model is run long enough to settle at it).
   ActuatorModel base(in.limits, in.half_track > 0.0 ? in.half_track : kAmigoHalfTrack);
-  const double settle = diamond.vMax() / in.limits.trans_accel + diamond.wMax() / in.limits.rot_accel + 2.0 * (in.limits.latency + in.limits.cycle);
-  base.step(in.previous, std::isfinite(settle) ? settle : 1.0);
+  if (in.base) {
+    base = *in.base;
+  } else {
+    const double settle = diamond.vMax() / in.limits.trans_accel + diamond.wMax() / in.limits.rot_accel + 2.0 * (in.limits.latency + in.limits.cycle);
+    base.step(in.previous, std::isfinite(settle) ? settle : 1.0);
+  }
   auto held = [](const Twist2& u) { return Manoeuvre{u, 0.0, u}; };
   out.filtered_clearance = judge(in, base, held(in.filtered), obstacles).clearance;
   out.chosen_clearance = out.filtered_clearance;
@@ -64,6 +71,18 @@ YieldResult yieldToMovingDisks(const YieldInput& in, const DiamondSet& diamond, 
   // even a stopped base would not keep clear of.
   out.stopped_clearance = judge(in, base, held({0.0, 0.0}), obstacles).clearance;
   if (out.stopped_clearance >= in.enough) return out;
+
+  // The manoeuvre under way, while it keeps the body clear: no search.
+  if (in.committed && in.committed->held <= kCommitSpan) {
+    const Outcome kept = judge(in, base, *in.committed, obstacles);
+    if (kept.clearance >= 0.0) {
+      out.acted = true;
+      out.manoeuvre = *in.committed;
+      out.chosen_clearance = kept.clearance;
+      out.u = out.manoeuvre.first_duration > 0.0 ? out.manoeuvre.first : out.manoeuvre.then;
+      return out;
+    }
+  }
 
   const double v = diamond.vMax(), w = diamond.wMax();
   std::vector<Manoeuvre> candidates;
@@ -98,13 +117,6 @@ YieldResult yieldToMovingDisks(const YieldInput& in, const DiamondSet& diamond, 
       out.chosen_clearance = outcome[i].clearance;
     }
   if (!best) return out;
-  if (in.committed) {
-    const Outcome kept = judge(in, base, *in.committed, obstacles);
-    if (std::min(kept.clearance, in.enough) >= best_score - kKeep) {
-      best = &*in.committed;
-      out.chosen_clearance = kept.clearance;
-    }
-  }
   out.acted = true;
   out.manoeuvre = *best;
   out.u = best->first_duration > 0.0 ? best->first : best->then;

@@ -41,6 +41,9 @@ class RecommendedController : public BoundedLaw {
   Twist2 last_command_;  // the rate box is centred on it
   std::optional<YieldManoeuvre> committed_;  // the manoeuvre yielding to a person, as of the last step
   double since_yield_ = 0.0;                 // [s] since a step last yielded
+  // The base as the law's own commands move it (config_.actuator): where the yielding
+  // look-ahead starts its manoeuvres. Built at the first step.
+  std::optional<ActuatorModel> base_;
   static constexpr double kYieldMemory = 1.0;  // [s] a commitment outlives the last yielding step this long
   // The noise estimate: the last target sample and the running mean of the squared
   // innovation of the samples against the feed-forward's prediction.

@@ -41,6 +41,7 @@ struct RecommendedInput {
   Twist2 previous;         // the last command, which u leaves at most (v_accel, w_accel) h away from
   double h = 0.0;          // [s] since that command; 0: none (the first step is not bounded)
   std::optional<YieldManoeuvre> committed;  // the manoeuvre yielding to a person, advanced to now (yield_rollout.h)
+  const ActuatorModel* base = nullptr;      // the base as it moves now (yield_rollout.h), null: settled at `previous`
 };
 
 struct RecommendedCommand {
