@@ -90,6 +90,7 @@ void fillState(const core::ControllerOutput& out, TrackingState* s) {
   s->conflict = out.active.conflict;
   s->rho_relaxed = out.active.rho_relaxed;
   s->envelope_widened = out.active.envelope_widened;
+  s->yielding = out.active.yielding;
   s->detected_obstacles = out.detected_obstacles;
   s->min_clearance = out.min_clearance;
 }

@@ -170,6 +170,7 @@ visualization_msgs::MarkerArray buildMarkers(const MarkerScene& scene) {
       if (out.active.conflict) line << "  conflict";
       if (out.active.rho_relaxed) line << "  rho_relaxed";
       if (out.active.envelope_widened) line << "  envelope_widened";
+      if (out.active.yielding) line << "  yielding";
       line << "  ";
     }
     line << scene.status;

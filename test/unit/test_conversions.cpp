@@ -40,6 +40,7 @@ TEST(Conversions, StateCarriesTheControllerOutput) {
   out.u = {0.2, -0.1};
   out.u_d = {0.5, -0.25};
   out.active.saturated = true;
+  out.active.yielding = true;
   out.detected_obstacles = 2;
   out.u_t = {0.05, -0.02};
   out.passing_side = -1;
@@ -51,6 +52,7 @@ TEST(Conversions, StateCarriesTheControllerOutput) {
   EXPECT_DOUBLE_EQ(state.omega_d, -0.25);
   EXPECT_TRUE(state.saturated);
   EXPECT_FALSE(state.avoiding);
+  EXPECT_TRUE(state.yielding);
   EXPECT_EQ(state.detected_obstacles, 2);
   EXPECT_DOUBLE_EQ(state.u_t.x, 0.05);
   EXPECT_DOUBLE_EQ(state.u_t.y, -0.02);
