@@ -106,9 +106,11 @@ bool RecommendedController::command(const Pose2& pose, const std::vector<Disk>& 
   in.rho = envelope_.rho();
   in.previous = last_command_;
   in.h = h;
-  if (!base_) base_.emplace(config_.actuator, kAmigoHalfTrack);
-  else if (h > 0.0) base_->step(last_command_, h);
-  in.base = &*base_;
+  if (config_.recommended.yield_horizon > 0.0) {  // only the yielding look-ahead reads it
+    if (!base_) base_.emplace(config_.actuator, kAmigoHalfTrack);
+    else if (h > 0.0) base_->step(last_command_, h);
+    in.base = &*base_;
+  }
   if (committed_) {
     committed_->first_duration = std::max(0.0, committed_->first_duration - h);
     committed_->held += h;

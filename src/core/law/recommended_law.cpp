@@ -103,7 +103,7 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   if (!safe.solved || !safe.u.isFinite()) return out;
   out.valid = true;
   out.u = safe.u;
-  if (config.recommended.yield_horizon > 0.0 && anyMoving(obstacles)) {
+  if (config.recommended.yield_horizon > 0.0) {
     YieldInput look;
     look.pose = in.pose;
     look.previous = in.h > 0.0 ? in.previous : safe.u;

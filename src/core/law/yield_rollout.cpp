@@ -53,15 +53,15 @@ YieldResult yieldToMovingDisks(const YieldInput& in, const DiamondSet& diamond, 
   YieldResult out;
   out.u = in.filtered;
   if (!(in.horizon > 0.0) || !anyMoving(obstacles)) return out;
-  // The base as it moves now: the model brought to the last command (its ramps from rest take
-  // at most v_bar / trans_accel; the model is run long enough to settle at it).
-  ActuatorModel base(in.limits, in.half_track > 0.0 ? in.half_track : kAmigoHalfTrack);
-  if (in.base) {
-    base = *in.base;
-  } else {
+  // The base as it moves now: the caller's model, or one brought to the last command (its ramps
+  // from rest take at most v_bar / trans_accel; the model is run long enough to settle at it).
+  auto settled = [&] {
+    ActuatorModel model(in.limits, in.half_track > 0.0 ? in.half_track : kAmigoHalfTrack);
     const double settle = diamond.vMax() / in.limits.trans_accel + diamond.wMax() / in.limits.rot_accel + 2.0 * (in.limits.latency + in.limits.cycle);
-    base.step(in.previous, std::isfinite(settle) ? settle : 1.0);
-  }
+    model.step(in.previous, std::isfinite(settle) ? settle : 1.0);
+    return model;
+  };
+  const ActuatorModel base = in.base ? *in.base : settled();
   auto held = [](const Twist2& u) { return Manoeuvre{u, 0.0, u}; };
   out.filtered_clearance = judge(in, base, held(in.filtered), obstacles).clearance;
   out.chosen_clearance = out.filtered_clearance;
