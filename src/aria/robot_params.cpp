@@ -26,23 +26,40 @@ core::FieldTable<RobotParams> makeRows() {
   using P = RobotParams;
   using core::field;
   using core::positive;
-  core::FieldTable<P> t = {field("model", &P::model, "-", "SYNC2 subclass this set belongs to (ARIA lower-cases it)")};
+  core::FieldTable<P> t = {field("model", &P::model, "-",
+                                 "SYNC2 subclass this set belongs to (ARIA lower-cases it); a robot that reports "
+                                 "another subclass is named in a WARN at connection")};
   core::includeBase(&t, core::robotDescriptionFields());
   const core::FieldTable<P> aria = {
-      field("angle_conv_factor", &P::angle_conv_factor, "rad/unit", "THPOS scale (AngleConvFactor)", positive()),
-      field("angle_units_per_turn", &P::angle_units_per_turn, "units", "THPOS wraps modulo this many units per turn",
+      field("angle_conv_factor", &P::angle_conv_factor, "rad/unit",
+            "THPOS scale, 2*pi/4096 (AngleConvFactor); the .p files round it to 0.00153, the AmigoSH manual's table "
+            "says degrees (0.0174533 with angle_units_per_turn 360), unverified",
+            positive()),
+      field("angle_units_per_turn", &P::angle_units_per_turn, "units",
+            "THPOS wraps modulo this many units per turn (360 for the AmigoSH manual's degree reading)",
             core::atLeast(8)),
       field("dist_conv_factor", &P::dist_conv_factor, "mm/unit", "XPOS/YPOS scale (DistConvFactor)", positive()),
-      field("vel_conv_factor", &P::vel_conv_factor, "(mm/s)/unit", "L/R VEL scale (VelConvFactor)", positive()),
-      field("range_conv_factor", &P::range_conv_factor, "mm/unit", "sonar range scale (RangeConvFactor)",
+      field("vel_conv_factor", &P::vel_conv_factor, "(mm/s)/unit",
+            "L/R VEL scale (VelConvFactor); p2os lists 1.3746 for amigo-sh", positive()),
+      field("range_conv_factor", &P::range_conv_factor, "mm/unit",
+            "sonar range scale (RangeConvFactor); the AmigOS v1.3 manual says 0.555", positive()),
+      field("diff_conv_factor", &P::diff_conv_factor, "1/mm",
+            "omega = (R - L)/2 * DiffConvFactor: the wheel track is 2/diff_conv_factor mm (182 mm for 0.011)",
             positive()),
-      field("diff_conv_factor", &P::diff_conv_factor, "1/mm", "w = (R - L)/2 * DiffConvFactor: the wheel track",
-            positive()),
-      field("vel2_divisor", &P::vel2_divisor, "(mm/s)/unit", "VEL2 wheel unit (Vel2Divisor)", positive()),
-      field("watchdog", &P::watchdog, "s", "firmware watchdog: the robot stops after this long without a command",
+      field("vel2_divisor", &P::vel2_divisor, "(mm/s)/unit", "VEL2's wheel-speed unit (Vel2Divisor)", positive()),
+      field("watchdog", &P::watchdog, "s",
+            "firmware watchdog: the robot stops after this long without a command; the driver's command_refresh "
+            "must stay below it",
             core::duration()),
-      field("switch_to_baud", &P::switch_to_baud, "baud", "SwitchToBaudRate, a HOSTBAUD rate", core::atLeast(1)),
-      field("sonar_max_range", &P::sonar_max_range, "m", "farthest echo a transducer reports", core::boundedRadius()),
+      field("switch_to_baud", &P::switch_to_baud, "baud",
+            "SwitchToBaudRate, a HOSTBAUD rate (9600, 19200, 38400, 57600, 115200): after CONFIG the driver moves a "
+            "serial link to it when it is above the connect baud and the robot allows it (ARIA's serial default is "
+            "9600)",
+            core::atLeast(1)),
+      field("sonar_max_range", &P::sonar_max_range, "m",
+            "farthest echo a transducer reports (amigo.p: 4335 mm); the max_range of sonar_range, where an echo this "
+            "far or none is +inf",
+            core::boundedRadius()),
   };
   t.insert(t.end(), aria.begin(), aria.end());
   return t;

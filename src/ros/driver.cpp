@@ -37,26 +37,42 @@ const core::FieldTable<DriverParams>& driverFields() {
     using D = DriverParams;
     using core::field;
     core::FieldTable<D> t = {
-        field("command_mode", &D::command_mode, "-", "VEL+RVEL, or VEL2 (20 mm/s steps: too coarse)",
+        field("command_mode", &D::command_mode, "-",
+              "vel_rvel sends VEL + RVEL; vel2 sends VEL2, whose wheel-speed steps of the robot file's vel2_divisor "
+              "(20 mm/s) are too coarse at AmigoBot speeds (aria_command_study)",
               core::oneOf({"vel_rvel", "vel2"})),
-        field("odom_frame", &D::odom_frame, "-", "odometry frame"),
-        field("base_frame", &D::base_frame, "-", "robot frame"),
-        field("sonar_frame_prefix", &D::sonar_frame_prefix, "-", "transducer i publishes in <prefix><i>"),
-        field("publish_tf", &D::publish_tf, "-", "odom -> base_frame"),
-        field("publish_sonar_tf", &D::publish_sonar_tf, "-", "static base_frame -> sonar_i from the robot parameters"),
+        field("odom_frame", &D::odom_frame, "-", "odometry frame: odom's frame_id and the parent of the odom tf"),
+        field("base_frame", &D::base_frame, "-",
+              "robot frame: odom's child, parent of the sonar frames, frame of sonar_cloud and the state topics "
+              "(robot.launch sets base_footprint, the URDF's root); RosAria's base_link_frame is read as an alias"),
+        field("sonar_frame_prefix", &D::sonar_frame_prefix, "-",
+              "transducer i publishes in <prefix><i> (sonar_range frame_id, static sonar tf)"),
+        field("publish_tf", &D::publish_tf, "-", "broadcast the tf odom_frame -> base_frame from odometry"),
+        field("publish_sonar_tf", &D::publish_sonar_tf, "-",
+              "static tf base_frame -> <sonar_frame_prefix><i> from the robot file's sonar poses (turn off when "
+              "robot_state_publisher runs the URDF)"),
         field("position_variance", &D::position_variance, "m^2", "odom pose covariance, x and y",
               core::nonNegative()),
-        field("heading_variance", &D::heading_variance, "rad^2", "odom heading covariance", core::nonNegative()),
-        field("battery_low_voltage", &D::battery_low_voltage, "V", "diagnostics warn below this",
+        field("heading_variance", &D::heading_variance, "rad^2", "odom pose covariance, heading (yaw)",
               core::nonNegative()),
-        field("sonar_min_range", &D::sonar_min_range, "m", "sensor_msgs/Range min_range", core::nonNegative()),
+        field("battery_low_voltage", &D::battery_low_voltage, "V", "below this the diagnostics WARN battery low",
+              core::nonNegative()),
+        field("sonar_min_range", &D::sonar_min_range, "m", "min_range of every sensor_msgs/Range on sonar_range",
+              core::nonNegative()),
         field("cmd_vel_source", &D::cmd_vel_source, "-",
-              "node whose cmd_vel is driven; empty: the first publisher until silent 1 s"),
+              "node (caller id, e.g. /amigobot_manager) whose cmd_vel is driven; empty: the first publisher, until "
+              "it has been silent 1 s. Others are ignored with a throttled WARN naming them"),
         field("master_timeout", &D::master_timeout, "s",
-              "ROS master unreachable this long: stop, motors disabled until enable_motors", core::boundedTimeout()),
+              "ROS master unreachable this long -> zero velocity, motors disabled, cmd_vel ignored until a master "
+              "answers; after a master restart the process registers its topics and services with the new master "
+              "by itself; the motors stay disabled until the enable_motors service",
+              core::boundedTimeout()),
         core::live(field("stamp_offset", &D::stamp_offset, "s",
-                         "test aid, 0 on a robot: added to every published stamp (emulates a clock this far ahead/behind)",
-                         core::interval(-kMaxStampOffset, false, kMaxStampOffset, false))),
+                         "a test aid, keep 0 on a robot: added to the stamps of odometry, its tf, sonar and the state "
+                         "topics, so the driver emulates a clock this far ahead (+) or behind (-) of the other "
+                         "machines; within +-5 s, a WARN while not 0. The two-machine test sets -0.45 on the target",
+                         core::interval(-kMaxStampOffset, false, kMaxStampOffset, false)),
+                   -5.0, 5.0),
     };
     core::include(&t, "", &D::robot, robotSourceFields());
     core::include(&t, "", &D::client, aria::clientFields());

@@ -19,16 +19,36 @@ const core::FieldTable<LaserParams>& laserFields() {
     core::FieldTable<P> t;
     core::include(&t, "", &P::driver, sensors::laserDriverFields());  // the driver's rows, described once
     t.push_back(field("angle_convention", &P::angle_convention, "-",
-                      "rplidar: device (0 = the device's 0 deg mark) or rplidar_ros (pi - theta, as rplidar_ros)",
+                      "rplidar only: device (angle 0 = the device's 0 deg mark, counter-clockwise, REP 103) or "
+                      "rplidar_ros (rplidar_ros's pi - theta: the scan turned by pi, so a mount copied from an "
+                      "rplidar_ros setup holds); device by default because the URDF's laser mount is the device's own",
                       core::oneOf({"device", "rplidar_ros"})));
-    t.push_back(field("frame_id", &P::frame_id, "-", "frame of the scans"));
-    t.push_back(field("angle_min", &P::angle_min, "rad", "crop: first published beam at or after", core::anyValue()));
-    t.push_back(field("angle_max", &P::angle_max, "rad", "crop: last published beam at or before (> angle_min)", core::anyValue()));
-    t.push_back(field("range_min", &P::range_min, "m", "override; closer returns are -inf (0: the device's)", core::nonNegative()));
-    t.push_back(field("range_max", &P::range_max, "m", "override; farther returns are +inf (0: the device's)", core::nonNegative()));
-    t.push_back(field("upside_down", &P::upside_down, "-", "mounted upside down: beams mirrored"));
-    t.push_back(field("time_offset", &P::time_offset, "s", "added to every stamp", core::interval(-1.0, true, 1.0, true)));
-    t.push_back(field("expected_rate", &P::expected_rate, "Hz", "diagnostics' scan rate (0: the model's)", core::nonNegative()));
+    t.push_back(field("frame_id", &P::frame_id, "-", "frame of the published scan (the URDF's laser mount)"));
+    t.push_back(core::defaultText(field("angle_min", &P::angle_min, "rad",
+                                        "crop: the first published beam is the first at or after this angle (below "
+                                        "the device's first beam: no crop)",
+                                        core::anyValue()),
+                                  "-pi"));
+    t.push_back(core::defaultText(field("angle_max", &P::angle_max, "rad",
+                                        "crop: the last published beam is the last at or before this angle, > "
+                                        "angle_min (beyond the device's last beam: no crop)",
+                                        core::anyValue()),
+                                  "pi"));
+    t.push_back(field("range_min", &P::range_min, "m",
+                      "override of the device's range_min: closer returns are published as -inf; 0: the device's",
+                      core::nonNegative()));
+    t.push_back(field("range_max", &P::range_max, "m",
+                      "override of the device's range_max: farther returns are published as +inf; 0: the device's, "
+                      "else > range_min",
+                      core::nonNegative()));
+    t.push_back(field("upside_down", &P::upside_down, "-",
+                      "laser mounted upside down: beams mirrored (angle -> -angle), their order reversed"));
+    t.push_back(field("time_offset", &P::time_offset, "s", "added to every scan's stamp, within (-1, 1)",
+                      core::interval(-1.0, true, 1.0, true)));
+    t.push_back(field("expected_rate", &P::expected_rate, "Hz",
+                      "scan rate the diagnostics expect; 0: the model's (hokuyo_urg 10, sick_tim5xx 15, sick_lms1xx 25, "
+                      "rplidar 5.5 Hz)",
+                      core::nonNegative()));
     return t;
   }();
   return table;

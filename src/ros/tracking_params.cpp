@@ -52,36 +52,50 @@ const core::FieldTable<TrackingNodeConfig>& trackingNodeFields() {
     core::FieldTable<N> t = {
       field("global_frame", &N::global_frame, "-", "frame of poses, obstacles and markers"),
       field("base_frame", &N::base_frame, "-", "the robot being controlled (REP 105)"),
-      field("target_frame", &N::target_frame, "-", "the tracked target (reference publisher or another robot)"),
-      field("control_rate", &N::control_rate, "Hz", "control timer rate, one step per tick",
+      field("target_frame", &N::target_frame, "-",
+            "the tracked target (reference_publisher's frame or another robot's base_link)"),
+      field("control_rate", &N::control_rate, "Hz", "control timer rate, one controller step per tick",
             core::interval(1.0, false, 1000.0, false)),
-      field("pose_timeout", &N::pose_timeout, "s", "older robot pose or target -> zero command",
+      field("pose_timeout", &N::pose_timeout, "s", "robot pose or target older than this -> zero command",
             core::boundedTimeout()),
-      field("scan_timeout", &N::scan_timeout, "s", "older scan -> zero command (when require_scan)",
+      field("scan_timeout", &N::scan_timeout, "s", "scan older than this -> zero command (when require_scan)",
             core::boundedTimeout()),
       field("future_stamp_tolerance", &N::future_stamp_tolerance, "s",
-            "a pose, target or scan stamped further ahead of this node's clock is stale",
+            "a pose, target or scan stamped further ahead of this node's clock (or stamped 0) is stale, named in "
+            "the status; tf samples stamped further ahead of their arrival are dropped, and a publisher's clock "
+            "offset beyond it is named; in [0, 1]",
             core::interval(0.0, false, 1.0, false)),
       field("require_scan", &N::require_scan, "-", "false: run on virtual obstacles alone (no laser)"),
       field("open_space", &N::open_space, "-",
-            "true: a scan with no return within range_max is an empty room (else a blind laser: stops)"),
+            "true: a scan with no return within range_max is an empty room; false: such a scan is a blind laser, "
+            "refused with an ERROR (the robot stops after scan_timeout)"),
       field("min_scan_rate_fraction", &N::min_scan_rate_fraction, "-",
-            "measured scan rate below this fraction of the promised one stops (0 = off)",
+            "a scan rate measured below this fraction of the one the laser promises (1 / scan_time, or "
+            "expected_scan_rate) stops the robot with an ERROR naming both rates; in [0, 1), 0: off",
             core::interval(0.0, false, 1.0, true)),
       field("expected_scan_rate", &N::expected_scan_rate, "Hz",
-            "the laser's scan rate, instead of each scan's scan_time (0 = scan_time)",
+            "the laser's scan rate, for a driver that leaves scan_time 0 (or gets it wrong); 0: each scan's "
+            "scan_time",
             core::interval(0.0, false, 1000.0, false)),
       field("autostart", &N::autostart, "-", "enable tracking at start (else call ~enable)"),
-      field("clicked_point_radius", &N::clicked_point_radius, "m", "radius of a disk added by rviz Publish Point",
-            core::boundedRadius()),
+      field("clicked_point_radius", &N::clicked_point_radius, "m",
+            "radius of the disk an rviz Publish Point click adds", core::boundedRadius()),
       field("target_exclusion_radius", &N::target_exclusion_radius, "m",
-            "laser disks this close to the target are the followed robot (0 = off)", core::boundedRadiusOrOff()),
-      field("resume_v_accel", &N::resume_v_accel, "m/s^2", "after a stop, v leaves zero at most this fast",
+            "laser disks this close to the target are the followed robot, not obstacles (0: off; never applied to "
+            "virtual obstacles)",
+            core::boundedRadiusOrOff()),
+      field("resume_v_accel", &N::resume_v_accel, "m/s^2",
+            "after a stop of the node's own (stale inputs, disable -> enable, a refused step) v leaves zero at "
+            "most this fast (AmigoBot trans_accel); stops stay immediate",
             positive()),
-      field("resume_w_accel", &N::resume_w_accel, "rad/s^2", "after a stop, omega leaves zero at most this fast",
+      field("resume_w_accel", &N::resume_w_accel, "rad/s^2",
+            "after a stop of the node's own omega leaves zero at most this fast (AmigoBot rot_accel, 100 deg/s^2); "
+            "(v, omega) is scaled as a whole, so it keeps its direction and the diamond",
             positive()),
-      field("robot_description_param", &N::robot_description_param, "-", "parameter holding the URDF"),
-      field("urdf_offset_link", &N::urdf_offset_link, "-", "URDF link fixed ahead of base_frame: its x is r"),
+      field("robot_description_param", &N::robot_description_param, "-",
+            "parameter holding the URDF, the source of R and r (a relative name is searched from ~ upwards)"),
+      field("urdf_offset_link", &N::urdf_offset_link, "-",
+            "URDF link fixed to base_frame whose x is the offset r of the controlled point"),
     };
     core::include(&t, "", &N::robot, robotSourceFields());
     return t;

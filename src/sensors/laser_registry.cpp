@@ -126,12 +126,27 @@ const core::FieldTable<LaserDriverConfig>& laserDriverFields() {
   using D = LaserDriverConfig;
   using core::field;
   static const core::FieldTable<D> table = {
-      field("model", &D::model, "-", "the laser's protocol", core::oneOf(laserModelNames())),
-      field("port", &D::port, "-", "serial device, host:port for TCP, or laser_emulator:PORT (laser_emulator --endpoint PORT)"),
-      field("reconnect_period", &D::reconnect_period, "s", "first wait before reopening (doubles up to 8x)",
+      field("model", &D::model, "-",
+            "the laser: hokuyo_urg (Hokuyo URG-04LX, SCIP 2.0 via MRPT's CHokuyoURG), sick_tim5xx (SICK TiM5xx, "
+            "CoLa-A over TCP), sick_lms1xx (SICK LMS111, CoLa-A over TCP) or rplidar (Slamtec RPLIDAR A1M8, A2, A3: "
+            "Slamtec's binary protocol over serial)",
+            core::oneOf(laserModelNames())),
+      field("port", &D::port, "-",
+            "serial device (hokuyo_urg, rplidar) or host:port (hokuyo_urg; sick_tim5xx, sick_lms1xx: HOST:2111 for "
+            "CoLa-A, or HOST:2112 while that port speaks CoLa-A); laser_emulator:PORT -> where laser_emulator "
+            "--endpoint PORT serves the model: localhost:PORT for a TCP model, the pty "
+            "/tmp/amigobot_laser_MODEL_PORT for a serial-only one"),
+      field("reconnect_period", &D::reconnect_period, "s",
+            "first wait before reopening a lost or failed laser; doubles on each failure up to 8x, back to this after "
+            "a good scan",
             core::boundedTimeout()),
-      field("stall_timeout", &D::stall_timeout, "s", "no scan for this long: the link is reopened", core::boundedTimeout()),
-      field("baud", &D::baud, "baud", "rplidar: 115200 (A1, A2M8) or 256000 (A2M12, A3); 0: 115200",
+      field("stall_timeout", &D::stall_timeout, "s",
+            "no good scan for this long -> the link is closed and reopened (an rplidar motor stopped by the stop_motor "
+            "service is no stall)",
+            core::boundedTimeout()),
+      field("baud", &D::baud, "baud",
+            "rplidar only: 115200 (A1, A2M8) or 256000 (A2M12, A3; set through termios2); 0 = 115200. Another model "
+            "refuses any value but 0",
             core::nonNegative()),
   };
   return table;

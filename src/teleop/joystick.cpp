@@ -12,23 +12,39 @@ const core::FieldTable<JoystickConfig>& joystickFields() {
   using core::field;
   const core::Bounds number = core::atLeast(0.0);  // an axis or button number
   static const core::FieldTable<J> table = {
-      field("device", &J::device, "-", "Linux joystick device (struct js_event API)"),
-      field("axis_linear", &J::axis_linear, "-", "axis for v", number),
-      field("axis_angular", &J::axis_angular, "-", "axis for omega", number),
-      field("scale_linear", &J::scale_linear, "m/s", "v at full deflection (negative inverts)"),
-      field("scale_angular", &J::scale_angular, "rad/s", "omega at full deflection (negative inverts)"),
-      field("deadman_button", &J::deadman_button, "-", "held = motion allowed", number),
-      field("turbo_button", &J::turbo_button, "-", "held with the deadman = turbo scales; -1 = none",
-            core::atLeast(-1.0)),
+      field("device", &J::device, "-",
+            "Linux joystick device (struct js_event API of linux/joystick.h, read directly: no joy node); find a "
+            "pad's axis and button numbers with jstest"),
+      field("axis_linear", &J::axis_linear, "-", "axis for v (left stick up/down on most pads)", number),
+      field("axis_angular", &J::axis_angular, "-",
+            "axis for omega (left stick left/right on most pads); not axis_linear", number),
+      field("scale_linear", &J::scale_linear, "m/s", "v at full deflection, stick up = forward (negative inverts)"),
+      field("scale_angular", &J::scale_angular, "rad/s",
+            "omega at full deflection, stick left = turn left, REP 103 (negative inverts)"),
+      field("deadman_button", &J::deadman_button, "-",
+            "motion only while this button is held (teleop_twist_joy's enable_button); on release one zero, then "
+            "nothing (other sources may drive)",
+            number),
+      field("turbo_button", &J::turbo_button, "-",
+            "held with the deadman -> the turbo scales; -1 = no turbo; not deadman_button", core::atLeast(-1.0)),
       field("scale_linear_turbo", &J::scale_linear_turbo, "m/s", "v at full deflection with turbo"),
       field("scale_angular_turbo", &J::scale_angular_turbo, "rad/s", "omega at full deflection with turbo"),
-      field("deadzone", &J::deadzone, "-", "|axis| below this reads 0", core::interval(0.0, false, 1.0, true)),
-      field("rate", &J::rate, "Hz", "cmd_vel rate while the deadman is held", core::interval(10.0, false, 1000.0, false)),
-      field("stale_timeout", &J::stale_timeout, "s", "no event for this long -> zero until the next; 0 = off",
+      field("deadzone", &J::deadzone, "-",
+            "an axis within this fraction of full deflection reads 0 (as joy_node); beyond it, rescaled to reach 1 "
+            "at full deflection",
+            core::interval(0.0, false, 1.0, true)),
+      field("rate", &J::rate, "Hz", "cmd_vel rate while the deadman is held (>= 10)",
+            core::interval(10.0, false, 1000.0, false)),
+      field("stale_timeout", &J::stale_timeout, "s",
+            "no event for this long with the deadman held -> zero until the next event (a pad whose link dies "
+            "silently); 0 = off, the default because a stick held still sends no events",
             core::boundedTimeoutOrOff()),
-      field("reconnect_period", &J::reconnect_period, "s", "between attempts to (re)open the device",
+      field("reconnect_period", &J::reconnect_period, "s",
+            "between attempts to (re)open a missing or failed device; after a loss one zero is sent and the deadman "
+            "must be pressed again",
             core::duration()),
-      field("enable_motors", &J::enable_motors, "-", "call the driver's enable_motors service at start"),
+      field("enable_motors", &J::enable_motors, "-",
+            "call the driver's enable_motors service (std_srvs/Empty, in this namespace) at start"),
   };
   return table;
 }

@@ -11,14 +11,25 @@ const core::FieldTable<KeyboardConfig>& keyboardFields() {
   using K = KeyboardConfig;
   using core::field;
   static const core::FieldTable<K> table = {
-      field("speed", &K::speed, "m/s", "linear speed at start (q/z, w/x change it by 10 %)", core::positive()),
-      field("turn", &K::turn, "rad/s", "angular speed at start (q/z, e/c change it by 10 %)", core::positive()),
-      field("speed_max", &K::speed_max, "m/s", "the linear speed is never raised above this", core::positive()),
-      field("turn_max", &K::turn_max, "rad/s", "the angular speed is never raised above this", core::positive()),
-      field("rate", &K::rate, "Hz", "cmd_vel publication rate", core::interval(10.0, false, 1000.0, false)),
-      field("key_timeout", &K::key_timeout, "s", "no key for this long -> zero command; 0 = never",
+      field("speed", &K::speed, "m/s", "linear speed at start, <= speed_max (q/z, w/x: +/-10 %)", core::positive()),
+      field("turn", &K::turn, "rad/s", "angular speed at start, <= turn_max (q/z, e/c: +/-10 %)", core::positive()),
+      core::defaultText(field("speed_max", &K::speed_max, "m/s",
+                              "q/w never raise the linear speed above this; above the robot file's v_max is refused "
+                              "(the robot file: robot_params or robot_model, as the driver's; teleop.launch model:=)",
+                              core::positive()),
+                        "the robot file's v_max (0.3)"),
+      core::defaultText(field("turn_max", &K::turn_max, "rad/s",
+                              "q/e never raise the angular speed above this; above the robot file's w_max is refused "
+                              "(the robot file: robot_params or robot_model, as the driver's; teleop.launch model:=)",
+                              core::positive()),
+                        "the robot file's w_max (0.8)"),
+      field("rate", &K::rate, "Hz", "cmd_vel rate, zeros included (>= 10)", core::interval(10.0, false, 1000.0, false)),
+      field("key_timeout", &K::key_timeout, "s",
+            "no key for this long -> zero, the motion forgotten (hold a key to keep moving; the default is above the "
+            "usual 0.5-0.66 s autorepeat delay, so a held key keeps going); 0 = never (not for a real robot)",
             core::boundedTimeoutOrOff()),
-      field("enable_motors", &K::enable_motors, "-", "call the driver's enable_motors service at start"),
+      field("enable_motors", &K::enable_motors, "-",
+            "call the driver's enable_motors service (std_srvs/Empty, in this namespace) at start"),
   };
   return table;
 }

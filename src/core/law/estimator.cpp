@@ -9,16 +9,25 @@ namespace core {
 const FieldTable<EstimatorConfig>& estimatorFields() {
   using E = EstimatorConfig;
   static const FieldTable<E> table = {
-      field("a1", &E::a1, "1/s", "stage-1 gain, eq. (3)", positive()),
-      field("a2", &E::a2, "1/s", "stage-2 gain, eq. (4)", positive()),
-      field("lambda_o", &E::lambda_o, "1/s", "decay rate of the estimator bounds", positive()),
-      field("rho_o", &E::rho_o, "m, m/s", "steady-state bound of both stages", positive()),
-      field("rho_o0", &E::rho_o0, "m, m/s", "initial bound of both stages (>= rho_o)", positive()),
-      field("jump_threshold", &E::jump_threshold, "m", "a sample this far from the prediction is a jump; 0 = off",
+      field("a1", &E::a1, "1/s", "velocity estimator's stage-1 gain, eq. (3): z1 follows the target sample",
+            positive()),
+      field("a2", &E::a2, "1/s",
+            "velocity estimator's stage-2 gain, eq. (4): z2, the velocity estimate v_hat, follows stage 1's rate",
+            positive()),
+      field("lambda_o", &E::lambda_o, "1/s", "decay rate of the velocity estimator's bounds rho_o(t)", positive()),
+      field("rho_o", &E::rho_o, "m, m/s", "steady-state bound of both velocity-estimator stages (position, velocity)",
+            positive()),
+      field("rho_o0", &E::rho_o0, "m, m/s",
+            "initial bound rho_o(0) of both velocity-estimator stages at each (re)start, >= rho_o", positive()),
+      field("jump_threshold", &E::jump_threshold, "m",
+            "a target sample farther than this from the prediction (and from the last motion repeated) is a "
+            "relocalisation jump: the estimator moves with it instead of differentiating it; 0: off",
             nonNegative()),
       field("max_acceleration", &E::max_acceleration, "m/s^2",
-            "the target's rate changes by at most this: the jump rule's tolerance, and the recommended law's "
-            "feed-forward follows v_hat no faster (0: no bound there)", nonNegative()),
+            "the target's rate may change by this times the sample interval per sample: the jump rule's tolerance "
+            "(1 Hz samples of a 0.8 m/s^2 target are motion), and the recommended law's feed-forward follows v_hat "
+            "no faster (0: no bound there)",
+            nonNegative()),
   };
   return table;
 }

@@ -10,13 +10,24 @@ namespace core {
 const FieldTable<ObstacleTrackerConfig>& obstacleTrackerFields() {
   using T = ObstacleTrackerConfig;
   static const FieldTable<T> table = {
-      field("gate", &T::gate, "m", "largest distance between a track's prediction and a detection", positive()),
-      field("position_gain", &T::position_gain, "-", "alpha of the alpha-beta filter", interval(0, true, 1, false)),
-      field("velocity_gain", &T::velocity_gain, "-", "beta of the alpha-beta filter", interval(0, true, 2, true)),
-      field("max_speed", &T::max_speed, "m/s", "velocities are clamped to this", positive()),
-      field("still_speed", &T::still_speed, "m/s", "slower tracks count as static", nonNegative()),
-      field("forget_after", &T::forget_after, "s", "a track unseen this long is dropped", duration()),
-      field("min_hits", &T::min_hits, "-", "matches before a track's velocity is used", atLeast(1)),
+      field("gate", &T::gate, "m",
+            "largest distance between a track's predicted centre and a detection it is matched to (nearest pairs "
+            "first)",
+            positive()),
+      field("position_gain", &T::position_gain, "-",
+            "alpha of the alpha-beta filter, in (0, 1]: the share of the residual added to the predicted centre",
+            interval(0, true, 1, false)),
+      field("velocity_gain", &T::velocity_gain, "-",
+            "beta of the alpha-beta filter, in (0, 2): the velocity gains beta x residual / time since last seen",
+            interval(0, true, 2, true)),
+      field("max_speed", &T::max_speed, "m/s", "track velocities are clamped to this", positive()),
+      field("still_speed", &T::still_speed, "m/s", "slower tracks count as static (no velocity reported)",
+            nonNegative()),
+      field("forget_after", &T::forget_after, "s",
+            "a track unseen this long is dropped (until then it coasts at its velocity)", duration()),
+      field("min_hits", &T::min_hits, "-",
+            "detections of a track, the first included, before its velocity is used (until then it is static)",
+            atLeast(1)),
   };
   return table;
 }

@@ -32,14 +32,21 @@ struct Box {
 const FieldTable<ScanObstacleConfig>& scanObstacleFields() {
   using S = ScanObstacleConfig;
   static const FieldTable<S> table = {
-      field("cluster_tolerance", &S::cluster_tolerance, "m", "max gap between consecutive points of one cluster",
-            positive()),
-      field("max_disk_radius", &S::max_disk_radius, "m", "bound on each obstacle disk's radius", boundedRadius()),
-      field("min_disk_radius", &S::min_disk_radius, "m", "radius of a one-point disk, floor of all disks",
+      field("cluster_tolerance", &S::cluster_tolerance, "m",
+            "max gap between consecutive points (in scan order) of one cluster", positive()),
+      field("max_disk_radius", &S::max_disk_radius, "m",
+            "bound on each obstacle disk's radius: a cluster is cut into disks no larger, so a wall becomes a row "
+            "of disks and u_c does not grow with the beam count",
             boundedRadius()),
-      field("min_cluster_points", &S::min_cluster_points, "-", "smaller clusters are noise", atLeast(1)),
+      field("min_disk_radius", &S::min_disk_radius, "m",
+            "radius of a one-point disk, floor of all disks (<= max_disk_radius)", boundedRadius()),
+      field("min_cluster_points", &S::min_cluster_points, "-",
+            "clusters of fewer points are dropped as noise (1 keeps thin table legs)", atLeast(1)),
       // +inf allowed: no limit besides the scan's range_max.
-      field("max_range", &S::max_range, "m", "beams farther than this are ignored", allowInfinite(positive())),
+      field("max_range", &S::max_range, "m",
+            "beams farther than this are ignored, besides the scan's range_max (in YAML write 1.0e+9: YAML 1.1 "
+            "reads 1.0e9 as a string)",
+            allowInfinite(positive())),
   };
   return table;
 }

@@ -7,16 +7,26 @@ namespace {
 FieldTable<ActuatorLimits> makeActuatorRows() {
   using A = ActuatorLimits;
   return {
-      field("max_velocity", &A::max_velocity, "m/s", "the base's speed ceiling, body and each wheel (MaxVelocity)",
+      field("max_velocity", &A::max_velocity, "m/s",
+            "the base's speed ceiling, for the body and each wheel (MaxVelocity)", positive()),
+      field("max_rot_velocity", &A::max_rot_velocity, "rad/s",
+            "the base's turn-rate ceiling (MaxRVelocity; the default is 300 deg/s)", positive()),
+      field("trans_accel", &A::trans_accel, "m/s^2",
+            "firmware ramp while the speed grows (TransAccel; the default is MobileSim's amigo model)", positive()),
+      field("trans_decel", &A::trans_decel, "m/s^2",
+            "firmware ramp while the speed shrinks (TransDecel; the default is MobileSim's amigo model)", positive()),
+      field("rot_accel", &A::rot_accel, "rad/s^2",
+            "firmware ramp while the turn rate grows in magnitude (RotAccel; the default is ARIA's 100 deg/s^2 "
+            "without a CONFIGpac)",
             positive()),
-      field("max_rot_velocity", &A::max_rot_velocity, "rad/s", "the base's turn-rate ceiling (MaxRVelocity)",
-            positive()),
-      field("trans_accel", &A::trans_accel, "m/s^2", "firmware ramp while |v| grows (TransAccel)", positive()),
-      field("trans_decel", &A::trans_decel, "m/s^2", "firmware ramp while |v| shrinks (TransDecel)", positive()),
-      field("rot_accel", &A::rot_accel, "rad/s^2", "firmware ramp while |omega| grows (RotAccel)", positive()),
-      field("rot_decel", &A::rot_decel, "rad/s^2", "firmware ramp while |omega| shrinks (RotDecel)", positive()),
-      field("sip_cycle", &A::cycle, "s", "firmware cycle: one SIP, and one command sample, per cycle", duration()),
-      field("latency", &A::latency, "s", "from a command's arrival to its first effect on the wheels",
+      field("rot_decel", &A::rot_decel, "rad/s^2",
+            "firmware ramp while the turn rate shrinks in magnitude (RotDecel)", positive()),
+      field("sip_cycle", &A::cycle, "s",
+            "firmware cycle: one SIP, and one command sample, per cycle (the driver's diagnostics warn below half "
+            "this SIP rate)",
+            duration()),
+      field("latency", &A::latency, "s",
+            "from a command's arrival to its first effect on the wheels (a command takes effect a cycle later)",
             durationOrZero()),
   };
 }
@@ -24,14 +34,22 @@ FieldTable<ActuatorLimits> makeActuatorRows() {
 FieldTable<RobotDescription> makeRows() {
   using R = RobotDescription;
   FieldTable<R> t = {
-      field("robot_radius", &R::robot_radius, "m", "body radius (RobotRadius)", boundedRadius()),
+      field("robot_radius", &R::robot_radius, "m", "body radius (ARIA RobotRadius)", boundedRadius()),
       field("robot_width", &R::robot_width, "m", "body width (RobotWidth)", boundedRadius()),
-      field("robot_length", &R::robot_length, "m", "body length (RobotLength)", boundedRadius()),
+      field("robot_length", &R::robot_length, "m", "body length (RobotLength: front 160 + rear 170 mm)",
+            boundedRadius()),
   };
   include(&t, "", &R::dynamics, actuatorLimitsFields());
-  t.push_back(field("v_max", &R::v_max, "m/s", "the driver's diamond half-width in v (<= max_velocity)", positive()));
-  t.push_back(
-      field("w_max", &R::w_max, "rad/s", "the driver's diamond half-width in omega (<= max_rot_velocity)", positive()));
+  t.push_back(field("v_max", &R::v_max, "m/s",
+                    "half-width in v of the diamond abs(v)/v_max + abs(omega)/w_max <= 1 the driver holds every "
+                    "command to, <= max_velocity; tracking's and teleop's limits default to it and may only be "
+                    "smaller, a driver's ~v_max may tighten it. The robot file is its one home",
+                    positive()));
+  t.push_back(field("w_max", &R::w_max, "rad/s",
+                    "half-width in omega of the diamond the driver holds every command to, <= max_rot_velocity; "
+                    "tracking's and teleop's limits default to it and may only be smaller, a driver's ~w_max may "
+                    "tighten it",
+                    positive()));
   return t;
 }
 

@@ -74,6 +74,11 @@ struct Field {
   bool live = false;  // changeable at run time (dynamic_reconfigure)
   std::function<FieldValue(const C&)> get;
   std::function<void(C&, const FieldValue&)> set;  // the value has the field's type
+  // The default as the docs and YAML comments say it when the struct's is not the whole story
+  // ("the robot file's v_max"); empty: the default-constructed struct's value.
+  std::string default_text;
+  // Live rows: dynamic_reconfigure's range (the generated .cfg's min and max).
+  double reconfigure_min = 0.0, reconfigure_max = 0.0;
 };
 
 template <class C>
@@ -106,10 +111,20 @@ Field<C> field(std::string key, T C::*member, std::string unit, std::string mean
   return f;
 }
 
-// The same row, changeable at run time.
+// The same row, changeable at run time between `min` and `max` (dynamic_reconfigure's range,
+// written into the generated .cfg; the bounds still judge every value).
 template <class C>
-Field<C> live(Field<C> f) {
+Field<C> live(Field<C> f, double min, double max) {
   f.live = true;
+  f.reconfigure_min = min;
+  f.reconfigure_max = max;
+  return f;
+}
+
+// The same row, its default described as `text` in the generated docs and YAML comments.
+template <class C>
+Field<C> defaultText(Field<C> f, std::string text) {
+  f.default_text = std::move(text);
   return f;
 }
 
@@ -124,6 +139,9 @@ Field<C> nested(S C::*member, const Field<S>& row, const std::string& prefix = "
   f.type = row.type;
   f.bounds = row.bounds;
   f.live = row.live;
+  f.default_text = row.default_text;
+  f.reconfigure_min = row.reconfigure_min;
+  f.reconfigure_max = row.reconfigure_max;
   f.get = [member, get = row.get](const C& c) { return get(c.*member); };
   f.set = [member, set = row.set](C& c, const FieldValue& v) { set(c.*member, v); };
   return f;
@@ -140,7 +158,7 @@ void include(FieldTable<C>* into, const std::string& prefix, S C::*member, const
 template <class C, class B>
 void includeBase(FieldTable<C>* into, const FieldTable<B>& base) {
   for (const Field<B>& b : base) {
-    Field<C> f = {b.key, b.unit, b.meaning, b.type, b.bounds, b.live, {}, {}};
+    Field<C> f = {b.key, b.unit, b.meaning, b.type, b.bounds, b.live, {}, {}, b.default_text, b.reconfigure_min, b.reconfigure_max};
     f.get = [get = b.get](const C& c) { return get(static_cast<const B&>(c)); };
     f.set = [set = b.set](C& c, const FieldValue& v) { set(static_cast<B&>(c), v); };
     into->push_back(std::move(f));
