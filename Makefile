@@ -30,7 +30,7 @@ RESULTS := $(WS)/build/test_results
 timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
 
 PHONY := deps deps-workstation deps-robot build test two-machines soak demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
-PHONY += test-under-load pedestrians
+PHONY += test-under-load pedestrians docs
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
@@ -178,6 +178,12 @@ udev: ## install config/udev/99-amigobot.rules (stable /dev/amigobot, /dev/laser
 
 clean: ## remove the build workspace (and a .ws/ or .ws-install/ left inside the package by older versions)
 	rm -rf $(WS) $(ROOT)/.ws $(ROOT)/.ws-install
+
+# The YAML comments of config/, the docs' parameter tables and cfg/*.cfg, written from the field
+# tables (scripts/tools/param_docs.py); `make test` fails while one is stale.
+docs: $(WS)/src/amigobot_tracking ## rewrite the parameter descriptions (config/*.yaml comments, docs tables, cfg/*.cfg) from the field tables
+	$(CATKIN) param_tables
+	$(ROOT)/scripts/tools/param_docs.py --param-tables $(WS)/devel/lib/amigobot_tracking/param_tables --write $(ROOT)
 
 where: ## print the catkin workspace folder (source WS/devel/setup.bash for the ROS environment)
 	@echo $(WS)

@@ -42,6 +42,12 @@ if(CATKIN_ENABLE_TESTING)
   amigobot_add_check(install_deps_lock_wait ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_install_deps.py
                      ${PROJECT_SOURCE_DIR}/scripts/setup/install_deps.sh)
   # Every Makefile target has its one-line `make help` entry (help fails naming one without).
+  # The parameter descriptions written from the field tables (`make docs`) are fresh: YAML
+  # comments, the docs' parameter tables, the .cfg files (scripts/tools/param_docs.py).
+  amigobot_add_check(param_docs_fresh ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/tools/param_docs.py
+                     --param-tables ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/param_tables --check ${PROJECT_SOURCE_DIR})
+  amigobot_add_check(param_docs_selftest ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_param_docs.py
+                     ${PROJECT_SOURCE_DIR}/scripts/tools/param_docs.py)
   amigobot_add_check(make_help env -u MAKEFLAGS -u MAKELEVEL make -s -C ${PROJECT_SOURCE_DIR} help)
 
   # Every launch configuration of test/launch_checks.txt, in one process, one test case each.

@@ -68,7 +68,7 @@ std::map<std::string, Row> localizationRows() {
 
 const char kLocalizationHeader[] = "| Localization parameter |";
 const char kTrackingHeader[] = "| Parameter | Type | Unit | Default | Meaning |";
-const char kDriverHeader[] = "| Parameter | Type | Default | Meaning |";
+const char kDriverHeader[] = "| Driver parameter | Type | Unit | Default | Meaning |";
 
 std::vector<std::string> lines(const std::string& relative) {
   std::ifstream in(std::string(AMIGOBOT_SOURCE_DIR) + "/" + relative);
