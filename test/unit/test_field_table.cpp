@@ -26,11 +26,13 @@ struct Demo {
   Inner inner;
 };
 
-FieldTable<Inner> innerTable() { return {field("gain", &Inner::gain, "1/s", "a gain", positive())}; }
+FieldTable<Inner> innerTable() {
+  return {defaultText(field("gain", &Inner::gain, "1/s", "a gain", positive()), "two")};
+}
 
 FieldTable<Demo> demoTable() {
   FieldTable<Demo> t = {
-      live(field("rate", &Demo::rate, "Hz", "a rate", interval(0.0, true, 100.0, false))),
+      live(field("rate", &Demo::rate, "Hz", "a rate", interval(0.0, true, 100.0, false)), 0.0, 100.0),
       field("count", &Demo::count, "-", "a count", atLeast(1)),
       field("on", &Demo::on, "-", "a switch"),
       field("mode", &Demo::mode, "-", "a mode", oneOf({"fast", "slow"})),
@@ -87,6 +89,14 @@ TEST(FieldTable, VisitsEveryRowInOrderWithDefaults) {
   EXPECT_EQ(std::get<int>(defaultValue(t[1])), 3) << "the default comes from Demo{}, not from d";
   EXPECT_TRUE(t[0].live);
   EXPECT_FALSE(t[1].live);
+  EXPECT_EQ(t[0].reconfigure_max, 100.0);
+  // A nested row keeps what the generated docs and .cfg read: its default's words, its range.
+  EXPECT_EQ(t[4].default_text, "two");
+  const Field<Demo> ranged = nested(&Demo::inner, live(innerTable()[0], 0.5, 4.0), "x/");
+  EXPECT_TRUE(ranged.live);
+  EXPECT_EQ(ranged.reconfigure_min, 0.5);
+  EXPECT_EQ(ranged.reconfigure_max, 4.0);
+  EXPECT_EQ(ranged.default_text, "two");
 }
 
 // What reconfigure changes: the live rows only (here "rate"), compared and logged the same way.
