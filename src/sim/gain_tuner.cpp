@@ -256,9 +256,10 @@ std::string tunedGainsYaml(const TuningResult& result, const TuningSuite& suite,
   for (const auto& [key, value] : result.best.gains) {
     const core::Field<core::ControllerConfig>* f = core::findField(core::controllerFields(), key);
     const std::string row = key + ": " + core::formatValue(value);
-    std::snprintf(buf, sizeof buf, "%-28s # double, %s, tuned (start %.4g): %s\n", row.c_str(), f->unit.c_str(),
-                  result.start.gains.at(key), f->meaning.c_str());
-    out << buf;
+    // The meaning is appended whole: a row's meaning can outgrow buf (a cut line ran into the next key).
+    std::snprintf(buf, sizeof buf, "%-28s # double, %s, tuned (start %.4g): ", row.c_str(), f->unit.c_str(),
+                  result.start.gains.at(key));
+    out << buf << f->meaning << "\n";
   }
   return out.str();
 }
