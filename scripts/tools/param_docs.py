@@ -7,7 +7,9 @@ PROGRAM is the param_tables executable (it prints every parameter set's field ta
 From those tables alone this writes:
   - the comment of every key line of the nodes' YAML files in config/ that names a field
     (`key: value  # TYPE, UNIT, DEFAULT: MEANING`, " (reconfigurable)" for live rows); a line's
-    value and the file's other comments are the file's own;
+    value and the file's other comments are the file's own; a field that none of its set's home
+    files names (each row's "home") gets a line there, its default as the value (commented out
+    when the default is described in words), at the end of its mapping;
   - each parameter table of the docs between `<!-- param_docs: SET -->` and
     `<!-- /param_docs -->` (one row per field, in table order);
   - the gen.add lines of cfg/*.cfg (the live rows, their range and default).
@@ -59,8 +61,51 @@ def yaml_comment(row):
     return text + (" (reconfigurable)" if row["live"] else "")
 
 
-def render_yaml(lines, sets):
-    """The YAML file's lines with the comment of every key line that names a field rewritten."""
+def key_paths(lines):
+    """(line index, indent, path, rest after 'key:') of every key line, commented-out ones too."""
+    found, parents = [], []  # parents: (indent, key) of the enclosing mappings
+    for i, line in enumerate(lines):
+        m = KEY_LINE.match(line)
+        if not m:
+            continue
+        indent, key, rest = m.group(1), m.group(3), m.group(4)
+        while parents and parents[-1][0] >= len(indent):
+            parents.pop()
+        found.append((i, len(indent), "/".join([p[1] for p in parents] + [key]), rest))
+        hash_at = comment_start(rest)
+        if not (rest if hash_at is None else rest[:hash_at]).strip():
+            parents.append((len(indent), key))
+    return found
+
+
+def add_missing(lines, rows):
+    """`lines` with a key line for each row (full path in 'path'), at the end of its mapping."""
+    lines = list(lines)
+    for row in rows:
+        parent, _, key = row["path"].rpartition("/")
+        paths = key_paths(lines)
+        value = "" if row.get("described") else f" {row['default']}"
+        line_of = {p: (i, indent) for i, indent, p, _ in paths}
+        if parent and parent not in line_of:
+            lines.append(f"{parent}:")
+            paths = key_paths(lines)
+            line_of = {p: (i, indent) for i, indent, p, _ in paths}
+        if parent:
+            start, indent = line_of[parent]
+            inside = [i for i, _, p, _ in paths if p.startswith(parent + "/")]
+            at, pad = (max(inside) if inside else start) + 1, " " * (indent + 2)
+        else:
+            at, pad = len(lines), ""
+            while at > 0 and not lines[at - 1].strip():
+                at -= 1
+        lines.insert(at, f"{pad}{'' if value else '# '}{key}:{value}")
+    return lines
+
+
+def render_yaml(lines, sets, missing=()):
+    """The YAML file's lines with `missing` rows added and the comment of every key line that
+    names a field rewritten."""
+    lines = add_missing(lines, missing)
     out, parents = [], []  # parents: (indent, key) of the enclosing mappings
     for line in lines:
         m = KEY_LINE.match(line)
@@ -165,6 +210,16 @@ def main():
     tables = json.loads(subprocess.run([args.param_tables], capture_output=True, text=True, check=True).stdout)
     by_key = {name: {r["key"]: r for r in rows} for name, rows in tables.items()}
 
+    # A row is missing when none of its set's home files names it; it gets a line in its own.
+    texts = {rel: open(os.path.join(args.root, rel), encoding="utf-8").read().split("\n") for rel in YAML_FILES}
+    missing = {rel: [] for rel in YAML_FILES}
+    for rel, prefixes in YAML_FILES.items():
+        for prefix, name in prefixes.items():
+            homes = {r["home"] for r in tables[name] if r["home"]}
+            named = {p for h in homes for _, _, p, _ in key_paths(texts.get(h, []))}
+            for r in tables[name]:
+                if r["home"] == rel and prefix + r["key"] not in named:
+                    missing[rel].append(dict(r, path=prefix + r["key"]))
     stale = 0
     targets = [(p, "yaml") for p in YAML_FILES] + [(p, "doc") for p in DOC_FILES] + [(p, "cfg") for p in CFG_FILES]
     for rel, kind in targets:
@@ -172,7 +227,7 @@ def main():
         with open(path, encoding="utf-8") as f:
             old = f.read().split("\n")
         if kind == "yaml":
-            new = render_yaml(old, {prefix: by_key[name] for prefix, name in YAML_FILES[rel].items()})
+            new = render_yaml(old, {prefix: by_key[name] for prefix, name in YAML_FILES[rel].items()}, missing[rel])
         elif kind == "doc":
             new = render_doc(old, tables, rel)
         else:

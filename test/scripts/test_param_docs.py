@@ -41,6 +41,18 @@ class Yaml(unittest.TestCase):
     def test_a_hash_inside_quotes_is_part_of_the_value(self):
         self.assertEqual(self.render('frame: "a#b"   # old')[0], 'frame: "a#b"   # string, -, "map": a frame | with a bar')
 
+    def test_a_missing_row_gets_a_line_in_its_mapping(self):
+        gain = dict(SET["estimator/a1"], path="estimator/a1")
+        out = docs.render_yaml(["k_d: 1   # x", "estimator:", "  a2: 1", "frame: map", ""], {"": SET}, [gain])
+        self.assertEqual(out[3], "  a1: 1" + " " * 21 + " # double, 1/s, 1: stage-1 gain")
+        self.assertEqual(out[4:], ["frame: map" + " " * 18 + ' # string, -, "map": a frame | with a bar', ""])
+
+    def test_a_missing_row_described_in_words_is_commented_out_at_the_end(self):
+        row = dict(SET["k_d"], path="k_d", described=True, default="the robot file's")
+        out = docs.render_yaml(["frame: map", "", ""], {"": SET}, [row])
+        self.assertEqual(out[1], "# k_d:" + " " * 22 + " # double, m/s, 0.15: tracking gain (reconfigurable)")
+        self.assertEqual(out[2:], ["", ""])
+
     def test_other_keys_and_prose_stay(self):
         lines = ["# Each key: type, unit, default, meaning.", "other: 1   # mine", "a1: 2.0  # not nested: no row"]
         self.assertEqual(self.render(*lines), lines)

@@ -65,13 +65,16 @@ std::string defaultWord(const core::FieldValue& value) {
   return core::formatValue(value);
 }
 
+// `home`: the YAML file of config/ where a row that no file of its set names gets its line.
 template <class C>
-void addRows(json* rows, const std::string& prefix, const core::FieldTable<C>& table) {
+void addRows(json* rows, const std::string& prefix, const core::FieldTable<C>& table, const std::string& home) {
   for (const core::Field<C>& f : table) {
     json row = {{"key", prefix + f.key},
+                {"home", home},
                 {"type", typeWord(f.type)},
                 {"unit", f.unit},
                 {"default", f.default_text.empty() ? defaultWord(core::defaultValue(f)) : f.default_text},
+                {"described", !f.default_text.empty()},  // the default in words: no value to write
                 {"meaning", f.meaning},
                 {"bounds", core::describeBounds(f.type, f.bounds)},
                 {"live", f.live}};
@@ -90,18 +93,18 @@ int main(int argc, char** argv) {
   }
   json sets = json::object();
   json& tracking = sets["tracking"] = json::array();
-  addRows(&tracking, "", ros_layer::trackingNodeFields());
-  addRows(&tracking, "", core::controllerFields());
-  addRows(&tracking, "scan/", core::scanObstacleFields());
-  addRows(&tracking, "obstacle_tracker/", core::obstacleTrackerFields());
-  addRows(&(sets["driver"] = json::array()), "", ros_layer::driverFields());
-  addRows(&(sets["laser"] = json::array()), "", ros_layer::laserFields());
-  addRows(&(sets["localization"] = json::array()), "", localization::localizationFields());
+  addRows(&tracking, "", ros_layer::trackingNodeFields(), "config/tracking.yaml");
+  addRows(&tracking, "", core::controllerFields(), "config/controller_experiment.yaml");  // the built-in defaults
+  addRows(&tracking, "scan/", core::scanObstacleFields(), "config/tracking.yaml");
+  addRows(&tracking, "obstacle_tracker/", core::obstacleTrackerFields(), "config/tracking.yaml");
+  addRows(&(sets["driver"] = json::array()), "", ros_layer::driverFields(), "config/driver.yaml");
+  addRows(&(sets["laser"] = json::array()), "", ros_layer::laserFields(), "config/laser.yaml");
+  addRows(&(sets["localization"] = json::array()), "", localization::localizationFields(), "config/localization.yaml");
   json& keyboard = sets["keyboard_teleop"] = json::array();
-  addRows(&keyboard, "", teleop::keyboardFields());
-  addRows(&keyboard, "", ros_layer::robotSourceFields());  // read by the program beside its table
-  addRows(&(sets["joystick_teleop"] = json::array()), "", teleop::joystickFields());
-  addRows(&(sets["robot"] = json::array()), "", aria::robotParamsFields());
+  addRows(&keyboard, "", teleop::keyboardFields(), "config/teleop.yaml");
+  addRows(&keyboard, "", ros_layer::robotSourceFields(), "config/teleop.yaml");  // read by the program beside its table
+  addRows(&(sets["joystick_teleop"] = json::array()), "", teleop::joystickFields(), "config/teleop.yaml");
+  addRows(&(sets["robot"] = json::array()), "", aria::robotParamsFields(), "");  // robot files: not generated
   std::cout << sets.dump(1) << "\n";
   return 0;
 }
