@@ -207,11 +207,22 @@ def main():
     mode.add_argument("--check", action="store_true", help="exit 1 naming each stale file")
     parser.add_argument("root", help="the package's source folder")
     args = parser.parse_args()
-    tables = json.loads(subprocess.run([args.param_tables], capture_output=True, text=True, check=True).stdout)
+    try:
+        run = subprocess.run([args.param_tables], capture_output=True, text=True, check=True)
+        tables = json.loads(run.stdout)
+    except (OSError, subprocess.CalledProcessError, json.JSONDecodeError) as err:
+        sys.exit(f"param_docs: cannot read the field tables from {args.param_tables}: {err}"
+                 f"{' (' + err.stderr.strip() + ')' if getattr(err, 'stderr', None) else ''} (build it: make docs)")
     by_key = {name: {r["key"]: r for r in rows} for name, rows in tables.items()}
 
     # A row is missing when none of its set's home files names it; it gets a line in its own.
-    texts = {rel: open(os.path.join(args.root, rel), encoding="utf-8").read().split("\n") for rel in YAML_FILES}
+    texts = {}
+    for rel in YAML_FILES:
+        try:
+            with open(os.path.join(args.root, rel), encoding="utf-8") as f:
+                texts[rel] = f.read().split("\n")
+        except OSError as err:
+            sys.exit(f"param_docs: cannot read {rel}: {err.strerror}")
     missing = {rel: [] for rel in YAML_FILES}
     for rel, prefixes in YAML_FILES.items():
         for prefix, name in prefixes.items():
