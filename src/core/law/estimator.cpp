@@ -15,9 +15,10 @@ const FieldTable<EstimatorConfig>& estimatorFields() {
             "velocity estimator's stage-2 gain, eq. (4): z2, the velocity estimate v_hat, follows stage 1's rate",
             positive()),
       field("lambda_o", &E::lambda_o, "1/s", "decay rate of the velocity estimator's bounds rho_o(t)", positive()),
-      field("rho_o", &E::rho_o, "m, m/s", "steady-state bound of both velocity-estimator stages (position, velocity)",
+      field("rho_o", &E::rho_o, "m and m/s",
+            "steady-state bound of both velocity-estimator stages (position, velocity)",
             positive()),
-      field("rho_o0", &E::rho_o0, "m, m/s",
+      field("rho_o0", &E::rho_o0, "m and m/s",
             "initial bound rho_o(0) of both velocity-estimator stages at each (re)start, >= rho_o", positive()),
       field("jump_threshold", &E::jump_threshold, "m",
             "a target sample farther than this from the prediction (and from the last motion repeated) is a "
