@@ -105,31 +105,19 @@ def add_missing(lines, rows):
 def render_yaml(lines, sets, missing=()):
     """The YAML file's lines with `missing` rows added and the comment of every key line that
     names a field rewritten."""
-    lines = add_missing(lines, missing)
-    out, parents = [], []  # parents: (indent, key) of the enclosing mappings
-    for line in lines:
-        m = KEY_LINE.match(line)
-        if not m:
-            out.append(line)
-            continue
-        indent, commented, key, rest = m.group(1), m.group(2) or "", m.group(3), m.group(4)
-        while parents and parents[-1][0] >= len(indent):
-            parents.pop()
-        path = "/".join([p[1] for p in parents] + [key])
-        hash_at = comment_start(rest)
-        value = (rest if hash_at is None else rest[:hash_at]).rstrip()
-        if not value.strip():
-            parents.append((len(indent), key))  # a mapping (or a commented-out key without value)
+    out = add_missing(lines, missing)
+    for i, _, path, rest in key_paths(out):
         row = None
         for prefix, rows in sets.items():
             if path.startswith(prefix) and path[len(prefix):] in rows:
                 row = rows[path[len(prefix):]]
         if row is None:
-            out.append(line)
             continue
-        head = f"{indent}{commented}{key}:{value}"
+        line = out[i]
+        hash_at = comment_start(rest)
+        head = line[:len(line) - len(rest)] + (rest if hash_at is None else rest[:hash_at]).rstrip()
         column = len(line) - len(rest) + hash_at if hash_at is not None else 29
-        out.append(f"{head.ljust(column - 1)} # {yaml_comment(row)}")
+        out[i] = f"{head.ljust(column - 1)} # {yaml_comment(row)}"
     return out
 
 
