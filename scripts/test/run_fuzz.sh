@@ -2,6 +2,7 @@
 # Builds the libFuzzer targets of every parser with clang (ASan + UBSan) and runs each one.
 #   run_fuzz.sh --seconds S [RESULTS_DIR] [TARGET...]  each target for S seconds (make test)
 #   run_fuzz.sh --runs [RESULTS_DIR] [TARGET...]       each target for its RUNS below (make fuzz)
+#   run_fuzz.sh --test-runs [RESULTS_DIR] [TARGET...]  each target for its TEST_RUNS (make test)
 # With RESULTS_DIR, each target writes its own JUnit case there (fuzz-NAME.xml), pass or fail.
 # Seeds come from the repository's real files (configs, worlds, maps, scenarios) where there
 # are some, and a few well-formed messages for the wire protocols. A crash leaves its input
@@ -10,7 +11,7 @@ set -uo pipefail
 export PATH=/usr/bin:$PATH
 MODE=${1:---seconds}
 if [ "$MODE" = --seconds ]; then SECONDS_EACH=${2:-5}; shift 2 2>/dev/null || shift $#
-elif [ "$MODE" = --runs ]; then shift
+elif [ "$MODE" = --runs ] || [ "$MODE" = --test-runs ]; then shift
 else SECONDS_EACH=$MODE; MODE=--seconds; shift; fi  # the old form: run_fuzz.sh SECONDS [RESULTS]
 RESULTS=${1:-}; shift 2>/dev/null
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -20,6 +21,12 @@ BASE=$("$ROOT/scripts/setup/workspace_dir.sh")/fuzz  # outside the package (work
 # loaders (yaml-cpp, ~1-5 k inputs/s under ASan) fewer.
 declare -A RUNS=([packet_parser]=4000000 [scip]=1500000 [cola_a]=1500000 [rplidar]=1500000
   [status_line]=1000000 [param_value]=1000000 [world]=100000 [scenario]=100000 [map]=100000)  # 10.8 M
+# make test's pass, run beside the tests at the lowest priority: about what 5 s of one core
+# reached alone on a 2-core machine (scip 49 k, world 15 k, ...), less a quarter. A count, not a
+# time, so a loaded machine takes longer instead of trying fewer inputs.
+declare -A TEST_RUNS=([packet_parser]=30000 [scip]=40000 [cola_a]=40000 [rplidar]=75000
+  [status_line]=600000 [param_value]=800000 [world]=10000 [scenario]=5000 [map]=10000)
+[ "$MODE" = --test-runs ] && for name in "${!TEST_RUNS[@]}"; do RUNS[$name]=${TEST_RUNS[$name]}; done
 ALL=(packet_parser scip cola_a rplidar status_line param_value world scenario map)
 TARGETS=("$@"); [ ${#TARGETS[@]} -eq 0 ] && TARGETS=("${ALL[@]}")
 
@@ -84,7 +91,7 @@ seeds() {  # fills $CORPUS for target $1
 junit() {  # junit NAME STATUS MESSAGE LOG
   [ -z "$RESULTS" ] && return 0
   mkdir -p "$RESULTS/amigobot_tracking"
-  local body="" length=$([ "$MODE" = --runs ] && echo "${RUNS[$1]}runs" || echo "${SECONDS_EACH}s")
+  local body="" length=$([ "$MODE" != --seconds ] && echo "${RUNS[$1]}runs" || echo "${SECONDS_EACH}s")
   [ "$2" != ok ] && body="<failure message=\"$3\"><![CDATA[$(tail -n 40 "$4" 2>/dev/null | tr -d '\000')]]></failure>"
   cat > "$RESULTS/amigobot_tracking/fuzz-$1.xml" <<XML
 <?xml version="1.0" encoding="UTF-8"?>
@@ -114,7 +121,7 @@ fuzz_one() {
   fi
   seeds "$name"  # seeds and seed write into this function's local CORPUS (bash scopes dynamically)
   local dict=(); [ "$name" = packet_parser ] && dict=(-dict="$ROOT/test/fuzz/aria.dict")
-  local length=(-max_total_time="${SECONDS_EACH:-0}"); [ "$MODE" = --runs ] && length=(-runs="${RUNS[$name]}")
+  local length=(-max_total_time="${SECONDS_EACH:-0}"); [ "$MODE" != --seconds ] && length=(-runs="${RUNS[$name]}")
   if (cd "$OUT" && "$BIN" "${length[@]}" "${dict[@]}" -max_len=4096 -rss_limit_mb=1024 -artifact_prefix="$OUT/artifacts/" \
        -print_final_stats=1 "$CORPUS") > "$LOG" 2>&1; then
     local execs rate
