@@ -5,8 +5,11 @@ Two Linux network namespaces stand in for the two Odroids, joined by one veth pa
 Wi-Fi), each with its own ROS_IP; one roscore on the tracker's machine. On each machine its
 robot's amigobot_emulator and laser_emulator (a TiM on 127.0.0.1:2111) and the shipped
 `amigobot.launch robot:=NAME` as docs/real_robot.md runs it on each Odroid (driver, TiM chain,
-localisation on the room's map; the tracker also tracks `target/base_footprint`, the target's
-own localisation, over the network); scripts/nodes/scripted_teleop.py drives the target. Then
+localisation; the tracker also tracks `target/base_footprint`, the target's own localisation,
+over the network); scripts/nodes/scripted_teleop.py drives the target. `--localization slam`
+(make test's): each robot maps the room as it goes, as in the paper's experiment, its map's
+origin at its start pose, so the tracking error the tracker computes is the difference of two
+SLAM poses; `map`: both localise on the room's map. Then
 the link is taken down for a few seconds and brought back. Judged from the emulators' ground
 truth and the tracker emulator's command journal, never from the controller's messages:
 
@@ -21,7 +24,7 @@ truth and the tracker emulator's command journal, never from the controller's me
                 0.45 s behind this machine: synchronise the clocks (chrony)"), any stop after
                 that names the clock, true |e| stays bounded
 
-Usage: two_machines.py [--results DIR] [--logs DIR] [--time-limit S]; writes DIR/two_machines.xml
+Usage: two_machines.py [--results DIR] [--logs DIR] [--localization map|slam] [--time-limit S]; writes DIR/two_machines.xml
 (JUnit, one case per line above) and prints every figure. Root, iproute2, a built workspace
 sourced. Cleans up (processes, namespaces) on every exit path; SIGALRM ends a run past
 --time-limit (default 200 s; a run takes ~100 s).
@@ -99,8 +102,10 @@ class Run:
         return self.m.start(machine, name, cmd, self.env(machine), self.logs)
 
     def ros(self, machine, *cmd, timeout=20):
+        """True when `cmd` succeeded on `machine`; self.last_output keeps what it printed."""
         r = subprocess.run(["ip", "netns", "exec", self.m.ns[machine], *cmd], env=self.env(machine),
                            capture_output=True, text=True, timeout=timeout)
+        self.last_output = "exit %d: %s" % (r.returncode, " | ".join((r.stdout + r.stderr).strip().splitlines()[-3:]))
         return r.returncode == 0 and "success: False" not in r.stdout
 
     def service(self, machine, name, timeout=40):
@@ -130,7 +135,9 @@ class Run:
                 "--range-noise", "0.005"])
         # docs/real_robot.md, "Two robots, two Odroids", with the emulators' ports for devices.
         common = ["port:=127.0.0.1:%d" % ROBOT_PORT, "laser:=sick_tim5xx", "laser_port:=127.0.0.1:%d" % LASER_PORT,
-                  "localization:=map", "map_file:=" + os.path.join(self.root, WORLDS, "two_robots_map.yaml")]
+                  "localization:=" + self.args.localization]
+        if self.args.localization == "map":
+            common.append("map_file:=" + os.path.join(self.root, WORLDS, "two_robots_map.yaml"))
         self.start("target", "target_launch", ["roslaunch", "--wait", "amigobot_tracking", "amigobot.launch",
                                                "robot:=target", "tracking:=false", *common])
         self.start("tracker", "tracker_launch", [
@@ -213,7 +220,7 @@ class Run:
         t_set = time.monotonic()
         if not self.ros("target", "rosrun", "dynamic_reconfigure", "dynparam", "set", "/target/amigobot_driver",
                         "stamp_offset", str(-CLOCK_BEHIND)):
-            raise RuntimeError("dynparam set /target/amigobot_driver stamp_offset refused")
+            raise RuntimeError("dynparam set /target/amigobot_driver stamp_offset refused (%s)" % self.last_output)
         t_applied = time.monotonic()
         time.sleep(max(0.0, t_applied + CLOCK_WATCH - time.monotonic()))
         rec.stop()
@@ -238,6 +245,9 @@ def main():
     parser.add_argument("--logs", help="folder for the processes' logs (default: a new temporary one)")
     parser.add_argument("--tracker-arg", action="append", default=[], metavar="ARG:=VALUE",
                         help="one more argument of the tracker's amigobot.launch (e.g. trails:=true: the traffic before the fix)")
+    parser.add_argument("--localization", choices=("map", "slam"), default="map",
+                        help="map: both localise on the room's map; slam: both map the room as they go (the paper's "
+                             "experiment; each map's origin at its robot's start pose, so the two share a frame)")
     parser.add_argument("--time-limit", type=float, default=200.0, help="[s] hard limit of the whole run")
     args = parser.parse_args()
     report = Report()
