@@ -115,15 +115,18 @@ void parseController(Section s, sim::ClosedLoopSetup& setup) {
 core::ReferenceSpec parseReference(Section s) {
   core::ReferenceSpec r;
   r.type = s.text("type");
-  if (r.type == "rose") {
-    r.amplitude = positive(s, "amplitude", s.number("amplitude"));
-    r.k = positive(s, "k", s.number("k"));
-    r.period_scale = positive(s, "period_scale", s.number("period_scale", 1.0));
-  } else if (r.type == "circle") {
-    r.center = s.point("center");
-    r.radius = positive(s, "radius", s.number("radius"));
-    r.period = positive(s, "period", s.number("period"));
-  } else if (r.type == "spline") {
+  const core::ReferenceCurve* curve = nullptr;
+  try {
+    curve = &core::referenceCurve(r.type);
+  } catch (const std::invalid_argument& e) {
+    fail(s.file(), s.node()["type"], s.key("type"), e.what());
+  }
+  // The curve's own keys (core::referenceCurves()); another curve's key is left unread, so
+  // finish() names it as unknown here.
+  for (const std::string& key : curve->required) s.required(key);  // "missing (required)"
+  readSection(s, core::referenceFields(), r, [&](const std::string& key) { return curve->takes(key) ? key : std::string(); });
+  if (curve->center) r.center = s.point("center");
+  if (curve->waypoints) {
     const YAML::Node points = s.required("waypoints");
     if (!points.IsSequence() || points.size() < 2)
       fail(s.file(), points, s.key("waypoints"), "expected a list of at least 2 points [x, y], got " + describe(points));
@@ -136,9 +139,6 @@ core::ReferenceSpec parseReference(Section s) {
         fail(s.file(), points[i], s.key("waypoints") + "[" + std::to_string(i) + "]",
              "within 1 mm of the previous waypoint (a spline needs distinct consecutive points)");
     }
-    r.duration = positive(s, "duration", s.number("duration"));
-  } else {
-    fail(s.file(), s.node()["type"], s.key("type"), "unknown reference type '" + r.type + "' (rose, circle, spline)");
   }
   // The bounds the factory holds every spec to (core::referenceFields(), e.g. radius <= 100 m),
   // checked here so a refusal names this file and key before anything runs.

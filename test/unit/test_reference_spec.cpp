@@ -58,3 +58,25 @@ TEST(ReferenceSpec, RefusesNamingTheKey) {
   spec.waypoints = {{0.0, 0.0}};
   EXPECT_NE(refusal(spec).find("at least 2 waypoints"), std::string::npos) << refusal(spec);
 }
+
+// The list of curves names only keys of the table, each curve's own; types are listed once.
+TEST(ReferenceSpec, EachCurvesKeysAreRowsOfTheTable) {
+  for (const ReferenceCurve& curve : referenceCurves()) {
+    for (const auto* keys : {&curve.required, &curve.optional})
+      for (const std::string& key : *keys) {
+        bool found = false;
+        for (const auto& row : referenceFields()) found = found || row.key == key;
+        EXPECT_TRUE(found) << curve.type << ": " << key;
+        EXPECT_NE(key, "type");
+      }
+    EXPECT_EQ(&referenceCurve(curve.type), &curve);
+  }
+  EXPECT_EQ(referenceTypes().size(), referenceCurves().size());
+  try {
+    referenceCurve("lemniscate");
+    FAIL() << "no refusal";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'lemniscate' (rose, circle, spline, waypoints)"), std::string::npos) << e.what();
+  }
+}
+

@@ -71,6 +71,27 @@ TEST(SimScenario, AcceptsCircleAndSplineReferences) {
   EXPECT_NEAR(spline.makeReference()->at(60.0).position.y(), 2.0, 1e-12);
 }
 
+// Every curve of core::referenceCurves() is a scenario's too (waypoints was the publisher's only).
+TEST(SimScenario, AcceptsEveryCurveOfTheReferenceList) {
+  const auto walk = sim::parseScenario(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}",
+                                                "{type: waypoints, waypoints: [[3, 0], [3, 2]], speed: 0.5, loop: true}"),
+                                       "w.yaml");
+  EXPECT_EQ(walk.reference.type, "waypoints");
+  EXPECT_TRUE(walk.reference.loop);
+  EXPECT_NEAR(walk.makeReference()->at(2.0).position.y(), 1.0, 1e-9);
+}
+
+// A key of another curve is not this curve's: named as unknown, not silently ignored.
+TEST(SimScenario, RefusesAnotherCurvesKeyNamingIt) {
+  expectRefused(replaced(kMinimum, "period_scale: 1.0", "period_scale: 1.0, radius: 2"), "reference.radius");
+  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}",
+                         "{type: circle, center: [0, 0], radius: 2, period: 20, duration: 5}"),
+                "reference.duration");
+  expectRefused(replaced(kMinimum, "{type: rose, amplitude: 3.0, k: 3, period_scale: 1.0}",
+                         "{type: circle, center: [0, 0], period: 20}"),
+                "reference.radius");
+}
+
 TEST(SimScenario, RefusesASplineStepNearZero) {
   // A step of 1e-320 m made the knot spacing underflow: std::invalid_argument escaped
   // without the file's name.

@@ -97,9 +97,9 @@ struct PublisherConfig {
 
 std::unique_ptr<Reference> makeReference(const ros::NodeHandle& pnh, PublisherConfig c) {
   try {
-    if (c.reference.type == "circle") readPoint(pnh, "reference/center", &c.reference.center);
-    if (c.reference.type == "spline" || c.reference.type == "waypoints")
-      c.reference.waypoints = readWaypoints(pnh, "reference/waypoints");
+    const amigobot_tracking::core::ReferenceCurve& curve = amigobot_tracking::core::referenceCurve(c.reference.type);
+    if (curve.center) readPoint(pnh, "reference/center", &c.reference.center);
+    if (curve.waypoints) c.reference.waypoints = readWaypoints(pnh, "reference/waypoints");
     return amigobot_tracking::core::makeReference(c.reference);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string(e.what()).find("parameter") == 0

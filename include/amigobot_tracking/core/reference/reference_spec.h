@@ -4,6 +4,7 @@
 // the rose's own time scale in both; the publisher's top-level `time_scale` is its slow-down).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,21 @@ struct ReferenceSpec {
   bool loop = false;                                         // waypoints
 };
 
+// One curve: its name (`type`), the keys it takes and how it is built. referenceCurves() is
+// the one list of them: the factory, the simulator's scenario reader and reference_publisher
+// ask it which keys a curve takes instead of comparing names.
+struct ReferenceCurve {
+  std::string type;
+  std::vector<std::string> required, optional;  // its scalar keys (rows of referenceFields())
+  bool center = false;                          // takes `center` [x, y] (required)
+  bool waypoints = false;                       // takes `waypoints`, >= 2 points [x, y] (required)
+  std::function<std::unique_ptr<Reference>(const ReferenceSpec&)> make;
+
+  bool takes(const std::string& key) const;  // one of its scalar keys
+};
+const std::vector<ReferenceCurve>& referenceCurves();
+// The curve named `type`; std::invalid_argument "unknown reference type 'X' (rose, circle, ...)".
+const ReferenceCurve& referenceCurve(const std::string& type);
 // The curves' names, as `type` takes them.
 const std::vector<std::string>& referenceTypes();
 // The scalar keys (type and the numbers; center and waypoints are lists, read by each reader).
