@@ -16,6 +16,7 @@
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/link/tcp_client.h"
 #include "amigobot_tracking/sensors/cola_a.h"
+#include "amigobot_tracking/sensors/cola_protocol.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 

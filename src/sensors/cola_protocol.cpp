@@ -2,7 +2,7 @@
 // (cola_device.cpp), the emulator's session (cola_session.cpp). ASCII, no checksum.
 #include <cmath>
 
-#include "amigobot_tracking/sensors/laser_protocol.h"
+#include "amigobot_tracking/sensors/cola_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {

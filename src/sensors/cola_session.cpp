@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "amigobot_tracking/sensors/cola_a.h"
+#include "amigobot_tracking/sensors/cola_protocol.h"
 #include "amigobot_tracking/sensors/laser_session.h"
 
 namespace amigobot_tracking {

@@ -3,7 +3,10 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/link/address.h"
+#include "amigobot_tracking/sensors/cola_protocol.h"
 #include "amigobot_tracking/sensors/laser_protocol.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
+#include "amigobot_tracking/sensors/scip_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {

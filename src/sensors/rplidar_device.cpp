@@ -27,6 +27,7 @@
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 #include "amigobot_tracking/sensors/rplidar.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {

@@ -3,7 +3,7 @@
 // emulator's session (rplidar_session.cpp); a motor the host starts and stops.
 #include <cmath>
 
-#include "amigobot_tracking/sensors/laser_protocol.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {

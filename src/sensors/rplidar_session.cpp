@@ -15,6 +15,7 @@
 
 #include "amigobot_tracking/sensors/laser_session.h"
 #include "amigobot_tracking/sensors/rplidar.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {

@@ -2,7 +2,7 @@
 // (hokuyo_device.cpp), the emulator's session (scip_session.cpp). Its data lines carry a sum.
 #include <cmath>
 
-#include "amigobot_tracking/sensors/laser_protocol.h"
+#include "amigobot_tracking/sensors/scip_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {

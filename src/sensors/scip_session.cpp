@@ -5,6 +5,7 @@
 
 #include "amigobot_tracking/sensors/laser_session.h"
 #include "amigobot_tracking/sensors/scip.h"
+#include "amigobot_tracking/sensors/scip_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {

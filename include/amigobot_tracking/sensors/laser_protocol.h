@@ -3,8 +3,8 @@
 // the emulator's session and faults, what the ROS node offers) is a virtual call or a
 // property here, so the driver, the emulator and the nodelet never branch on a protocol.
 // A model's protocol is set once by its laser_registry.cpp entry (LaserModel::protocol).
-// Adding a protocol: a class of its own (like scip_protocol.cpp) and one registry entry
-// (docs/architecture.md, "Adding a laser protocol").
+// Adding a protocol: its own files (like scip_protocol.h/.cpp: the class, its accessor, its
+// device and session) and one registry entry (docs/architecture.md, "Adding a laser protocol").
 #pragma once
 
 #include <cstdint>
@@ -52,12 +52,6 @@ class LaserProtocol {
   // the device's own ("rplidar_ros": pi - theta); empty: none.
   virtual std::string rosDriverAngleConvention() const { return ""; }
 };
-
-// The protocols (scip_protocol.cpp, cola_protocol.cpp, rplidar_protocol.cpp), which the
-// registry's models name.
-const LaserProtocol& scipProtocol();
-const LaserProtocol& colaProtocol();
-const LaserProtocol& rplidarProtocol();
 
 // Position just after the n-th `c` in `text`, or npos: where a fault damages a telegram.
 std::size_t afterNth(const std::string& text, char c, int n);
