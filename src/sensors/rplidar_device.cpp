@@ -215,7 +215,7 @@ class RplidarDevice : public LaserDevice {
     out.time_increment = 0.0;
     out.range_min = model_.range_min;
     out.range_max = model_.range_max;
-    out.ranges = rplidar::binRevolution(samples_, model_.rplidar.bins);
+    out.ranges = rplidar::binRevolution(samples_, model_.protocolGeometry<RplidarGeometry>().bins);
     out.stamp = started_;
     *scan = std::move(out);
     return true;

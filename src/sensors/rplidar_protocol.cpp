@@ -12,11 +12,6 @@ namespace {
 class RplidarProtocol : public LaserProtocol {
  public:
   std::string name() const override { return "RPLIDAR"; }
-  // The published grid: bin i at -pi + i 2 pi / bins.
-  int beams(const LaserModel& m) const override { return m.rplidar.bins; }
-  double angleMin(const LaserModel& /*m*/) const override { return -M_PI; }
-  double angleIncrement(const LaserModel& m) const override { return 2.0 * M_PI / m.rplidar.bins; }
-
   std::unique_ptr<LaserDevice> open(const std::string& /*model*/, const std::string& port, int baud) const override {
     return openRplidar(port, baud);
   }
@@ -37,6 +32,9 @@ class RplidarProtocol : public LaserProtocol {
 };
 
 }  // namespace
+
+double RplidarGeometry::angleMin() const { return -M_PI; }
+double RplidarGeometry::angleIncrement() const { return 2.0 * M_PI / bins; }
 
 const LaserProtocol& rplidarProtocol() {
   static const RplidarProtocol protocol;

@@ -7,6 +7,7 @@
 
 #include "amigobot_tracking/sensors/laser_protocol.h"
 #include "amigobot_tracking/sensors/rplidar.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
 #include "amigobot_tracking/world/raycast.h"
 
 namespace amigobot_tracking {
@@ -36,7 +37,7 @@ std::vector<float> ScanSource::revolution(const core::Pose2& sensor, const world
                                           std::vector<float>* angles) {
   // The sample clock and the motor are not locked: the step between samples varies from one
   // revolution to the next, and each revolution starts where the last one left off.
-  const RplidarGeometry& g = model_.rplidar;
+  const RplidarGeometry& g = model_.protocolGeometry<RplidarGeometry>();
   std::uniform_real_distribution<double> jitter(-g.speed_jitter, g.speed_jitter);
   const double step = 360.0 * model_.rate * (1.0 + jitter(random_)) / g.sample_rate;  // [deg]
   std::vector<float> ranges;

@@ -1,10 +1,11 @@
 // One laser protocol behind one interface: everything that differs between SCIP 2.0, CoLa-A
-// and Slamtec's RPLIDAR protocol (the geometry a model's numbers give, the driver's device,
-// the emulator's session and faults, what the ROS node offers) is a virtual call or a
-// property here, so the driver, the emulator and the nodelet never branch on a protocol.
-// A model's protocol is set once by its laser_registry.cpp entry (LaserModel::protocol).
-// Adding a protocol: its own files (like scip_protocol.h/.cpp: the class, its accessor, its
-// device and session) and one registry entry (docs/architecture.md, "Adding a laser protocol").
+// and Slamtec's RPLIDAR protocol (the driver's device, the emulator's session and faults,
+// what the ROS node offers) is a virtual call or a property here, and the geometry its
+// numbers give is its ProtocolGeometry (laser_model.h), so the driver, the emulator and the
+// nodelet never branch on a protocol. A model's protocol and numbers are set once by its
+// laser_registry.cpp entry. Adding a protocol: its own files (like scip_protocol.h/.cpp: the
+// class, its numbers, its accessor) and one registry entry; this file names none of them
+// (docs/architecture.md, "Adding a laser protocol").
 #pragma once
 
 #include <cstdint>
@@ -22,11 +23,6 @@ class LaserProtocol {
  public:
   virtual ~LaserProtocol() = default;
   virtual std::string name() const = 0;  // "SCIP 2.0", for messages
-
-  // The model's beams and device angles (REP 103) from the protocol's own numbers.
-  virtual int beams(const LaserModel& model) const = 0;
-  virtual double angleMin(const LaserModel& model) const = 0;
-  virtual double angleIncrement(const LaserModel& model) const = 0;
 
   // Driver side: opens the device of laser_registry.h entry `model` at `port` (a serial
   // device or host:port; baud 0 or one of the entry's bauds), or throws naming both.
