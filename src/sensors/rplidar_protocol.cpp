@@ -3,6 +3,7 @@
 // emulator's session (rplidar_session.cpp); a motor the host starts and stops.
 #include <cmath>
 
+#include "amigobot_tracking/sensors/rplidar.h"
 #include "amigobot_tracking/sensors/rplidar_protocol.h"
 
 namespace amigobot_tracking {
@@ -21,6 +22,20 @@ class RplidarProtocol : public LaserProtocol {
   }
   std::uint32_t noMeasurementCode(float /*r*/) const override { return 0; }  // a node of distance 0
   bool samplesAsItTurns() const override { return true; }
+  // The sample clock and the motor are not locked: the step between samples varies from one
+  // revolution to the next, and each revolution starts where the last one left off. *phase:
+  // [deg] the device angle of the next sample; each angle is what a node carries (1/64 deg).
+  std::vector<double> revolutionAngles(const LaserModel& model, double* phase, std::mt19937& random) const override {
+    const RplidarGeometry& g = model.protocolGeometry<RplidarGeometry>();
+    std::uniform_real_distribution<double> jitter(-g.speed_jitter, g.speed_jitter);
+    const double step = 360.0 * model.rate * (1.0 + jitter(random)) / g.sample_rate;  // [deg]
+    std::vector<double> angles;
+    for (; *phase < 360.0; *phase += step) {
+      angles.push_back(rplidar::nodeAngle(static_cast<std::uint16_t>(std::lround(*phase * 64.0) % (360 * 64))));
+    }
+    *phase -= 360.0;
+    return angles;
+  }
   std::string malformed(std::string telegram) const override {  // node 10's check bit
     if (telegram.size() > 52) telegram[51] = static_cast<char>(telegram[51] & ~0x01);
     return telegram;

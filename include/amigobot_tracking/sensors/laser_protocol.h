@@ -10,7 +10,10 @@
 
 #include <cstdint>
 #include <memory>
+#include <random>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_model.h"
@@ -35,6 +38,13 @@ class LaserProtocol {
   // A scan is one revolution of samples at the device's own, uneven angles, each sample
   // leaving as it is measured (RPLIDAR); false: a fixed grid sent once its last beam is measured.
   virtual bool samplesAsItTurns() const = 0;
+  // With samplesAsItTurns: the device angles (REP 103) of one revolution's samples, from
+  // *phase on (the protocol's own measure of where the next sample falls), leaving *phase
+  // where the next revolution starts; `random` draws what varies from one revolution to the
+  // next. The emulator's ScanSource casts a ray along each.
+  virtual std::vector<double> revolutionAngles(const LaserModel& model, double* /*phase*/, std::mt19937& /*random*/) const {
+    throw std::logic_error("laser model '" + model.name + "': " + name() + " sends a fixed grid, not samples as it turns");
+  }
   // The emulator's faults on a streamed scan telegram: a malformed one (still framed, its
   // content not parseable), and for a protocol with a checksum, one with a wrong sum.
   virtual std::string malformed(std::string telegram) const = 0;
