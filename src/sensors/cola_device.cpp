@@ -16,6 +16,7 @@
 #include "amigobot_tracking/link/address.h"
 #include "amigobot_tracking/link/tcp_client.h"
 #include "amigobot_tracking/sensors/cola_a.h"
+#include "amigobot_tracking/sensors/cola_protocol.h"
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 
@@ -46,7 +47,7 @@ class ColaDevice : public LaserDevice {
     }
     const std::string ident = request("sRN DeviceIdent"), serial = request("sRN SerialNumber");
     identity_ = "SICK " + ident.substr(std::min(ident.size(), std::size_t{4})) + ", " + serial.substr(std::min(serial.size(), std::size_t{4}));
-    if (model_.cola.measures_on_command) startLms();
+    if (model_.protocolGeometry<ColaGeometry>().measures_on_command) startLms();
     identity_ += " at " + port;
     if (request("sEN LMDscandata 1") != "sEA LMDscandata 1") throw std::runtime_error(model + " " + port + ": scan output not enabled");
   }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "amigobot_tracking/sensors/cola_a.h"
+#include "amigobot_tracking/sensors/cola_protocol.h"
 #include "amigobot_tracking/sensors/laser_session.h"
 
 namespace amigobot_tracking {
@@ -20,7 +21,8 @@ constexpr const char* kClientPassword = "F4724744";  // SICK's default for "auth
 class ColaSession : public LaserSession {
  public:
   ColaSession(LaserModel model, std::string serial)
-      : model_(std::move(model)), serial_(std::move(serial)), lms_(model_.cola.measures_on_command),
+      : model_(std::move(model)), cola_(model_.protocolGeometry<ColaGeometry>()), serial_(std::move(serial)),
+        lms_(cola_.measures_on_command),
         measuring_(!lms_) {}
 
   std::string receive(const std::string& bytes, const EmulatedScan& latest) override {
@@ -66,9 +68,8 @@ class ColaSession : public LaserSession {
     if (body == "sMN mSCreboot") return "sAN mSCreboot";
     if (lms_ && body == "sRN LMPscancfg") return "sRA LMPscancfg " + lmpScanCfg();
     if (body == "sRN LMPoutputRange") {  // sectors, resolution, start, stop (clearpath LMS1xx, sick_scan)
-      const ColaGeometry& g = model_.cola;
-      return "sRA LMPoutputRange 1 " + cola::hex(static_cast<std::uint32_t>(g.angular_step)) + " " +
-             cola::hexSigned(g.start_angle) + " " + cola::hexSigned(stopAngle());
+      return "sRA LMPoutputRange 1 " + cola::hex(static_cast<std::uint32_t>(cola_.angular_step)) + " " +
+             cola::hexSigned(cola_.start_angle) + " " + cola::hexSigned(stopAngle());
     }
     if (body.rfind("sWN LMPoutputRange ", 0) == 0) return "sWA LMPoutputRange";  // the range stays the full one
     if (body.rfind("sWN LMDscandatacfg ", 0) == 0) return scanDataConfig(body);
@@ -87,18 +88,16 @@ class ColaSession : public LaserSession {
 
   // Frequency, sector count, resolution, start, stop, as LMPscancfg lists them.
   std::string lmpScanCfg() const {
-    const ColaGeometry& g = model_.cola;
-    return cola::hex(static_cast<std::uint32_t>(g.scan_frequency)) + " 1 " +
-           cola::hex(static_cast<std::uint32_t>(g.angular_step)) + " " + cola::hexSigned(g.start_angle) + " " +
+    return cola::hex(static_cast<std::uint32_t>(cola_.scan_frequency)) + " 1 " +
+           cola::hex(static_cast<std::uint32_t>(cola_.angular_step)) + " " + cola::hexSigned(cola_.start_angle) + " " +
            cola::hexSigned(stopAngle());
   }
 
   // The nominal stop angle, as devices report it: a real TiM5xx answers 225 deg (225510),
   // not start + 810 x 0.3333 deg (sick_scan's doc/tim5xx_startup_sequence.txt).
   int stopAngle() const {
-    const ColaGeometry& g = model_.cola;
-    const long span = static_cast<long>(g.angular_step) * (g.beams - 1);
-    return g.start_angle + static_cast<int>((span + 500) / 1000 * 1000);  // to 0.1 deg
+    const long span = static_cast<long>(cola_.angular_step) * (cola_.beam_count - 1);
+    return cola_.start_angle + static_cast<int>((span + 500) / 1000 * 1000);  // to 0.1 deg
   }
 
   // sWN LMDscandatacfg channel 00 remission resolution unit encoder 00 position name comment
@@ -121,10 +120,10 @@ class ColaSession : public LaserSession {
     t.scan_counter = static_cast<std::uint32_t>(scan.index);
     t.time_since_start_us = static_cast<std::uint32_t>(std::llround(scan.t * 1e6));
     t.time_of_transmission_us = static_cast<std::uint32_t>(std::llround((scan.t + model_.scanTime()) * 1e6));
-    t.scan_frequency = static_cast<std::uint32_t>(model_.cola.scan_frequency);
+    t.scan_frequency = static_cast<std::uint32_t>(cola_.scan_frequency);
     t.measurement_frequency = static_cast<std::uint32_t>(std::lround(1.0 / model_.timeIncrement() / 100.0));
-    t.start_angle = model_.cola.start_angle;
-    t.angular_step = static_cast<std::uint32_t>(model_.cola.angular_step);
+    t.start_angle = cola_.start_angle;
+    t.angular_step = static_cast<std::uint32_t>(cola_.angular_step);
     t.ranges = deviceRanges(model_, scan.ranges);
     if (remission_) {
       t.rssi_8bit = remission_8bit_;
@@ -134,6 +133,7 @@ class ColaSession : public LaserSession {
   }
 
   LaserModel model_;
+  ColaGeometry cola_;  // model_'s numbers, as CoLa-A's (throws at construction for another's)
   std::string serial_, buffer_;
   // An emulated remission: none without echo, weaker with distance (a grey wall).
   std::uint32_t remission(std::uint32_t range_mm) const {

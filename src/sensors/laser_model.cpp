@@ -13,9 +13,17 @@ const LaserProtocol& protocolOf(const LaserModel& model) {
   return *model.protocol;
 }
 
-int LaserModel::beams() const { return protocolOf(*this).beams(*this); }
-double LaserModel::angleMin() const { return protocolOf(*this).angleMin(*this); }
-double LaserModel::angleIncrement() const { return protocolOf(*this).angleIncrement(*this); }
+const ProtocolGeometry& protocolGeometryOf(const LaserModel& model) {
+  protocolOf(model);  // a bare model says it has no protocol first: the cause of both
+  if (!model.protocol_geometry) {
+    throw std::logic_error("laser model '" + model.name + "': no protocol geometry (not from laser_registry.h)");
+  }
+  return *model.protocol_geometry;
+}
+
+int LaserModel::beams() const { return protocolGeometryOf(*this).beams(); }
+double LaserModel::angleMin() const { return protocolGeometryOf(*this).angleMin(); }
+double LaserModel::angleIncrement() const { return protocolGeometryOf(*this).angleIncrement(); }
 
 double LaserModel::timeIncrement() const {
   return scanTime() * angleIncrement() / (2.0 * M_PI);
@@ -28,24 +36,6 @@ core::ScanGeometry LaserModel::geometry() const {
   g.range_min = range_min;
   g.range_max = range_max;
   return g;
-}
-
-void setLms1xxScanConfig(LaserModel* model, double frequency_hz, double resolution_deg) {
-  if (frequency_hz != 25.0 && frequency_hz != 50.0) {
-    throw std::invalid_argument("scan frequency: " + std::to_string(frequency_hz) + " Hz (LMS1xx: 25 or 50)");
-  }
-  if (resolution_deg != 0.25 && resolution_deg != 0.5) {
-    throw std::invalid_argument("angular resolution: " + std::to_string(resolution_deg) + " deg (LMS1xx: 0.25 or 0.5)");
-  }
-  if (frequency_hz == 50.0 && resolution_deg == 0.25) {
-    throw std::invalid_argument("angular resolution: 0.25 deg needs 25 Hz on an LMS1xx");
-  }
-  ColaGeometry& c = model->cola;
-  c.scan_frequency = static_cast<int>(frequency_hz * 100.0);
-  c.angular_step = static_cast<int>(resolution_deg * 10000.0);
-  c.start_angle = -450000;  // -45 deg .. 225 deg in SICK's frame
-  c.beams = 2700000 / c.angular_step + 1;
-  model->rate = frequency_hz;
 }
 
 }  // namespace sensors

@@ -3,7 +3,10 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/link/address.h"
+#include "amigobot_tracking/sensors/cola_protocol.h"
 #include "amigobot_tracking/sensors/laser_protocol.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
+#include "amigobot_tracking/sensors/scip_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -12,20 +15,24 @@ namespace {
 LaserModel hokuyoUrg() {
   LaserModel m;
   m.name = "hokuyo_urg";
-  m.protocol = &scipProtocol();  // the URG-04LX's PP numbers are ScipGeometry's defaults
-  m.range_min = m.scip.dmin_mm / 1000.0;
-  m.range_max = m.scip.dmax_mm / 1000.0;
-  m.rate = m.scip.scan_rpm / 60.0;
+  m.protocol = &scipProtocol();
+  const ScipGeometry pp;  // the URG-04LX's PP numbers are ScipGeometry's defaults
+  m.setProtocolGeometry(pp);
+  m.range_min = pp.dmin_mm / 1000.0;
+  m.range_max = pp.dmax_mm / 1000.0;
+  m.rate = pp.scan_rpm / 60.0;
   return m;
 }
 
 LaserModel sickTim5xx() {
   LaserModel m;
   m.name = "sick_tim5xx";
-  m.protocol = &colaProtocol();  // the TiM5xx's telegram numbers are ColaGeometry's defaults
+  m.protocol = &colaProtocol();
+  const ColaGeometry telegram;  // the TiM5xx's telegram numbers are ColaGeometry's defaults
+  m.setProtocolGeometry(telegram);
   m.range_min = 0.05;
   m.range_max = 10.0;
-  m.rate = m.cola.scan_frequency / 100.0;
+  m.rate = telegram.scan_frequency / 100.0;
   return m;
 }
 
@@ -38,7 +45,9 @@ LaserModel sickLms1xx() {
   // range_min 0.01: dropping them would lose what the device measured.
   m.range_min = 0.01;
   m.range_max = 20.0;
-  m.cola.measures_on_command = true;
+  ColaGeometry lms;
+  lms.measures_on_command = true;
+  m.setProtocolGeometry(lms);
   setLms1xxScanConfig(&m, 25.0, 0.5);  // the factory scan, as the entry's scan_setting says
   return m;
 }
@@ -47,6 +56,7 @@ LaserModel rplidarA1() {
   LaserModel m;
   m.name = "rplidar";
   m.protocol = &rplidarProtocol();
+  m.setProtocolGeometry(RplidarGeometry());  // the A1M8's standard SCAN mode
   m.range_min = 0.15;  // A1M8 data sheet: 0.15 .. 12 m
   m.range_max = 12.0;
   m.rate = 5.5;

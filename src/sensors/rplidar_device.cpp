@@ -27,6 +27,7 @@
 #include "amigobot_tracking/sensors/laser_device.h"
 #include "amigobot_tracking/sensors/laser_model.h"
 #include "amigobot_tracking/sensors/rplidar.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -214,7 +215,7 @@ class RplidarDevice : public LaserDevice {
     out.time_increment = 0.0;
     out.range_min = model_.range_min;
     out.range_max = model_.range_max;
-    out.ranges = rplidar::binRevolution(samples_, model_.rplidar.bins);
+    out.ranges = rplidar::binRevolution(samples_, model_.protocolGeometry<RplidarGeometry>().bins);
     out.stamp = started_;
     *scan = std::move(out);
     return true;

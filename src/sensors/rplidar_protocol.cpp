@@ -3,7 +3,8 @@
 // emulator's session (rplidar_session.cpp); a motor the host starts and stops.
 #include <cmath>
 
-#include "amigobot_tracking/sensors/laser_protocol.h"
+#include "amigobot_tracking/sensors/rplidar.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -12,11 +13,6 @@ namespace {
 class RplidarProtocol : public LaserProtocol {
  public:
   std::string name() const override { return "RPLIDAR"; }
-  // The published grid: bin i at -pi + i 2 pi / bins.
-  int beams(const LaserModel& m) const override { return m.rplidar.bins; }
-  double angleMin(const LaserModel& /*m*/) const override { return -M_PI; }
-  double angleIncrement(const LaserModel& m) const override { return 2.0 * M_PI / m.rplidar.bins; }
-
   std::unique_ptr<LaserDevice> open(const std::string& /*model*/, const std::string& port, int baud) const override {
     return openRplidar(port, baud);
   }
@@ -26,6 +22,20 @@ class RplidarProtocol : public LaserProtocol {
   }
   std::uint32_t noMeasurementCode(float /*r*/) const override { return 0; }  // a node of distance 0
   bool samplesAsItTurns() const override { return true; }
+  // The sample clock and the motor are not locked: the step between samples varies from one
+  // revolution to the next, and each revolution starts where the last one left off. *phase:
+  // [deg] the device angle of the next sample; each angle is what a node carries (1/64 deg).
+  std::vector<double> revolutionAngles(const LaserModel& model, double* phase, std::mt19937& random) const override {
+    const RplidarGeometry& g = model.protocolGeometry<RplidarGeometry>();
+    std::uniform_real_distribution<double> jitter(-g.speed_jitter, g.speed_jitter);
+    const double step = 360.0 * model.rate * (1.0 + jitter(random)) / g.sample_rate;  // [deg]
+    std::vector<double> angles;
+    for (; *phase < 360.0; *phase += step) {
+      angles.push_back(rplidar::nodeAngle(static_cast<std::uint16_t>(std::lround(*phase * 64.0) % (360 * 64))));
+    }
+    *phase -= 360.0;
+    return angles;
+  }
   std::string malformed(std::string telegram) const override {  // node 10's check bit
     if (telegram.size() > 52) telegram[51] = static_cast<char>(telegram[51] & ~0x01);
     return telegram;
@@ -37,6 +47,9 @@ class RplidarProtocol : public LaserProtocol {
 };
 
 }  // namespace
+
+double RplidarGeometry::angleMin() const { return -M_PI; }
+double RplidarGeometry::angleIncrement() const { return 2.0 * M_PI / bins; }
 
 const LaserProtocol& rplidarProtocol() {
   static const RplidarProtocol protocol;

@@ -15,6 +15,7 @@
 
 #include "amigobot_tracking/sensors/laser_session.h"
 #include "amigobot_tracking/sensors/rplidar.h"
+#include "amigobot_tracking/sensors/rplidar_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -128,7 +129,7 @@ class RplidarSession : public LaserSession {
       case kConfScanModeCount: value = littleEndian(kModeCount, 2); break;
       case kConfScanModeTypical: value = littleEndian(kTypicalMode, 2); break;
       case kConfScanModeUsPerSample:
-        if (known) value = littleEndian(static_cast<std::uint32_t>(std::lround(256e6 / model_.rplidar.sample_rate)), 4);
+        if (known) value = littleEndian(static_cast<std::uint32_t>(std::lround(256e6 / sampleRate())), 4);
         break;
       case kConfScanModeMaxDistance:
         if (known) value = littleEndian(static_cast<std::uint32_t>(std::lround(model_.range_max * 256.0)), 4);
@@ -162,7 +163,7 @@ class RplidarSession : public LaserSession {
       }
       case kGetHealth: return encodeDescriptor({kHealthSize, false, kHealthType}) + encodeHealth({0, 0});
       case kGetSampleRate: {
-        const auto standard = static_cast<std::uint16_t>(std::lround(1e6 / model_.rplidar.sample_rate));
+        const auto standard = static_cast<std::uint16_t>(std::lround(1e6 / sampleRate()));
         const auto express = static_cast<std::uint16_t>(standard / 2);
         return encodeDescriptor({kSampleRateSize, false, kSampleRateType}) +
                std::string{static_cast<char>(standard & 0xFF), static_cast<char>(standard >> 8),
@@ -199,6 +200,9 @@ class RplidarSession : public LaserSession {
   struct PendingSample {
     float angle, range;
   };
+  // [1/s] the model's, as the RPLIDAR's own numbers say (GET_SAMPLERATE, GET_LIDAR_CONF).
+  double sampleRate() const { return model_.protocolGeometry<RplidarGeometry>().sample_rate; }
+
   LaserModel model_;
   std::string serial_, buffer_;
   Mode mode_ = Mode::kIdle;

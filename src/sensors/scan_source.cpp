@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "amigobot_tracking/sensors/laser_protocol.h"
-#include "amigobot_tracking/sensors/rplidar.h"
 #include "amigobot_tracking/world/raycast.h"
 
 namespace amigobot_tracking {
@@ -34,20 +33,14 @@ core::Pose2 ScanSource::sensorPose(const core::Pose2& base) const {
 
 std::vector<float> ScanSource::revolution(const core::Pose2& sensor, const world::World& room, const core::ScanGeometry& grid,
                                           std::vector<float>* angles) {
-  // The sample clock and the motor are not locked: the step between samples varies from one
-  // revolution to the next, and each revolution starts where the last one left off.
-  const RplidarGeometry& g = model_.rplidar;
-  std::uniform_real_distribution<double> jitter(-g.speed_jitter, g.speed_jitter);
-  const double step = 360.0 * model_.rate * (1.0 + jitter(random_)) / g.sample_rate;  // [deg]
+  // The protocol says where this revolution's samples fall (they vary from one to the next).
   std::vector<float> ranges;
-  for (; phase_ < 360.0; phase_ += step) {
-    const double angle = rplidar::nodeAngle(static_cast<std::uint16_t>(std::lround(phase_ * 64.0) % (360 * 64)));
+  for (const double angle : protocolOf(model_).revolutionAngles(model_, &phase_, random_)) {
     core::ScanGeometry beam = grid;
     beam.angle_min = options_.upside_down ? -angle : angle;  // looks at -angle in the mount frame
     angles->push_back(static_cast<float>(angle));
     ranges.push_back(world::raycastScan(sensor, room, beam, 1)[0]);
   }
-  phase_ -= 360.0;
   return ranges;
 }
 

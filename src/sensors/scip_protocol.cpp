@@ -2,7 +2,7 @@
 // (hokuyo_device.cpp), the emulator's session (scip_session.cpp). Its data lines carry a sum.
 #include <cmath>
 
-#include "amigobot_tracking/sensors/laser_protocol.h"
+#include "amigobot_tracking/sensors/scip_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -11,11 +11,6 @@ namespace {
 class ScipProtocol : public LaserProtocol {
  public:
   std::string name() const override { return "SCIP 2.0"; }
-  // Steps AMIN..AMAX, step s at (s - AFRT) 2 pi / ARES.
-  int beams(const LaserModel& m) const override { return m.scip.amax - m.scip.amin + 1; }
-  double angleMin(const LaserModel& m) const override { return (m.scip.amin - m.scip.afrt) * 2.0 * M_PI / m.scip.ares; }
-  double angleIncrement(const LaserModel& m) const override { return 2.0 * M_PI / m.scip.ares; }
-
   std::unique_ptr<LaserDevice> open(const std::string& model, const std::string& port, int /*baud*/) const override {
     return openHokuyo(model, port);
   }
@@ -41,6 +36,10 @@ class ScipProtocol : public LaserProtocol {
 };
 
 }  // namespace
+
+int ScipGeometry::beams() const { return amax - amin + 1; }
+double ScipGeometry::angleMin() const { return (amin - afrt) * 2.0 * M_PI / ares; }
+double ScipGeometry::angleIncrement() const { return 2.0 * M_PI / ares; }
 
 const LaserProtocol& scipProtocol() {
   static const ScipProtocol protocol;

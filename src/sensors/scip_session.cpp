@@ -5,6 +5,7 @@
 
 #include "amigobot_tracking/sensors/laser_session.h"
 #include "amigobot_tracking/sensors/scip.h"
+#include "amigobot_tracking/sensors/scip_protocol.h"
 
 namespace amigobot_tracking {
 namespace sensors {
@@ -13,7 +14,8 @@ namespace {
 // SCIP 2.0 (URG-04LX in SCIP 2.0 mode).
 class ScipSession : public LaserSession {
  public:
-  ScipSession(LaserModel model, std::string serial) : model_(std::move(model)), serial_(std::move(serial)) {}
+  ScipSession(LaserModel model, std::string serial)
+      : model_(std::move(model)), scip_(model_.protocolGeometry<ScipGeometry>()), serial_(std::move(serial)) {}
 
   std::string receive(const std::string& bytes, const EmulatedScan& latest) override {
     std::string out;
@@ -50,19 +52,18 @@ class ScipSession : public LaserSession {
     // "version(date)" (urg_sensor_firmware_version cuts at '('); II 7 entries
     // (II_RESPONSE_LINES 9) with STAT, and MESM with a space (urg_sensor_state cuts at ' ').
     if (command == "VV") {
-      return scip::infoReply(line, {"VEND:Hokuyo Automatic Co.,Ltd.", "PROD:SOKUIKI Sensor " + model_.scip.product + " (emulated)",
+      return scip::infoReply(line, {"VEND:Hokuyo Automatic Co.,Ltd.", "PROD:SOKUIKI Sensor " + scip_.product + " (emulated)",
                                     "FIRM:3.4.03(17/Dec./2012)", "PROT:SCIP 2.0", "SERI:" + serial_});
     }
     if (command == "PP") {
-      const ScipGeometry& g = model_.scip;
-      return scip::infoReply(line, {"MODL:" + model_.scip.product + "(Hokuyo Automatic Co.,Ltd.)", "DMIN:" + std::to_string(g.dmin_mm),
-                                    "DMAX:" + std::to_string(g.dmax_mm), "ARES:" + std::to_string(g.ares),
-                                    "AMIN:" + std::to_string(g.amin), "AMAX:" + std::to_string(g.amax),
-                                    "AFRT:" + std::to_string(g.afrt), "SCAN:" + std::to_string(g.scan_rpm)});
+      return scip::infoReply(line, {"MODL:" + scip_.product + "(Hokuyo Automatic Co.,Ltd.)", "DMIN:" + std::to_string(scip_.dmin_mm),
+                                    "DMAX:" + std::to_string(scip_.dmax_mm), "ARES:" + std::to_string(scip_.ares),
+                                    "AMIN:" + std::to_string(scip_.amin), "AMAX:" + std::to_string(scip_.amax),
+                                    "AFRT:" + std::to_string(scip_.afrt), "SCAN:" + std::to_string(scip_.scan_rpm)});
     }
     if (command == "II") {
-      return scip::infoReply(line, {"MODL:" + model_.scip.product + "(Hokuyo Automatic Co.,Ltd.)", "LASR:" + std::string(laser_on_ ? "ON" : "OFF"),
-                                    "SCSP:Initial(" + std::to_string(model_.scip.scan_rpm) + "[rpm])",
+      return scip::infoReply(line, {"MODL:" + scip_.product + "(Hokuyo Automatic Co.,Ltd.)", "LASR:" + std::string(laser_on_ ? "ON" : "OFF"),
+                                    "SCSP:Initial(" + std::to_string(scip_.scan_rpm) + "[rpm])",
                                     std::string("MESM:") + (laser_on_ ? "Measuring by Normal Mode" : "Idling (laser off)"),
                                     "SBPS:Ethernet (emulated)",
                                     "TIME:" + scip::encode(static_cast<std::uint32_t>(latest.t * 1000.0) & 0xFFFFFFu, 4),
@@ -80,7 +81,7 @@ class ScipSession : public LaserSession {
     scip::ScanRequest request;
     if (command == "MD" || command == "MS" || command == "GD" || command == "GS") {
       if (!scip::parseScanRequest(line, &request).empty()) return scip::reply(line, "02");
-      if (request.end >= model_.scip.ares) return scip::reply(line, "04");
+      if (request.end >= scip_.ares) return scip::reply(line, "04");
       if (!request.continuous()) return laser_on_ ? data(line, request, latest) : scip::reply(line, "02");
       laser_on_ = streaming_ = true;
       active_ = request;
@@ -100,7 +101,7 @@ class ScipSession : public LaserSession {
       std::uint32_t nearest = 0;
       bool any = false;
       for (int s = step; s < std::min(step + request.cluster, request.end + 1); ++s) {
-        const int beam = s - model_.scip.amin;
+        const int beam = s - scip_.amin;
         const std::uint32_t value = beam >= 0 && beam < static_cast<int>(coded.size()) ? coded[static_cast<std::size_t>(beam)] : 1u;
         if (!any || (value >= 20 && (nearest < 20 || value < nearest))) nearest = value;
         any = true;
@@ -112,6 +113,7 @@ class ScipSession : public LaserSession {
   }
 
   LaserModel model_;
+  ScipGeometry scip_;  // model_'s numbers, as SCIP's (throws at construction for another's)
   std::string serial_, line_, active_line_;
   scip::ScanRequest active_;
   bool laser_on_ = false, streaming_ = false;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "amigobot_tracking/sensors/cola_protocol.h"  // setLms1xxScanConfig: an LMS1xx (CoLa-A) setting
 #include "laser_emulator_fixture.h"
 
 using namespace amigobot_tracking::sensors;

@@ -45,12 +45,9 @@ class LaserDevice {
   virtual void setMotor(bool /*on*/) {}
 };
 
-// Opens (connects, configures, starts the measurement) or throws std::runtime_error naming
-// the model and the port. model: a laser_registry.h entry of the device's protocol; port: a
-// serial device or "host:port".
-std::unique_ptr<LaserDevice> openHokuyo(const std::string& model, const std::string& port);  // SCIP 2.0
-std::unique_ptr<LaserDevice> openCola(const std::string& model, const std::string& port);  // sick_tim5xx | sick_lms1xx
-std::unique_ptr<LaserDevice> openRplidar(const std::string& port, int baud = 115200);  // 115200 | 256000
+// Each protocol's device is opened by its LaserProtocol::open (scip_protocol.h and the others
+// declare theirs): it connects, configures and starts the measurement, or throws
+// std::runtime_error naming the model and the port.
 
 double systemSeconds();
 

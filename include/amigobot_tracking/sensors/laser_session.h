@@ -46,11 +46,6 @@ class LaserSession {
 // The session of the model's protocol (laser_protocol.h); throws naming a model that is not
 // in the registry (laser_registry.h).
 std::unique_ptr<LaserSession> makeSession(const LaserModel& model, const std::string& serial);
-// The protocols' sessions (scip_session.cpp, cola_session.cpp, rplidar_session.cpp), which
-// their LaserProtocol returns.
-std::unique_ptr<LaserSession> makeScipSession(const LaserModel& model, const std::string& serial);
-std::unique_ptr<LaserSession> makeColaSession(const LaserModel& model, const std::string& serial);
-std::unique_ptr<LaserSession> makeRplidarSession(const LaserModel& model, const std::string& serial);
 
 }  // namespace sensors
 }  // namespace amigobot_tracking

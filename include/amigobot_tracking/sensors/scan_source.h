@@ -44,7 +44,7 @@ class ScanSource {
   ScanSourceOptions options_;
   std::mt19937 random_;
   std::uint64_t index_ = 0;
-  double phase_ = 0.0;  // [deg] RPLIDAR: device angle of the next sample
+  double phase_ = 0.0;  // samplesAsItTurns: where the next sample falls (LaserProtocol::revolutionAngles)
 };
 
 }  // namespace sensors
