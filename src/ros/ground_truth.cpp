@@ -17,6 +17,23 @@ core::Pose2 mapToOdom(const core::Pose2& truth, const core::Pose2& odom_base) {
   return out;
 }
 
+void TruthPairing::add(double stamp, const core::Pose2& truth) {
+  if (!samples_.empty() && stamp <= samples_.back().first) samples_.clear();  // time went back: start again
+  samples_.emplace_back(stamp, truth);
+  while (!samples_.empty() && samples_.front().first < stamp - keep_) samples_.pop_front();
+}
+
+std::optional<core::Pose2> TruthPairing::correction(const OdometryAt& odom_at) {
+  for (auto it = samples_.rbegin(); it != samples_.rend(); ++it) {
+    core::Pose2 odom_base;
+    if (!odom_at(it->first, &odom_base)) continue;
+    const core::Pose2 result = mapToOdom(it->second, odom_base);
+    samples_.erase(samples_.begin(), it.base());
+    return result;
+  }
+  return std::nullopt;
+}
+
 const core::FieldTable<GroundTruthConfig>& groundTruthFields() {
   using G = GroundTruthConfig;
   using core::field;

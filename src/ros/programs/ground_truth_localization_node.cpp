@@ -10,6 +10,7 @@
 // and stop the robot) and reconnects every reconnect_period (aria::StatusClient).
 // Parameters: ros/ground_truth.h (GroundTruthConfig).
 #include <algorithm>
+#include <optional>
 
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/TimeReference.h>
@@ -48,6 +49,8 @@ int main(int argc, char** argv) {
 
   ros::Rate rate(config.rate);
   bool was_up = false;
+  ros_layer::TruthPairing pairing;
+  std::optional<core::Pose2> correction;  // the last map -> odom
   while (ros::ok()) {
     rate.sleep();
     aria::EmulatorStatus status;
@@ -57,6 +60,7 @@ int main(int argc, char** argv) {
       else ROS_ERROR_STREAM_THROTTLE(10.0, "ground_truth_localization: " << problem << " (retrying every "
                                                                           << config.reconnect_period << " s)");
       was_up = false;
+      correction.reset();  // a restarted emulator or driver is paired afresh before anything is broadcast
       continue;
     }
     if (!was_up) ROS_INFO_STREAM("ground_truth_localization: connected to " << config.host << ":" << config.port);
@@ -79,16 +83,25 @@ int main(int argc, char** argv) {
     truth_pub.publish(truth);
     if (!config.publish_tf) continue;
 
-    geometry_msgs::TransformStamped odom_base;
-    try {
-      odom_base = tf.lookupTransform(config.odom_frame, config.base_frame, ros::Time(0));
-    } catch (const tf2::TransformException& e) {
-      ROS_WARN_THROTTLE(5.0, "ground_truth_localization: no %s -> %s from the driver yet: %s",
-                        config.odom_frame.c_str(), config.base_frame.c_str(), e.what());
+    // Paired with the odometry of the same instant (ros/ground_truth.h, TruthPairing); between
+    // pairs the last correction is broadcast again, freshly stamped.
+    pairing.add(now.toSec(), status.pose);
+    const std::optional<core::Pose2> paired = pairing.correction([&](double stamp, core::Pose2* odom_base) {
+      try {
+        *odom_base = ros_layer::toPose2(
+            tf.lookupTransform(config.odom_frame, config.base_frame, ros::Time().fromSec(stamp)).transform);
+        return true;
+      } catch (const tf2::TransformException&) {
+        return false;  // odometry does not reach the stamp yet (or no more)
+      }
+    });
+    if (paired) correction = paired;
+    if (!correction) {
+      ROS_WARN_THROTTLE(5.0, "ground_truth_localization: no %s -> %s from the driver at the truth's time yet",
+                        config.odom_frame.c_str(), config.base_frame.c_str());
       continue;
     }
-    const core::Pose2 correction = ros_layer::mapToOdom(status.pose, ros_layer::toPose2(odom_base.transform));
-    broadcaster.sendTransform(ros_layer::toTransform(config.global_frame, config.odom_frame, correction,
+    broadcaster.sendTransform(ros_layer::toTransform(config.global_frame, config.odom_frame, *correction,
                                                      now + ros::Duration(config.transform_tolerance)));
   }
   return 0;
