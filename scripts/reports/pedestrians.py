@@ -222,7 +222,9 @@ def write_page(path, results, runs, seconds, quick, sets):
          "widened ρ (0 for a law without ρ). ω reversals: sign changes of ω beyond ±0.01 rad/s per minute of run; "
          "Δv, Δω: the largest change of the command between two steps. Failed: runs that ended in an error "
          "(a law's own, named below) instead of metrics. The recommended law uses the people's velocities (its barrier rows) "
-         "and their paths over `obstacle_lookahead` (its field): it is the constant-velocity-prediction variant.")
+         "and their paths over `obstacle_lookahead` (its field): it is the constant-velocity-prediction variant. "
+         "How it yields to people, waits beside a person's way and passes behind one who stopped, and what each of "
+         "those rules changed on these variants: docs/recommended_law.md.")
     page("")
     markdown.benchmark_table(page, HEADINGS, results, cells, CLASSES)
     failures = [(name, law, reason) for name, law, s in results for reason in s.get("reasons", [])]

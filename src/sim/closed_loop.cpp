@@ -224,6 +224,8 @@ ClosedLoopSummary runClosedLoop(const ClosedLoopSetup& setup, const core::Refere
       const core::ObstacleMotion& motion = setup.obstacle_motions[j];
       obstacles[j].center = setup.obstacles[j].center + (motion.positionAt(at) - motion.start);
       obstacles[j].velocity = motion.velocityAt(at);
+      // What a tracker knows of a person who stopped (core/perception/obstacle_tracker.h).
+      obstacles[j].resume_velocity = motion.resumeVelocityAt(at);
     }
   };
   // The newest target sample at time `at`, with the baseline filter's velocity when one is used.

@@ -36,6 +36,22 @@ TEST(ObstacleMotion, WalksStopsAndTurns) {
   EXPECT_TRUE(m.velocityAt(6.5).isApprox(Eigen::Vector2d(0.0, 0.5)));
 }
 
+// What a tracker knows of a person who stopped: the way they last walked (Disk::resume_velocity).
+TEST(ObstacleMotion, AStandingPersonKeepsTheWayTheyLastWalked) {
+  const ObstacleMotion m = walkStopTurn();
+  EXPECT_TRUE(m.resumeVelocityAt(2.0).isZero()) << "never walked yet";
+  EXPECT_TRUE(m.resumeVelocityAt(4.0).isZero()) << "walking: its velocity says it all";
+  EXPECT_TRUE(m.resumeVelocityAt(5.5).isApprox(Eigen::Vector2d(1.0, 0.0)));
+  EXPECT_TRUE(m.resumeVelocityAt(100.0).isApprox(Eigen::Vector2d(0.0, 0.5))) << "after the last leg: its way";
+  ObstacleMotion loop;  // out and back, pausing at each end; the pause at the start wraps round
+  loop.legs = {MotionLeg{1.0, {0.0, 0.0}}, MotionLeg{2.0, {0.5, 0.0}}, MotionLeg{1.0, {0.0, 0.0}},
+               MotionLeg{2.0, {-0.5, 0.0}}};
+  loop.repeat = true;
+  EXPECT_TRUE(loop.resumeVelocityAt(0.5).isZero()) << "the first cycle's pause: no walk before it";
+  EXPECT_TRUE(loop.resumeVelocityAt(3.5).isApprox(Eigen::Vector2d(0.5, 0.0)));
+  EXPECT_TRUE(loop.resumeVelocityAt(6.5).isApprox(Eigen::Vector2d(-0.5, 0.0))) << "the cycle before counts";
+}
+
 TEST(ObstacleMotion, RepeatsAClosedPath) {
   ObstacleMotion m;
   m.legs = {MotionLeg{2.0, {0.5, 0.0}}, MotionLeg{2.0, {-0.5, 0.0}}};

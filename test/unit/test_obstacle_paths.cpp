@@ -56,6 +56,23 @@ TEST(ObstaclePaths, CopiesAMovingDiskAlongItsPathAndLeavesStaticOnesAlone) {
   EXPECT_EQ(withPredictedPaths({still, walker}, 2.0, Eigen::Vector2d(10.0, 0.0), 0.3, 0.18).size(), 2u);
 }
 
+// A person who walked north and stands (velocity 0, resume_velocity north) may walk on at any
+// moment: the field sees the path they would walk, every copy of it (a walking person's far
+// copies are dropped once the robot cannot reach them before the person has gone by), and the
+// goal moves off it. A standing disk never seen walking stays as it is.
+TEST(ObstaclePaths, APersonWhoStoppedIsSeenAlongTheWayTheyWouldWalkOn) {
+  Disk stood = person(0.0, -0.3, 0.0, 0.0);
+  stood.resume_velocity = {0.0, 0.7};
+  const std::vector<Disk> seen = withPredictedPaths({stood}, 2.0, Eigen::Vector2d(10.0, 0.0), 0.3, 0.18);
+  ASSERT_GT(seen.size(), 10u) << "a robot 10 m off still meets a person who starts when it arrives";
+  EXPECT_TRUE(seen.back().center.isApprox(Eigen::Vector2d(0.0, -0.3 + 1.4), 1e-12));
+  for (const Disk& d : seen) EXPECT_NEAR(d.center.x(), 0.0, 1e-12);
+  EXPECT_EQ(withPredictedPaths({person(0.0, -0.3, 0.0, 0.0)}, 2.0, Eigen::Vector2d(10.0, 0.0), 0.3, 0.18).size(), 1u);
+  // The target 0.3 m ahead of them, on that way: the goal moves beside it, to the robot's side.
+  const Eigen::Vector2d goal = goalOutOfPaths({0.0, 0.0}, {-1.0, 0.0}, {stood}, 2.0, 0.18, 0.1);
+  EXPECT_NEAR(goal.x(), -(0.18 + 0.25 + 0.1), 1e-9);
+}
+
 TEST(ObstaclePaths, GoalOnAPathMovesToItsEdgeOnTheRobotsSide) {
   const Disk walker = person(-2.0, 0.0, 0.8, 0.0);  // walks along y = 0 toward +x
   const double zone = 0.18 + 0.25 + 0.1;

@@ -48,6 +48,43 @@ TEST(ObstacleTracker, StaticClutterStaysStatic) {
   for (const Disk& d : tracker.obstaclesAt(4.9)) EXPECT_EQ(d.velocity, Eigen::Vector2d::Zero());
 }
 
+// A person walks 3 s at 0.7 m/s and stands: once the filter has settled they are static, and
+// the way they walked is kept as where they may go next; a jittering wall never gets one.
+TEST(ObstacleTracker, APersonWhoStopsKeepsTheWayTheyWalked) {
+  ObstacleTracker tracker;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> jitter(0.0, 0.01);
+  Eigen::Vector2d at(0.0, -2.0);
+  for (int k = 0; k < 100; ++k) {  // 10 Hz: walks until t = 3 s, then stands
+    const double t = 0.1 * k;
+    if (t > 0.0 && t <= 3.0 + 1e-9) at.y() += 0.07;
+    tracker.update(t, {{at, 0.25}, {{2.0 + jitter(rng), 1.0 + jitter(rng)}, 0.2}});
+    if (k == 25) {  // walking: the velocity, no resume
+      const Disk walking = tracker.obstaclesAt(t)[0];
+      EXPECT_GT(walking.velocity.y(), 0.5);
+      EXPECT_TRUE(walking.resume_velocity.isZero());
+    }
+  }
+  ASSERT_EQ(tracker.tracks().size(), 2u);
+  const std::vector<Disk> now = tracker.obstaclesAt(9.9);
+  const Disk& person = (now[0].center - at).norm() < 0.1 ? now[0] : now[1];
+  const Disk& wall = &person == &now[0] ? now[1] : now[0];
+  EXPECT_TRUE(person.velocity.isZero()) << "standing for 7 s";
+  EXPECT_GT(person.resume_velocity.y(), 0.5) << "the way they walked";
+  EXPECT_LT(std::abs(person.resume_velocity.x()), 0.1);
+  EXPECT_TRUE(wall.resume_velocity.isZero());
+  // walking_speed 0: no memory.
+  ObstacleTrackerConfig forgetful;
+  forgetful.walking_speed = 0.0;
+  ObstacleTracker plain(forgetful);
+  at = {0.0, -2.0};
+  for (int k = 0; k < 100; ++k) {
+    if (k > 0 && k <= 30) at.y() += 0.07;
+    plain.update(0.1 * k, {{at, 0.25}});
+  }
+  EXPECT_TRUE(plain.obstaclesAt(9.9)[0].resume_velocity.isZero());
+}
+
 TEST(ObstacleTracker, CrossingObstaclesKeepTheirIdsAndAreNotMerged) {
   // Two people crossing in an X at 1 m/s, with a scan where their blobs merge into one.
   ObstacleTracker tracker;

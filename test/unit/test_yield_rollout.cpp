@@ -3,9 +3,11 @@
 // the body clear; with no one moving, or no one near, nothing changes.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "amigobot_tracking/core/law/yield_rollout.h"
+#include "amigobot_tracking/core/robot/actuator_model.h"
 
 using namespace amigobot_tracking::core;
 
@@ -89,8 +91,57 @@ TEST(YieldRollout, KeepsTheManoeuvreUnderWayWhileItIsClear) {
   again.committed->held = 3.5;
   EXPECT_GT(yieldToMovingDisks(again, kDiamond, behind).candidates, 0);
   // A manoeuvre that drives straight back into the person is dropped.
-  again.committed = YieldManoeuvre{{-0.3, 0.0}, 0.0, {-0.3, 0.0}, 0.05};
+  again.committed = YieldManoeuvre{{-0.3, 0.0}, 0.0, {-0.3, 0.0}};
+  again.committed->held = 0.05;
   const YieldResult dropped = yieldToMovingDisks(again, kDiamond, behind);
   EXPECT_GT(dropped.candidates, 0);
   EXPECT_FALSE(dropped.u.v == -0.3 && dropped.u.omega == 0.0);
+}
+
+namespace {
+
+// Where the base is after the manoeuvre's horizon on its ramps (from rest-ish at `previous`).
+Pose2 endOf(const YieldInput& in, const YieldManoeuvre& m) {
+  ActuatorModel base(in.limits, kAmigoHalfTrack);
+  base.step(in.previous, 2.0);
+  Pose2 pose = in.pose;
+  for (double t = 0.0; t < in.horizon - 1e-9; t += 0.1) pose = driveBody(&base, pose, m.commandAt(t), 0.1, 0.02);
+  return pose;
+}
+
+}  // namespace
+
+// A person walks head-on down a corridor 1.7 m wide (disks of 0.2 m at y = +-1.05) at 0.45 m/s.
+// Backing away down the corridor keeps the most clearance (the person never reaches a robot
+// that flees) and loses the target; the manoeuvre chosen steps aside and waits beside them,
+// keeping at least half of `enough` on the base's ramps.
+TEST(YieldRollout, StepsAsideAndWaitsInACorridorRatherThanBackingDownIt) {
+  std::vector<Disk> corridor = {disk(2.2, 0.05, 0.25, -0.45, 0.0)};
+  for (double x = -4.0; x <= 5.0; x += 0.4) {
+    corridor.push_back(disk(x, 1.05, 0.2));
+    corridor.push_back(disk(x, -1.05, 0.2));
+  }
+  YieldInput in = driving();
+  in.previous = in.filtered = {0.2, 0.0};
+  const YieldResult r = yieldToMovingDisks(in, kDiamond, corridor);
+  ASSERT_LT(r.filtered_clearance, 0.0) << "driving on should meet the person for this test to mean anything";
+  ASSERT_TRUE(r.acted);
+  EXPECT_GE(r.chosen_clearance, 0.5 * in.enough);
+  const Pose2 end = endOf(in, r.manoeuvre);
+  EXPECT_GT(end.x, -0.3) << "backed down the corridor ahead of the person";
+  EXPECT_GT(std::abs(end.y), 0.3) << "did not step aside";
+  EXPECT_EQ(r.manoeuvre.commandAt(in.horizon).v, 0.0) << "does not wait: drives on into the wall or away";
+}
+
+// A person 3.5 m ahead walking at the robot: a stop keeps clear over the horizon, driving on
+// does not. The look-ahead acts (it once sent the filter's command whenever a stop kept clear,
+// and the robot drove on until nothing did).
+TEST(YieldRollout, ActsWhenOnlyAStopKeepsClear) {
+  const std::vector<Disk> ahead = {disk(3.5, 0.0, 0.25, -0.4, 0.0)};
+  const YieldResult r = yieldToMovingDisks(driving(), kDiamond, ahead);
+  ASSERT_LT(r.filtered_clearance, 0.0);
+  ASSERT_GE(r.stopped_clearance, 0.15) << "a stop should keep clear for this test to mean anything";
+  EXPECT_TRUE(r.acted);
+  EXPECT_GE(r.chosen_clearance, 0.075);
+  EXPECT_LT(r.u.v, 0.3) << "drove on at v_bar toward the person";
 }

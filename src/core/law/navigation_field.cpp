@@ -112,15 +112,18 @@ std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double 
   std::vector<Disk> out = obstacles;
   if (!(horizon > 0.0)) return out;
   for (const Disk& o : obstacles) {
-    const double travel = o.velocity.norm() * horizon;
+    // A person standing after a walk may walk on at any moment: their path stays (no "gone by then").
+    const bool standing = !(o.velocity.norm() > 0.0);
+    const Eigen::Vector2d velocity = standing ? o.resume_velocity : o.velocity;
+    const double travel = velocity.norm() * horizon;
     if (!(travel > 0.0) || !std::isfinite(travel)) continue;
     const double spacing = std::max(0.5 * o.radius, 0.05);
     const int copies = std::min(kMaxPathCopies, static_cast<int>(std::ceil(travel / spacing)));
     for (int k = 1; k <= copies; ++k) {
       Disk ahead = o;
       const double t = horizon * k / copies;
-      ahead.center = o.center + o.velocity * t;
-      if (t + (reach + o.radius) / o.velocity.norm() < (ahead.center - from).norm() / speed) continue;  // gone by then
+      ahead.center = o.center + velocity * t;
+      if (!standing && t + (reach + o.radius) / velocity.norm() < (ahead.center - from).norm() / speed) continue;  // gone by then
       out.push_back(ahead);
     }
   }
@@ -132,7 +135,7 @@ Eigen::Vector2d goalOutOfPaths(const Eigen::Vector2d& goal, const Eigen::Vector2
   Eigen::Vector2d out = goal;
   if (!(horizon > 0.0)) return out;
   for (const Disk& o : obstacles) {
-    const Eigen::Vector2d path = o.velocity * horizon;
+    const Eigen::Vector2d path = (o.velocity.norm() > 0.0 ? o.velocity : o.resume_velocity) * horizon;
     const double length2 = path.squaredNorm();
     if (!(length2 > 1e-12) || !path.allFinite()) continue;
     const double s = std::clamp((out - o.center).dot(path) / length2, 0.0, 1.0);

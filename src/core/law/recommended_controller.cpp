@@ -111,10 +111,7 @@ bool RecommendedController::command(const Pose2& pose, const std::vector<Disk>& 
     else if (h > 0.0) base_->step(last_command_, h);
     in.base = &*base_;
   }
-  if (committed_) {
-    committed_->first_duration = std::max(0.0, committed_->first_duration - h);
-    committed_->held += h;
-  }
+  if (committed_) committed_->advance(h);
   in.committed = committed_;
   const RecommendedCommand command = recommendedCommand(config_, diamond_, in, obstacles);
   if (!command.valid) return false;

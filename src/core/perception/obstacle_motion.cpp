@@ -51,6 +51,26 @@ Eigen::Vector2d ObstacleMotion::velocityAt(double t) const {
   return v;
 }
 
+Eigen::Vector2d ObstacleMotion::resumeVelocityAt(double t) const {
+  double tau = t - start_time;
+  if (!(tau > 0.0) || legs.empty() || velocityAt(t).norm() > 0.0) return Eigen::Vector2d::Zero();
+  const double T = period();
+  const bool wrapped = repeat && T > 0.0 && tau >= T;  // the legs of the cycle before count too
+  if (repeat && T > 0.0) tau = std::fmod(tau, T);
+  Eigen::Vector2d last = Eigen::Vector2d::Zero();
+  double begin = 0.0;
+  for (const MotionLeg& leg : legs) {
+    if (begin >= tau) break;
+    if (leg.velocity.norm() > 0.0) last = leg.velocity;
+    begin += leg.duration;
+  }
+  if (last.norm() == 0.0 && wrapped) {
+    for (const MotionLeg& leg : legs)
+      if (leg.velocity.norm() > 0.0) last = leg.velocity;
+  }
+  return last;
+}
+
 std::string ObstacleMotion::validate() const {
   std::ostringstream why;
   if (!start.allFinite()) return "start: not finite";

@@ -28,6 +28,10 @@ const FieldTable<ObstacleTrackerConfig>& obstacleTrackerFields() {
       field("min_hits", &T::min_hits, "-",
             "detections of a track, the first included, before its velocity is used (until then it is static)",
             atLeast(1)),
+      field("walking_speed", &T::walking_speed, "m/s",
+            "a track at least this fast is walking; when it then stands, the velocity it last walked at is "
+            "reported as where it may walk on (resume_velocity; 0: never)",
+            nonNegative()),
   };
   return table;
 }
@@ -76,6 +80,16 @@ void ObstacleTracker::update(double stamp, const std::vector<Disk>& detections) 
     track.disk.radius = detections[p.detection].radius;
     track.last_seen = stamp;
     ++track.hits;
+    // The walk's top speed in its latest direction: the filter's velocity decays through
+    // walking_speed as a person stops, and that decay is not how they would walk on.
+    const double now = track.disk.velocity.norm();
+    if (config_.walking_speed > 0.0 && track.hits >= config_.min_hits && now >= config_.walking_speed) {
+      const double top = track.walking ? std::max(now, track.walked.norm()) : now;
+      track.walked = track.disk.velocity * (top / now);
+      track.walking = true;
+    } else {
+      track.walking = false;
+    }
   }
   // Unseen tracks coast until forgotten; unmatched detections start new tracks.
   std::vector<TrackedObstacle> kept;
@@ -106,7 +120,10 @@ std::vector<Disk> ObstacleTracker::obstaclesAt(double stamp) const {
   out.reserve(tracks_.size());
   for (const TrackedObstacle& track : tracks_) {
     const Eigen::Vector2d velocity = reportedVelocity(track);
-    out.push_back({track.disk.center + velocity * std::max(0.0, stamp - track.last_seen), track.disk.radius, velocity});
+    // Walking on: no memory needed. Standing after a walk: where it may go next.
+    const Eigen::Vector2d resume = velocity.norm() > 0.0 ? Eigen::Vector2d::Zero() : track.walked;
+    out.push_back({track.disk.center + velocity * std::max(0.0, stamp - track.last_seen), track.disk.radius, velocity,
+                   resume});
   }
   return out;
 }

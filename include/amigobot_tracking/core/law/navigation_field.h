@@ -69,7 +69,9 @@ std::vector<Disk> narrowGapsClosed(const std::vector<Disk>& obstacles, const Nav
 // inside the others' union then (its zone adds nothing new at that instant).
 // A copy the robot cannot reach before the disk has walked past it (t + R_j / |v_j| <
 // |c_j(t) - from| / speed, R_j = `reach` + r_j the zone's radius) is left out: the person will
-// have gone by then, so the robot may pass behind them.
+// have gone by then, so the robot may pass behind them. A disk standing after a walk (its
+// resume_velocity) is seen along the path it would walk on, every copy kept: it may start at
+// any moment, so the robot passes behind a person who stopped, not in front of them.
 std::vector<Disk> withPredictedPaths(const std::vector<Disk>& obstacles, double horizon, const Eigen::Vector2d& from,
                                      double speed, double reach);
 constexpr int kMaxPathCopies = 40;
@@ -79,7 +81,8 @@ constexpr int kMaxPathCopies = 40;
 // v_j horizon) along the perpendicular, to its edge. So a robot whose target a person is about
 // to walk through waits beside the person's path, rather than on it until the person is upon it
 // (then the barrier can only push it ahead of them). The side is the goal's own; exactly on the
-// path line, `side_hint`'s (p_r's). Continuous in the geometry except on that line.
+// path line, `side_hint`'s (p_r's). Continuous in the geometry except on that line. A standing
+// disk's path is the one it would walk on (resume_velocity): the robot waits beside it.
 Eigen::Vector2d goalOutOfPaths(const Eigen::Vector2d& goal, const Eigen::Vector2d& side_hint,
                                const std::vector<Disk>& obstacles, double horizon, double robot_radius, double margin);
 

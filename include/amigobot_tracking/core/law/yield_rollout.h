@@ -1,22 +1,27 @@
 // The recommended law's look-ahead for people it cannot outrun: when the safety filter's
 // command, held and ramped by the base over `horizon`, would bring the body within `enough` of a
-// moving disk and so would a stop (a person walking into the robot from behind, head-on, or
-// across: not one crossing ahead, whom a stop lets pass), the command is chosen
+// moving disk and a stop would not let them by (a person walking into the robot from behind,
+// head-on, or across: not one crossing ahead, whom a stop lets pass, its clearance no longer
+// shrinking by the horizon's end), the command is chosen
 // instead among a few manoeuvres by what the base would really do (core::ActuatorModel: ramps,
 // cycle, latency) against every disk moved along its own velocity: the one whose body keeps the
-// most clearance (up to `enough`), then the one whose offset point ends nearest where the target
-// will be.
+// most clearance (up to `enough`) while none keeps half of `enough`; else, among those that keep
+// half, the one whose offset point ends nearest where the target will be, each centimetre of
+// clearance short of `enough` counted as kShortfallWeight centimetres farther.
 //
 // Why: the filter's barrier rows are instantaneous. A person closing faster than v_bar makes a
 // row infeasible, and the least-slack answer to it is to flee along the person's own line at
 // v_bar (the person catches up anyway); stepping aside needs a turn first, which no row rewards
 // while the robot faces along the person's path. Manoeuvres (candidates): constant (v, w) on a
-// grid of the diamond, and turn-then-drive (w = +-w_bar in place for 0.5, 1 or 1.5 s, then
-// +-v_bar straight); the manoeuvre's current command is what is sent, and it is kept while it
-// stays clear (YieldInput::committed). Static disks count in the clearance too, so stepping
-// aside does not step into a wall.
+// grid of the diamond, turn-then-drive (w = +-w_bar in place for 0.25 to 2.5 s, then +-v_bar or
+// +-v_bar / 2 straight) and turn-drive-stop (a step aside that then waits: in a corridor, a
+// drive that never stops meets the wall, and clearance alone preferred backing away down the
+// corridor ahead of the person); the manoeuvre's current command is what is sent, and it is kept
+// while it stays clear (YieldInput::committed). Static disks count in the clearance too, so
+// stepping aside does not step into a wall.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -30,12 +35,19 @@
 namespace amigobot_tracking {
 namespace core {
 
-// A manoeuvre: `first` for first_duration [s], then `then` until the horizon.
+// A manoeuvre: `first` for first_duration [s], then `then` for then_duration [s] (forever by
+// default), then a stop: a step aside that waits beside a person's path.
 struct YieldManoeuvre {
   Twist2 first;
   double first_duration = 0.0;
   Twist2 then;
+  double then_duration = std::numeric_limits<double>::infinity();
   double held = 0.0;  // [s] since it was chosen
+
+  // The command `t` [s] from now.
+  Twist2 commandAt(double t) const;
+  // Moves the manoeuvre's clock on by h [s] (what remains of each phase, and `held`).
+  void advance(double h);
 };
 
 struct YieldInput {

@@ -27,6 +27,9 @@ struct ObstacleMotion {
   // repeating) the obstacle stands still. A motion without legs never moves.
   Eigen::Vector2d positionAt(double t) const;
   Eigen::Vector2d velocityAt(double t) const;
+  // Standing at t after walking: the velocity of the last leg walked (where a person who stopped
+  // may walk on, Disk::resume_velocity). Zero while it walks and before it first walked.
+  Eigen::Vector2d resumeVelocityAt(double t) const;
   // Sum of the legs' durations [s].
   double period() const;
   // "" when usable, else "legs[i].duration: reason" (finite values, durations > 0, a repeating

@@ -6,7 +6,9 @@
 // finds no detection (e.g. the two blobs merged for a scan) coasts on its velocity until
 // `forget_after`. Matched tracks update with an alpha-beta filter. Velocities are reported
 // only after `min_hits` matches and below `still_speed` they are zero, so static clutter
-// (wall segments that jitter between scans) stays static.
+// (wall segments that jitter between scans) stays static. A track that walked (at least
+// `walking_speed`) and then stands reports the velocity it last walked at as its
+// resume_velocity: a person who stopped may walk on that way at any moment.
 #pragma once
 
 #include <cstdint>
@@ -27,6 +29,7 @@ struct ObstacleTrackerConfig {
   double still_speed = 0.05;    // [m/s] slower tracks report zero velocity
   double forget_after = 0.5;    // [s] a track unseen this long is dropped
   int min_hits = 3;             // matches before a velocity is reported
+  double walking_speed = 0.25;  // [m/s] a track this fast walks; standing, it keeps that velocity (0: never)
 
   std::string validate() const;  // empty when valid, else "key: reason" for the first bad field
 };
@@ -37,6 +40,8 @@ const FieldTable<ObstacleTrackerConfig>& obstacleTrackerFields();
 struct TrackedObstacle {
   std::uint32_t id = 0;
   Disk disk;                    // centre, radius and the filtered velocity
+  Eigen::Vector2d walked = Eigen::Vector2d::Zero();  // [m/s] its last walk: top speed, latest direction
+  bool walking = false;                              // at walking speed at its last match
   double last_seen = 0.0;       // [s]
   int hits = 0;
 };

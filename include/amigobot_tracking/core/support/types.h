@@ -25,11 +25,14 @@ struct Twist2 {
 };
 
 // A disk obstacle in the global frame: centre [m], radius [m] and, when known, its
-// velocity [m/s] (zero for static obstacles).
+// velocity [m/s] (zero for static obstacles). A disk standing now that was seen walking (a
+// person who stopped) keeps the velocity it last walked at in resume_velocity [m/s]: where it
+// may go next, at any moment. Zero while it walks and for a disk never seen moving.
 struct Disk {
   Eigen::Vector2d center = Eigen::Vector2d::Zero();
   double radius = 0.0;
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
+  Eigen::Vector2d resume_velocity = Eigen::Vector2d::Zero();
 };
 
 // Wraps an angle to (-pi, pi].
