@@ -14,7 +14,7 @@ LaserObstacles::LaserObstacles(tf2_ros::Buffer& tf, std::string global_frame, co
       global_frame_(std::move(global_frame)),
       config_(scan),
       epoch_(epoch),
-      tracker_(tracker),
+      tracker_(tracker, scan.cluster_tolerance),
       rate_(health.rate),
       open_space_(health.open_space),
       age_(future_stamp_tolerance) {}

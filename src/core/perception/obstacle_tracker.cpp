@@ -32,24 +32,92 @@ const FieldTable<ObstacleTrackerConfig>& obstacleTrackerFields() {
             "a track at least this fast is walking; when it then stands, the velocity it last walked at is "
             "reported as where it may walk on (resume_velocity; 0: never)",
             nonNegative()),
+      field("max_object_radius", &T::max_object_radius, "m",
+            "an object (disks of one scan no farther apart than scan/cluster_tolerance) wider than this from its "
+            "centre is static and not tracked: a wall, furniture, a person beside either",
+            positive()),
   };
   return table;
 }
 
 std::string ObstacleTrackerConfig::validate() const { return checkFields(obstacleTrackerFields(), *this); }
 
-ObstacleTracker::ObstacleTracker(const ObstacleTrackerConfig& config) : config_(config) {}
+ObstacleTracker::ObstacleTracker(const ObstacleTrackerConfig& config, double group_gap)
+    : config_(config), group_gap_(group_gap) {}
 
 void ObstacleTracker::clear() {
   tracks_.clear();
+  static_.clear();
   started_ = false;
 }
 
-void ObstacleTracker::update(double stamp, const std::vector<Disk>& detections) {
+namespace {
+
+// A scan's disks no farther apart than `gap` (transitively): one object.
+struct SeenObject {
+  Eigen::Vector2d center;  // the mean of its disks' centres
+  double extent;           // the farthest disk edge from it
+  std::vector<Disk> parts;
+};
+
+std::vector<SeenObject> groupIntoObjects(const std::vector<Disk>& detections, double gap) {
+  std::vector<size_t> root(detections.size());
+  for (size_t i = 0; i < root.size(); ++i) root[i] = i;
+  auto find = [&root](size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  std::vector<bool> usable(detections.size());
+  for (size_t i = 0; i < detections.size(); ++i)
+    usable[i] = detections[i].center.allFinite() && std::isfinite(detections[i].radius);
+  for (size_t i = 0; i < detections.size(); ++i) {
+    if (!usable[i]) continue;
+    for (size_t j = i + 1; j < detections.size(); ++j) {
+      if (usable[j] && (detections[i].center - detections[j].center).norm() <=
+                           detections[i].radius + detections[j].radius + gap)
+        root[find(j)] = find(i);
+    }
+  }
+  std::vector<SeenObject> objects;
+  std::vector<int> index(detections.size(), -1);
+  for (size_t i = 0; i < detections.size(); ++i) {
+    if (!usable[i]) continue;
+    const size_t r = find(i);
+    if (index[r] < 0) {
+      index[r] = static_cast<int>(objects.size());
+      objects.push_back({Eigen::Vector2d::Zero(), 0.0, {}});
+    }
+    objects[index[r]].parts.push_back({detections[i].center, detections[i].radius, Eigen::Vector2d::Zero()});
+  }
+  for (SeenObject& o : objects) {
+    Eigen::Vector2d low = o.parts[0].center, high = low;
+    for (const Disk& d : o.parts) {
+      low = low.cwiseMin(d.center - Eigen::Vector2d::Constant(d.radius));
+      high = high.cwiseMax(d.center + Eigen::Vector2d::Constant(d.radius));
+    }
+    o.center = 0.5 * (low + high);
+    for (const Disk& d : o.parts) o.extent = std::max(o.extent, (d.center - o.center).norm() + d.radius);
+  }
+  return objects;
+}
+
+}  // namespace
+
+void ObstacleTracker::update(double stamp, const std::vector<Disk>& seen) {
   if (!std::isfinite(stamp)) return;
   if (started_ && !(stamp > last_stamp_)) clear();
   started_ = true;
   last_stamp_ = stamp;
+
+  std::vector<SeenObject> detections;
+  static_.clear();
+  for (SeenObject& o : groupIntoObjects(seen, group_gap_)) {
+    if (o.extent > config_.max_object_radius) {
+      static_.insert(static_.end(), o.parts.begin(), o.parts.end());
+    } else {
+      detections.push_back(std::move(o));
+    }
+  }
 
   // Candidate pairs within the gate, nearest first; each track and detection used once.
   struct Pair {
@@ -77,7 +145,8 @@ void ObstacleTracker::update(double stamp, const std::vector<Disk>& detections) 
     track.disk.velocity += (config_.velocity_gain / dt) * residual;
     const double speed = track.disk.velocity.norm();
     if (speed > config_.max_speed) track.disk.velocity *= config_.max_speed / speed;
-    track.disk.radius = detections[p.detection].radius;
+    track.disk.radius = detections[p.detection].extent;
+    track.parts = std::move(detections[p.detection].parts);
     track.last_seen = stamp;
     ++track.hits;
     // The walk's top speed in its latest direction: the filter's velocity decays through
@@ -94,16 +163,17 @@ void ObstacleTracker::update(double stamp, const std::vector<Disk>& detections) 
   // Unseen tracks coast until forgotten; unmatched detections start new tracks.
   std::vector<TrackedObstacle> kept;
   for (size_t i = 0; i < tracks_.size(); ++i) {
-    if (stamp - tracks_[i].last_seen <= config_.forget_after) kept.push_back(tracks_[i]);
+    if (stamp - tracks_[i].last_seen <= config_.forget_after) kept.push_back(std::move(tracks_[i]));
   }
   for (size_t j = 0; j < detections.size(); ++j) {
-    if (detection_used[j] || !detections[j].center.allFinite() || !std::isfinite(detections[j].radius)) continue;
+    if (detection_used[j]) continue;
     TrackedObstacle track;
     track.id = next_id_++;
-    track.disk = {detections[j].center, detections[j].radius, Eigen::Vector2d::Zero()};
+    track.disk = {detections[j].center, detections[j].extent, Eigen::Vector2d::Zero()};
+    track.parts = std::move(detections[j].parts);
     track.last_seen = stamp;
     track.hits = 1;
-    kept.push_back(track);
+    kept.push_back(std::move(track));
   }
   tracks_ = std::move(kept);
 }
@@ -116,14 +186,13 @@ Eigen::Vector2d ObstacleTracker::reportedVelocity(const TrackedObstacle& track) 
 }
 
 std::vector<Disk> ObstacleTracker::obstaclesAt(double stamp) const {
-  std::vector<Disk> out;
-  out.reserve(tracks_.size());
+  std::vector<Disk> out(static_);
   for (const TrackedObstacle& track : tracks_) {
     const Eigen::Vector2d velocity = reportedVelocity(track);
     // Walking on: no memory needed. Standing after a walk: where it may go next.
     const Eigen::Vector2d resume = velocity.norm() > 0.0 ? Eigen::Vector2d::Zero() : track.walked;
-    out.push_back({track.disk.center + velocity * std::max(0.0, stamp - track.last_seen), track.disk.radius, velocity,
-                   resume});
+    const Eigen::Vector2d moved = velocity * std::max(0.0, stamp - track.last_seen);
+    for (const Disk& part : track.parts) out.push_back({part.center + moved, part.radius, velocity, resume});
   }
   return out;
 }
