@@ -14,17 +14,23 @@ class MasterPresence {
   enum class Change { kNone, kLost, kBack, kNewMaster };
 
   // One poll at `now` [s]: the master's identity (its pid) when it answered, nullopt when
-  // it did not. Returns what changed: kLost at the first failed poll after an answer,
-  // kNewMaster when an identity other than the last known answers (restarted), kBack when
-  // the same one answers again after polls failed (a network hiccup: nothing to redo).
+  // it did not. Returns what changed: kLost at the second failed poll in a row after an
+  // answer, kNewMaster when an identity other than the last known answers (restarted), kBack
+  // when the same one answers again after it was lost (a network hiccup: nothing to redo).
+  // One failed poll is not a lost master: a poll that times out (ros/master_watch.h: 0.3 s)
+  // has already made the last answer 0.5 s old, and a master busy with registrations missed
+  // one poll once in a loaded end-to-end run, which stopped the robot for good. A master that
+  // is gone refuses at once, so two polls in a row cost it nothing; one that hangs is
+  // lost after two call timeouts.
   Change observe(double now, const std::optional<std::string>& identity) {
     if (!identity) {
       const bool was_reachable = reachable_;
-      reachable_ = false;
-      return was_reachable ? Change::kLost : Change::kNone;
+      if (++misses_ >= 2) reachable_ = false;
+      return was_reachable && !reachable_ ? Change::kLost : Change::kNone;
     }
     const bool was_reachable = reachable_;
     reachable_ = true;
+    misses_ = 0;
     last_answer_ = now;
     if (!identity_) {
       identity_ = identity;
@@ -47,6 +53,7 @@ class MasterPresence {
  private:
   std::optional<std::string> identity_;
   bool reachable_ = false;
+  int misses_ = 0;  // failed polls in a row
   double last_answer_ = 0.0;
 };
 
