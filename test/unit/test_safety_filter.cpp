@@ -185,6 +185,29 @@ TEST(SafetyFilter, BodyRowsHoldTheBodyWhereTheOffsetPointsDiskIsClear) {
   EXPECT_NEAR(safetyClearance(in, {disk}), away.norm() - 0.18 - 0.2, 1e-12);  // the true clearance
 }
 
+// A person walking at p_r from ahead and to the right (the robot stopped, body_rows): p_r's row,
+// with the person's velocity in it, was met by turning in place at the diamond's edge to swing
+// p_r ahead of them, which moves no part of the robot away. A moving disk holds off the body
+// only: the robot backs away from them, hardly turning. A still disk there keeps p_r's row.
+TEST(SafetyFilter, APersonWalkingAtTheOffsetPointDoesNotTurnTheRobotInPlace) {
+  SafetyFilterInput in;
+  in.robot_radius = 0.18;
+  in.body_rows = true;
+  in.obstacle_velocities = true;
+  in.nominal = {0.0, 0.0};
+  const DiamondSet diamond(0.3, 0.8);
+  const Disk person{Eigen::Vector2d(0.45, -0.45), 0.25, Eigen::Vector2d(0.0, 0.6)};
+  const SafetyFilterResult r = safetyFilter(in, diamond, {person});
+  ASSERT_TRUE(r.solved);
+  EXPECT_LT(std::abs(r.u.omega), 0.1) << "turned in place for a person";
+  EXPECT_LE(r.u.v, 0.0) << "drove toward the person";
+  EXPECT_NEAR(safetyClearance(in, {person}), person.center.norm() - 0.18 - 0.25, 1e-12) << "the body's clearance";
+  Disk still = person;
+  still.velocity.setZero();
+  EXPECT_NEAR(safetyClearance(in, {still}), (person.center - Eigen::Vector2d(0.3, 0.0)).norm() - 0.18 - 0.25, 1e-12)
+      << "a still disk keeps p_r's disk";
+}
+
 // The braking curve: delay s + s^2 / (2 a) = room at the returned s, 0 without room, room /
 // delay without a deceleration limit.
 TEST(SafetyFilter, BrakingSpeedStopsWithinTheRoom) {

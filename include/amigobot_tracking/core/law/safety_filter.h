@@ -16,7 +16,10 @@
 //               n_c^T (v heading - v_j) >= -gamma (h_c - m) - s,  h_c = |c - c_j| - (R_eff + r_j)
 // which holds the body exactly instead of through the disk of radius R + r around p_r that
 // encloses it at every heading (the body may pass a disk sideways, where that disk keeps r
-// too much). Its clearance is taken less a look-ahead L (1 - n_c^T heading) (L =
+// too much); and a moving disk (v_j != 0: a person) then has the body's row only, not p_r's:
+// with v_j in it, p_r's row was met most cheaply by turning in place to swing p_r ahead of a
+// person walking at it, which moves no part of the robot away. Its clearance is taken less a
+// look-ahead L (1 - n_c^T heading) (L =
 // kBodyLookahead: 0 heading away, 2L facing the disk), so omega enters the row and, at
 // contact, the robot is turned along the disk rather than pinned; the true clearance stays >= m. The objective is strictly
 // convex, so the minimiser is unique and continuous in the state and in the geometry; a disk
@@ -95,7 +98,7 @@ struct SafetyFilterResult {
 };
 
 // The least clearance of the disks the filter holds (the disk of robot_radius around p_r and,
-// with body_rows, the body disk), +inf without obstacles.
+// with body_rows, the body disk; a moving disk's from the body only), +inf without obstacles.
 double safetyClearance(const SafetyFilterInput& in, const std::vector<Disk>& obstacles);
 
 // [m] the body row's look-ahead L (above).
