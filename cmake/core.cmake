@@ -27,6 +27,7 @@ amigobot_add_library(amigobot_tracking_core
   src/core/reference/reference.cpp
   src/core/perception/obstacle_tracker.cpp
   src/core/perception/scan_obstacles.cpp
+  src/core/supervision/scan_intake.cpp
   src/core/perception/scan_health.cpp
   src/core/perception/virtual_obstacles.cpp
   src/core/supervision/resume_ramp.cpp
@@ -50,7 +51,7 @@ if(CATKIN_ENABLE_TESTING)
   foreach(unit field_table diamond resume_ramp tracking_supervisor estimator offset_point avoidance disk_clusters band_implicit controller_config controller_guards
           obstacle_tracker scan_obstacles virtual_obstacles waypoint_reference reference_spec input_age command_lock body_intrusion safety_filter tracking_loop
           rho_noise_headroom transform_intake scan_health obstacle_motion actuator_model law_registry
-          obstacle_paths yield_rollout)
+          obstacle_paths yield_rollout scan_intake)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_core)
   endforeach()

@@ -12,12 +12,8 @@ LaserObstacles::LaserObstacles(tf2_ros::Buffer& tf, std::string global_frame, co
                                double future_stamp_tolerance, const LaserHealthConfig& health)
     : tf_(tf),
       global_frame_(std::move(global_frame)),
-      config_(scan),
-      epoch_(epoch),
-      tracker_(tracker, scan.cluster_tolerance),
-      rate_(health.rate),
-      open_space_(health.open_space),
-      age_(future_stamp_tolerance) {}
+      intake_(scan, tracker, epoch.toSec(), future_stamp_tolerance, health.open_space),
+      rate_(health.rate) {}
 
 LaserObstacles::~LaserObstacles() {
   filter_.reset();  // before the subscriber it reads from
@@ -57,10 +53,8 @@ double LaserObstacles::update(const ros::Time& now) {
   }
   if (scan && scan != processed_) {
     processed_ = scan;
-    std::string refusal = core::scanBeamsProblem(toScanGeometry(*scan), scan->angle_max, scan->ranges.data(),
-                                                 scan->ranges.size());
-    if (refusal.empty() && !open_space_)
-      refusal = core::blindScanProblem(toScanGeometry(*scan), scan->ranges.data(), scan->ranges.size());
+    const std::string refusal =
+        intake_.refusal(toScanGeometry(*scan), scan->angle_max, scan->ranges.data(), scan->ranges.size());
     if (!refusal.empty()) {
       refuse(refusal, scan->header.frame_id);
     } else {
@@ -69,18 +63,14 @@ double LaserObstacles::update(const ros::Time& now) {
         // The MessageFilter let the scan through only once this transform was available.
         const geometry_msgs::TransformStamped sensor =
             tf_.lookupTransform(global_frame_, scan->header.frame_id, scan->header.stamp);
-        core::scanToObstacles(toScanGeometry(*scan), scan->ranges, toAffine2d(sensor.transform), config_,
-                              &disks_next_);  // cannot fail: the geometry was checked above
-        disks_.swap(disks_next_);  // the previous disks stay until a good scan replaces them
-        used_ = scan;
-        age_.arrived(scan->header.stamp.toSec(), arrival.toSec());
-        tracker_.update((scan->header.stamp - epoch_).toSec(), disks_);
+        intake_.take(toScanGeometry(*scan), scan->ranges.data(), scan->ranges.size(), toAffine2d(sensor.transform),
+                     scan->header.stamp.toSec(), arrival.toSec());
       } catch (const tf2::TransformException& ex) {
         ROS_WARN_THROTTLE(5.0, "tracking: scan dropped: %s", ex.what());
       }
     }
   }
-  const core::InputAge age = age_.at(now.toSec());
+  const core::InputAge age = intake_.age(now.toSec());
   if (rate_problem.empty()) {
     rate_log_.clear();
   } else if (rate_log_.due(rate_problem, "scan rate")) {  // the measured figure changes every scan
@@ -100,11 +90,7 @@ void LaserObstacles::refuse(const std::string& why, const std::string& frame) {
 }
 
 void LaserObstacles::obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const {
-  if (moving) {
-    *out = tracker_.obstaclesAt((now - epoch_).toSec());
-  } else {
-    *out = disks_;
-  }
+  intake_.obstacles(moving, now.toSec(), out);
 }
 
 }  // namespace ros_layer

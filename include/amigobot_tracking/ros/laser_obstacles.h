@@ -1,7 +1,8 @@
-// Laser scans -> obstacle disks in the global frame for the tracking node. `scan` arrives
-// through a tf2 MessageFilter (a scan is used only once its transform is known); the
-// callback only stores the latest scan under this class's mutex, and the control cycle turns
-// it into disks (core/perception/scan_obstacles.h), tracked across scans for moving_obstacles.
+// Laser scans -> obstacle disks in the global frame for the tracking node: the ROS wiring of
+// core/supervision/scan_intake.h (which scans are used, their disks, the tracker, their age).
+// `scan` arrives through a tf2 MessageFilter (a scan is used only once its transform is known);
+// the callback only stores the latest scan under this class's mutex, and the control cycle
+// hands it to the intake with the sensor's pose at its stamp, and logs refusals.
 #pragma once
 
 #include <memory>
@@ -15,9 +16,9 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/message_filter.h>
 
-#include "amigobot_tracking/core/supervision/input_age.h"
 #include "amigobot_tracking/core/perception/obstacle_tracker.h"
 #include "amigobot_tracking/core/perception/scan_health.h"
+#include "amigobot_tracking/core/supervision/scan_intake.h"
 #include "amigobot_tracking/core/perception/scan_obstacles.h"
 #include "amigobot_tracking/ros/refusal_log.h"
 
@@ -59,26 +60,20 @@ class LaserObstacles {
   // *out = the laser obstacles at `now`: the last scan's disks, or with `moving` the
   // tracked disks with their velocities.
   void obstacles(bool moving, const ros::Time& now, std::vector<core::Disk>* out) const;
-  const std::vector<core::Disk>& disks() const { return disks_; }  // last scan's
+  const std::vector<core::Disk>& disks() const { return intake_.disks(); }  // last used scan's
 
  private:
   tf2_ros::Buffer& tf_;
   const std::string global_frame_;
-  const core::ScanObstacleConfig config_;
-  const ros::Time epoch_;
-  core::ObstacleTracker tracker_;
+  core::ScanIntake intake_;  // the control cycle's
 
   std::mutex latest_mutex_;
   sensor_msgs::LaserScan::ConstPtr latest_;  // written by onScan only
   ros::Time latest_arrival_;                 // when it arrived, on this node's clock
   core::ScanRateJudge rate_;                 // every arrival counts, also those update() skips
-  const bool open_space_;
 
   // The control cycle's (the caller serialises update and obstacles).
   sensor_msgs::LaserScan::ConstPtr processed_;  // last scan looked at
-  sensor_msgs::LaserScan::ConstPtr used_;       // last scan turned into disks_ (its age counts)
-  std::vector<core::Disk> disks_, disks_next_;  // disks_next_: scratch for the next scan
-  core::InputAgeTracker age_;
   std::string scan_problem_;
   RefusalLog refusal_, rate_log_;
 
