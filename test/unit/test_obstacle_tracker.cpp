@@ -1,15 +1,11 @@
 // Association of laser obstacles across scans and their velocities.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <limits>
 #include <map>
 #include <random>
 
 #include "amigobot_tracking/core/perception/obstacle_tracker.h"
-#include "amigobot_tracking/core/perception/scan_obstacles.h"
 
 using namespace amigobot_tracking::core;
 
@@ -23,84 +19,7 @@ const TrackedObstacle* nearest(const ObstacleTracker& tracker, const Eigen::Vect
   return best;
 }
 
-constexpr double kNothing = std::numeric_limits<double>::infinity();
-
-// Distance along the unit ray o + t d to a circle, or to a segment a-b (kNothing: missed).
-double rayToCircle(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Eigen::Vector2d& c, double r) {
-  const Eigen::Vector2d f = o - c;
-  const double b = f.dot(d), disc = b * b - (f.squaredNorm() - r * r);
-  if (disc < 0.0) return kNothing;
-  const double t = -b - std::sqrt(disc);
-  return t > 0.0 ? t : kNothing;
-}
-
-double rayToSegment(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Eigen::Vector2d& a,
-                    const Eigen::Vector2d& b) {
-  const Eigen::Vector2d e = b - a, w = a - o;
-  const double den = d.x() * e.y() - d.y() * e.x();
-  if (std::abs(den) < 1e-12) return kNothing;
-  const double t = (w.x() * e.y() - w.y() * e.x()) / den, s = (w.x() * d.y() - w.y() * d.x()) / den;
-  return (t > 0.0 && s >= 0.0 && s <= 1.0) ? t : kNothing;
-}
-
 }  // namespace
-
-// A SICK TiM (270 deg, 0.333 deg, 15 Hz, 1 cm noise) on a robot driving at 0.15 m/s sees a
-// person (r 0.25) cross 1.3 m ahead at 0.6 m/s, in a room whose walls it sees too. The laser
-// cuts the person into 3-4 disks and where it cuts moves as they walk; tracked disk by disk,
-// the pieces slid along the person's arc and the wall's pieces beside the person's shadow
-// along the wall: a wall piece reported 2 m/s (max_speed), and the person's pieces were off
-// by 0.35 m/s at worst. Tracked as objects, the walls stand still and the person's pieces all
-// carry the person's velocity (0.10 m/s off on average, 0.21 at worst).
-TEST(ObstacleTracker, APersonCutIntoPiecesIsOneObjectAndTheWallsStandStill) {
-  ScanGeometry tim;
-  tim.angle_min = -0.75 * M_PI;
-  tim.angle_increment = M_PI / 540.0;
-  tim.range_min = 0.05;
-  tim.range_max = 10.0;
-  ScanObstacleConfig scan;
-  ObstacleTracker tracker(ObstacleTrackerConfig(), scan.cluster_tolerance);
-  std::mt19937 rng(1);
-  std::normal_distribution<double> noise(0.0, 0.01);
-  const Eigen::Vector2d walk(0.0, 0.6);
-  double fastest_wall = 0.0, worst_person = 0.0, person_error = 0.0;
-  int person_pieces = 0;
-  for (int k = 0; k < 90; ++k) {
-    const double t = k / 15.0;
-    const Eigen::Vector2d robot(0.5 + 0.15 * t, 0.0), person = Eigen::Vector2d(1.8, -1.5) + walk * t;
-    std::vector<float> ranges(811);
-    for (size_t i = 0; i < ranges.size(); ++i) {
-      const double a = tim.angle_min + static_cast<double>(i) * tim.angle_increment;
-      const Eigen::Vector2d d(std::cos(a), std::sin(a));
-      const double r = std::min({rayToCircle(robot, d, person, 0.25), rayToSegment(robot, d, {-3.5, 2.4}, {4.5, 2.4}),
-                                 rayToSegment(robot, d, {-3.5, -2.4}, {4.5, -2.4}),
-                                 rayToSegment(robot, d, {4.5, -2.4}, {4.5, 2.4})});
-      ranges[i] = std::isfinite(r) ? static_cast<float>(r + noise(rng)) : std::numeric_limits<float>::infinity();
-    }
-    Eigen::Affine2d sensor = Eigen::Affine2d::Identity();
-    sensor.translation() = robot;
-    std::vector<Disk> disks;
-    ASSERT_TRUE(scanToObstacles(tim, ranges, sensor, scan, &disks));
-    tracker.update(t, disks);
-    if (t < 1.0) continue;  // the filter settles
-    for (const Disk& d : tracker.obstaclesAt(t)) {
-      if ((d.center - person).norm() > 0.4) {
-        fastest_wall = std::max(fastest_wall, d.velocity.norm());
-      } else {
-        worst_person = std::max(worst_person, (d.velocity - walk).norm());
-        person_error += (d.velocity - walk).norm();
-        ++person_pieces;
-      }
-    }
-  }
-  ASSERT_GT(person_pieces, 150);
-  person_error /= person_pieces;
-  std::printf("walls' fastest piece %.3f m/s; the person's pieces off by %.3f m/s on average, %.3f at worst\n",
-              fastest_wall, person_error, worst_person);
-  EXPECT_EQ(fastest_wall, 0.0) << "a wall moved";
-  EXPECT_LT(person_error, 0.15);
-  EXPECT_LT(worst_person, 0.3);
-}
 
 TEST(ObstacleTracker, ConstantVelocityIsEstimatedAndIdKept) {
   ObstacleTracker tracker;
