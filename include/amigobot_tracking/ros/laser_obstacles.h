@@ -18,8 +18,8 @@
 
 #include "amigobot_tracking/core/perception/obstacle_tracker.h"
 #include "amigobot_tracking/core/perception/scan_health.h"
-#include "amigobot_tracking/core/supervision/scan_intake.h"
 #include "amigobot_tracking/core/perception/scan_obstacles.h"
+#include "amigobot_tracking/core/supervision/scan_intake.h"
 #include "amigobot_tracking/ros/refusal_log.h"
 
 namespace amigobot_tracking {

@@ -10,6 +10,12 @@ namespace amigobot_tracking {
 namespace core {
 namespace {
 
+// A moving disk (a person) is held off the body only: the disk of radius R around p_r is the
+// law's point, not the robot's, and its row, with the person's velocity in it, was met most
+// cheaply by turning in place to swing p_r ahead of them (the body does not move when it
+// turns): the robot turned 1.8 rad and lost 1.5 m to a person pacing across its way.
+bool bodyOnly(const SafetyFilterInput& in, const Disk& o) { return in.body_rows && o.velocity.squaredNorm() > 0.0; }
+
 double costOf(const SmallQp& qp, const Eigen::Vector3d& x) {
   return qp.weight.dot((x - qp.target).cwiseAbs2());
 }
@@ -126,11 +132,7 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
   const double offset_decel = std::min(in.limits.trans_decel, r * in.limits.rot_decel);
   SafetyFilterResult result;
   for (const Disk& o : obstacles) {
-    // A moving disk (a person) holds off the body only: the disk of radius R around p_r is the
-    // law's point, not the robot's, and its row, with the person's velocity in it, was met most
-    // cheaply by turning in place to swing p_r ahead of them (the body does not move when it
-    // turns): the robot turned 1.8 rad and lost 1.5 m to a person pacing across its way.
-    if (in.body_rows && o.velocity.squaredNorm() > 0.0) continue;
+    if (bodyOnly(in, o)) continue;  // a person: the body's row below
     Eigen::Vector2d away = p_r - o.center;
     double distance = away.norm();
     if (distance < 1e-9) {  // on the centre: back off along -heading
@@ -217,8 +219,7 @@ double safetyClearance(const SafetyFilterInput& in, const std::vector<Disk>& obs
   const Eigen::Vector2d p_r = in.pose.position() + in.offset * Eigen::Vector2d(std::cos(in.pose.theta), std::sin(in.pose.theta));
   double least = std::numeric_limits<double>::infinity();
   for (const Disk& o : obstacles) {
-    if (!(in.body_rows && o.velocity.squaredNorm() > 0.0))  // a moving disk: the body only (safetyFilter)
-      least = std::min(least, (p_r - o.center).norm() - in.robot_radius - o.radius);
+    if (!bodyOnly(in, o)) least = std::min(least, (p_r - o.center).norm() - in.robot_radius - o.radius);
     if (in.body_rows) least = std::min(least, (in.pose.position() - o.center).norm() - in.robot_radius - o.radius);
   }
   return least;

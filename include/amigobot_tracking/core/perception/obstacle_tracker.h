@@ -10,8 +10,8 @@
 // scan's stamp (constant velocity), greedily by increasing distance within a gate, so two
 // obstacles that cross keep their ids: a detection is never given to two tracks, and a track
 // that finds no detection (e.g. the two blobs merged for a scan) coasts on its velocity until
-// `forget_after`. Matched tracks update their centre (the mean of their disks' centres) with
-// an alpha-beta filter and carry the disks last seen. Velocities are reported only after
+// `forget_after`. Matched tracks update their centre (the middle of their disks' bounding
+// box) with an alpha-beta filter and carry the disks last seen. Velocities are reported only after
 // `min_hits` matches and below `still_speed` they are zero, so static clutter (pillars that
 // jitter between scans) stays static. A track that walked (at least `walking_speed`) and
 // then stands reports the velocity it last walked at as its resume_velocity: a person who

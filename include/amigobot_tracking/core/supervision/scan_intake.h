@@ -1,7 +1,8 @@
 // What the tracking node keeps of its laser, without ROS: whether a scan may be used, the
 // last usable scan's disks in the global frame, the tracker that follows them across scans
-// (moving_obstacles), and how old the last used scan is (supervision: it judges freshness). The ROS side (ros/laser_obstacles.h)
-// only subscribes, looks up the sensor's pose at the scan's stamp and logs refusals.
+// (moving_obstacles), and how old the last used scan is (supervision: it judges freshness).
+// The ROS side (ros/laser_obstacles.h) only subscribes, looks up the sensor's pose at the
+// scan's stamp and logs refusals.
 //
 // Rules: a scan whose beams are unusable (scanBeamsProblem) or that sees nothing at all
 // (blindScanProblem; unless open_space: an empty room) is refused: the previous disks stay and
