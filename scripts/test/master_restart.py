@@ -5,6 +5,9 @@ Starts its own roscore on a free port and test/e2e/master_restart.launch (the em
 driver, tracking on the circle reference), then judges from the emulator's ground truth and
 its command journal, never from the stack's own messages:
 
+  hang      the master SIGSTOPped 2 s while tracking (a busy master, the same one after): zero
+            on the wire within HANG_BOUND, nothing non-zero while it hangs; after SIGCONT the
+            motors come on and the robot tracks again by itself, with no service called
   stop      the master SIGKILLed while tracking (roscore with it): zero on the robot's wire and
             the motors off within BOUND; no non-zero setpoint on the wire after that while
             nobody enabled the motors
@@ -35,6 +38,10 @@ MASTER_TIMEOUT = 0.5  # [s] config/driver.yaml
 # master_timeout + the watch's poll period (0.1 s) + the driver's check period (0.1 s) + its
 # next command slot (0.05 s) + 0.15 s of scheduling on a loaded 2-core machine
 BOUND = MASTER_TIMEOUT + 0.4
+# A hung master refuses nothing: each poll waits out its call timeout (0.3 s), and the second
+# unanswered one in a row is the loss, 0.8 s at most after its last answer; then as above.
+HANG_BOUND = 2 * 0.3 + 0.2 + 0.4
+HANG_S = 2.0  # [s] the master stays stopped
 MOVING = 0.05  # [m/s] true speed that counts as driving
 # The stand-alone programs of the stack (not nodelets) master_restart.launch starts.
 STANDALONE = ("/reference_publisher", "/sim_laser", "/ground_truth_localization", "/robot_trail", "/target_trail")
@@ -200,6 +207,28 @@ def main():
             raise Failed("the robot never tracked (see %s)" % log_dir)
         time.sleep(2.0)
         standalone = known_nodes(env["ROS_MASTER_URI"], STANDALONE)
+
+        # hang: the same master stops answering for HANG_S, then answers again.
+        rosmaster = master_pids(env["ROS_MASTER_URI"])[0]
+        print("master_restart: tracking at %.2f m/s; stopping the master %.0f s" % (truth(status_port)["v"], HANG_S),
+              flush=True)
+        os.kill(rosmaster, signal.SIGSTOP)
+        hung = truth(status_port)["t"]
+        time.sleep(HANG_S)
+        os.kill(rosmaster, signal.SIGCONT)
+        resumed = truth(status_port)["t"]
+        rows = journal(command_log)
+        zero = next((r for r in rows if r[0] >= hung and r[1] == 0.0 and r[2] == 0.0), None)
+        stop_s = zero[0] - hung if zero else float("inf")
+        during = [r for r in rows if zero and zero[0] < r[0] <= resumed and (r[1] != 0.0 or r[2] != 0.0)]
+        check("hang", stop_s <= HANG_BOUND, "zero on the wire %.3f s after the master stopped answering (bound %.2f s)"
+              % (stop_s, HANG_BOUND))
+        check("hang", not during, "%d non-zero setpoints on the wire while the master hung" % len(during))
+        back = wait_until(lambda: truth(status_port)["motors"] and truth(status_port)["v"] > MOVING, 10.0)
+        check("hang", back, "the same master back: motors %s, tracking again at %.3f m/s, no service called"
+              % ("on" if truth(status_port)["motors"] else "off", truth(status_port)["v"]))
+        time.sleep(2.0)
+
         before = truth(status_port)
         print("master_restart: tracking at %.2f m/s; killing the master" % before["v"], flush=True)
         run.kill_master(master)

@@ -194,8 +194,9 @@ class Run:
         self.m.set_link(True)
         during = rec.since(cut_wall, up_wall)
         # The target's master is across the link: its driver stopped with the motors disabled
-        # (master_timeout) and keeps them so until enable_motors. The operator's call, so that
-        # the target drives on along its course and the tracker has to start again on its ramp.
+        # (master_timeout); the same master answering again, it turns them on by itself. The call
+        # (an operator's) covers a driver that has not seen the master again yet, so that the
+        # target drives on along its course and the tracker has to start again on its ramp.
         wait_for("the target's motors enabled again after the link returned", self.target_enabled_again, 20, 0.3)
         time.sleep(max(0.0, go + sum(s[0] for s in SEGMENTS) + 1.0 + 6.0 - time.monotonic()))
         end = time.monotonic()

@@ -64,8 +64,9 @@ const core::FieldTable<DriverParams>& driverFields() {
               "it has been silent 1 s. Others are ignored with a throttled WARN naming them"),
         field("master_timeout", &D::master_timeout, "s",
               "ROS master unreachable this long -> zero velocity, motors disabled, cmd_vel ignored until a master "
-              "answers; after a master restart the process registers its topics and services with the new master "
-              "by itself; the motors stay disabled until the enable_motors service",
+              "answers. The same master back (busy, a link hiccup): the motors on again as they were. A restarted "
+              "master: the process registers its topics and services with it by itself; the motors stay disabled "
+              "until the enable_motors service",
               core::boundedTimeout()),
         core::live(field("stamp_offset", &D::stamp_offset, "s",
                          "a test aid, keep 0 on a robot: added to the stamps of odometry, its tf, sonar and the state "

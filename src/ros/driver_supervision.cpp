@@ -8,26 +8,41 @@ namespace ros_layer {
 
 void AmigobotDriver::checkMaster() {
   const MasterWatch::State master = master_->state();
-  if (!master_stop_ && master.unreachable_for > params_.master_timeout) {
-    master_stop_ = true;
-    client_->setVelocity({});
-    client_->requestMotors(false);
-    ROS_ERROR_STREAM_NAMED("driver", "ROS master unreachable for " << master.unreachable_for
-                                                                    << " s (master_timeout " << params_.master_timeout
-                                                                    << " s): robot stopped, motors disabled; they "
-                                                                       "stay disabled until enable_motors");
-    updater_.force_update();
+  switch (master_outage_.check(master.reachable, master.unreachable_for, master.identity, params_.master_timeout)) {
+    case MasterOutage::Action::kStop:
+      master_stop_ = true;
+      motors_before_outage_ = client_->status().motors_requested;
+      client_->setVelocity({});
+      client_->requestMotors(false);
+      ROS_ERROR_STREAM_NAMED("driver", "ROS master unreachable for " << master.unreachable_for << " s (master_timeout "
+                                                                      << params_.master_timeout
+                                                                      << " s): robot stopped, motors disabled until "
+                                                                         "the same master answers again");
+      updater_.force_update();
+      break;
+    case MasterOutage::Action::kResume:
+      master_stop_ = false;
+      if (motors_before_outage_) client_->requestMotors(true);
+      ROS_WARN_STREAM_NAMED("driver", "the same ROS master answers again (it was busy or the link hiccuped): cmd_vel "
+                                      "accepted"
+                                          << (motors_before_outage_ ? ", the motors on again as before the outage"
+                                                                    : "; the motors stay off as they were"));
+      updater_.force_update();
+      break;
+    case MasterOutage::Action::kStayStopped:
+      master_stop_ = false;
+      ROS_INFO_NAMED("driver", "a new ROS master answers: cmd_vel accepted; the motors stay disabled until "
+                               "enable_motors");
+      updater_.force_update();
+      break;
+    case MasterOutage::Action::kNone:
+      break;
   }
   if (master.registrations != master_registrations_) {
     master_registrations_ = master.registrations;
     ROS_INFO_STREAM_NAMED("driver", "a new ROS master answers: this process registered again ("
                                         << master.last_registration
                                         << "); the motors stay disabled until enable_motors");
-  }
-  if (master_stop_ && master.reachable) {
-    master_stop_ = false;
-    ROS_INFO_NAMED("driver", "ROS master reachable again: cmd_vel accepted; the motors stay disabled until enable_motors");
-    updater_.force_update();
   }
 }
 

@@ -82,6 +82,7 @@ MasterWatch::State MasterWatch::state() const {
   State s = state_;
   s.reachable = presence_.reachable();
   s.unreachable_for = presence_.unreachableFor(link::steadySeconds());
+  s.identity = presence_.identity();
   return s;
 }
 

@@ -286,12 +286,24 @@ void TrackingNode::checkMaster() {
     ROS_INFO_STREAM_NAMED("tracking", "a new ROS master answers: registered again (" << master.last_registration
                                                                                      << "); ~enable to track");
   }
-  if (master.unreachable_for <= node_config_.pose_timeout) return;
+  const MasterOutage::Action action =
+      master_outage_.check(master.reachable, master.unreachable_for, master.identity, node_config_.pose_timeout);
+  if (action == MasterOutage::Action::kNone || action == MasterOutage::Action::kStayStopped) return;
   std::lock_guard<std::mutex> lock(state_mutex_);
-  if (!started_ || !loop_.supervisor().enabled()) return;
-  publishLocked(loop_.disable(sinceEpoch(ros::Time::now())));
-  ROS_ERROR_STREAM_NAMED("tracking", "ROS master unreachable for " << master.unreachable_for
-                                                                   << " s: tracking disabled (~enable once it is back)");
+  if (!started_) return;
+  if (action == MasterOutage::Action::kStop) {
+    tracking_before_outage_ = loop_.supervisor().enabled();
+    if (!tracking_before_outage_) return;
+    publishLocked(loop_.disable(sinceEpoch(ros::Time::now())));
+    ROS_ERROR_STREAM_NAMED("tracking", "ROS master unreachable for "
+                                           << master.unreachable_for
+                                           << " s: tracking disabled until the same master answers again (a new "
+                                              "one: ~enable once it is back)");
+  } else if (tracking_before_outage_) {  // kResume: the master that answered before
+    if (loop_.enable()) cmd_vel_rate_->clear();
+    ROS_WARN_NAMED("tracking", "the same ROS master answers again (it was busy or the link hiccuped): tracking "
+                               "enabled again as before the outage");
+  }
 }
 
 // The same rules as at start-up. A diamond beyond the robot's is refused, not capped: /cmd_vel

@@ -112,6 +112,8 @@ class AmigobotDriver {
   ros::WallTimer master_timer_;  // wall clock: a paused /clock must not hide a dead master
   std::shared_ptr<MasterWatch> master_;
   std::atomic<bool> master_stop_{false};  // set by checkMaster, read by onCmdVel
+  MasterOutage master_outage_;            // checkMaster's timer only
+  bool motors_before_outage_ = false;     // requested when the outage stopped the robot
   std::atomic<double> stamp_offset_{0.0};  // params_.stamp_offset as reconfigured (read per SIP)
   std::uint64_t master_registrations_ = 0;
   bool one_way_reported_ = false;

@@ -57,5 +57,35 @@ class MasterPresence {
   double last_answer_ = 0.0;
 };
 
+// What a user of the watch (the driver's motors, the tracking loop) does about an outage of the
+// master, from the watch's state at each of its own checks: stop when the master has been
+// unreachable longer than the user's timeout; when a master answers again, resume if it is the
+// one that answered before the stop (it was busy or a link hiccuped: it still knows every
+// topic and service, so the robot can be stopped through ROS again), stay stopped if it is a
+// new one (restarted: whoever commanded the robot must say so again). Before, every outage
+// latched: a master that missed polls for 1 s while three stacks started at once on 2 cores
+// left a robot whose motors stayed off until someone called enable_motors.
+class MasterOutage {
+ public:
+  enum class Action { kNone, kStop, kResume, kStayStopped };
+
+  Action check(bool reachable, double unreachable_for, const std::optional<std::string>& identity, double timeout) {
+    if (!stopped_) {
+      if (!(unreachable_for > timeout)) return Action::kNone;
+      stopped_ = true;
+      identity_at_stop_ = identity;
+      return Action::kStop;
+    }
+    if (!reachable) return Action::kNone;
+    stopped_ = false;
+    return identity && identity == identity_at_stop_ ? Action::kResume : Action::kStayStopped;
+  }
+  bool stopped() const { return stopped_; }
+
+ private:
+  bool stopped_ = false;
+  std::optional<std::string> identity_at_stop_;  // the master that answered last before the stop
+};
+
 }  // namespace ros_layer
 }  // namespace amigobot_tracking

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -35,6 +36,7 @@ class MasterWatch {
     double unreachable_for = 0.0;  // [s] since the master last answered
     std::uint64_t registrations = 0;  // times everything was registered with a new master
     std::string last_registration;    // what the last one did ("12 publishers, ...")
+    std::optional<std::string> identity;  // the pid of the master that answered last
   };
 
   // The process's watch, started at the first call; it stops when the last holder lets go.

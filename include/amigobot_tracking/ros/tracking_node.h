@@ -128,6 +128,8 @@ class TrackingNode {
   ros::WallTimer master_timer_;
   std::shared_ptr<MasterWatch> master_;
   std::uint64_t master_registrations_ = 0;
+  MasterOutage master_outage_;              // checkMaster's timer only
+  bool tracking_before_outage_ = false;     // enabled when the outage disabled tracking
 };
 
 }  // namespace ros_layer
