@@ -19,7 +19,7 @@ target_link_libraries(test_e2e amigobot_tracking_ros_sim amigobot_tracking_world
 target_include_directories(test_e2e SYSTEM PRIVATE ${GTEST_INCLUDE_DIRS})
 target_include_directories(test_e2e PRIVATE test/support test/e2e/include)
 target_compile_definitions(test_e2e PRIVATE AMIGOBOT_EMULATOR="$<TARGET_FILE:amigobot_emulator>")
-target_compile_options(test_e2e PRIVATE ${AMIGOBOT_WARNINGS})
+target_compile_options(test_e2e PRIVATE ${AMIGOBOT_TEST_OPTIONS})
 amigobot_unity_build(test_e2e)
 add_dependencies(test_e2e ${PROJECT_NAME}_generate_messages_cpp)
 add_dependencies(tests test_e2e)
