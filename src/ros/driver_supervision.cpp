@@ -29,10 +29,8 @@ void AmigobotDriver::checkMaster() {
                                                                     : "; the motors stay off as they were"));
       updater_.force_update();
       break;
-    case MasterOutage::Action::kStayStopped:
+    case MasterOutage::Action::kStayStopped:  // a new master: said below, once it has our registrations
       master_stop_ = false;
-      ROS_INFO_NAMED("driver", "a new ROS master answers: cmd_vel accepted; the motors stay disabled until "
-                               "enable_motors");
       updater_.force_update();
       break;
     case MasterOutage::Action::kNone:
@@ -42,7 +40,7 @@ void AmigobotDriver::checkMaster() {
     master_registrations_ = master.registrations;
     ROS_INFO_STREAM_NAMED("driver", "a new ROS master answers: this process registered again ("
                                         << master.last_registration
-                                        << "); the motors stay disabled until enable_motors");
+                                        << "); cmd_vel accepted, the motors stay disabled until enable_motors");
   }
 }
 
