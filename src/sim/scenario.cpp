@@ -86,7 +86,8 @@ void parseRobot(Section s, Scenario& scenario) {
   s.finish();
 }
 
-void parseController(Section s, sim::ClosedLoopSetup& setup) {
+void parseController(Section s, Scenario& scenario) {
+  sim::ClosedLoopSetup& setup = scenario.setup;
   core::ControllerConfig& c = setup.controller;
   readControllerFields(s, "controller", c);
   const std::string variant = s.text("variant", "paper");
@@ -102,13 +103,10 @@ void parseController(Section s, sim::ClosedLoopSetup& setup) {
     fail(s.file(), s.node()["estimator"], s.key("estimator"), e.what());
   }
   // The proportional baseline's default gain: the paper law's small-error stiffness at
-  // rho = rho_inf, k_d / rho_inf (T(s) ~ s).
-  setup.baseline.k_p = positive(s, "k_p", s.number("k_p", c.k_d / c.rho_inf));
-  setup.baseline.lowpass_tau = positive(s, "lowpass_tau", s.number("lowpass_tau", setup.baseline.lowpass_tau));
-  setup.baseline.kalman_accel_std =
-      positive(s, "kalman_accel_std", s.number("kalman_accel_std", setup.baseline.kalman_accel_std));
-  setup.baseline.kalman_measurement_std =
-      positive(s, "kalman_measurement_std", s.number("kalman_measurement_std", setup.baseline.kalman_measurement_std));
+  // rho = rho_inf, k_d / rho_inf (T(s) ~ s); the baseline rows (scenario_fields.cpp) keep it
+  // unless the file gives k_p.
+  setup.baseline.k_p = c.k_d / c.rho_inf;
+  readScenarioFields(s, "controller", scenario);
   s.finish();
 }
 
@@ -271,7 +269,7 @@ Scenario parseScenario(const std::string& text, const std::string& file, const s
   scenario.name = stem(file);
   Section top(root, "", file);
   parseRobot(Section(top.required("robot"), "robot", file), scenario);
-  parseController(Section(top.required("controller"), "controller", file), scenario.setup);
+  parseController(Section(top.required("controller"), "controller", file), scenario);
   scenario.reference = parseReference(Section(top.required("reference"), "reference", file));
   const YAML::Node obstacles = top.optional("obstacles");
   if (!obstacles.IsDefined()) fail(file, root, "obstacles", "missing (required; [] for none)");

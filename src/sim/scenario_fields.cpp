@@ -55,6 +55,26 @@ core::FieldTable<Setup> localizationFields() {
   return t;
 }
 
+// The baselines' own settings (read only by the proportional law and the two estimators).
+core::FieldTable<Setup> baselineFields() {
+  using B = sim::BaselineParams;
+  core::FieldTable<Setup> t;
+  core::include(&t, "", &Setup::baseline,
+                core::FieldTable<B>{
+                    field("k_p", &B::k_p, "1/s",
+                          "gain of the proportional baseline (default: k_d / rho_inf, the paper law's "
+                          "small-error stiffness)",
+                          positive()),
+                    field("lowpass_tau", &B::lowpass_tau, "s", "time constant of the finite-difference estimator",
+                          positive()),
+                    field("kalman_accel_std", &B::kalman_accel_std, "m/s^2", "process noise of the Kalman estimator",
+                          positive()),
+                    field("kalman_measurement_std", &B::kalman_measurement_std, "m",
+                          "measurement noise of the Kalman estimator", positive()),
+                });
+  return t;
+}
+
 core::FieldTable<Scenario> makeTable() {
   core::FieldTable<Scenario> t;
   core::include(&t, "simulation/", &Scenario::setup, simulationFields());
@@ -68,6 +88,7 @@ core::FieldTable<Scenario> makeTable() {
   t.push_back(field("robot/description", &Scenario::robot_description, "-",
                     "robot YAML (config/robots/) whose dynamics keys the firmware base takes, relative to the "
                     "scenario file; empty = the AmigoBot's"));
+  core::include(&t, "controller/", &Scenario::setup, baselineFields());
   core::include(&t, "target/", &Scenario::setup, targetFields());
   core::include(&t, "localization/", &Scenario::setup, localizationFields());
   return t;

@@ -146,6 +146,17 @@ TEST(SimScenario, ProportionalGainDefaultsToTheLinearisedPaperGain) {
   EXPECT_DOUBLE_EQ(s.setup.baseline.k_p, 3.0 / 0.1);  // k_d / rho_inf
 }
 
+TEST(SimScenario, RefusesABaselineSettingOutOfItsBoundsNamingTheKey) {
+  // The baselines' keys are rows of the scenario's table (scenario_fields.cpp): its bounds, its message.
+  expectRefused(replaced(kMinimum, "body_safe: false}", "body_safe: false, k_p: -1}"), "controller.k_p");
+  expectRefused(replaced(kMinimum, "body_safe: false}", "body_safe: false, lowpass_tau: 0}"), "controller.lowpass_tau");
+  expectRefused(replaced(kMinimum, "body_safe: false}", "body_safe: false, kalman_accel_std: yes}"),
+                "controller.kalman_accel_std");
+  const sim::Scenario s = sim::parseScenario(
+      replaced(kMinimum, "body_safe: false}", "body_safe: false, kalman_measurement_std: 0.5}"), "b.yaml");
+  EXPECT_DOUBLE_EQ(s.setup.baseline.kalman_measurement_std, 0.5);
+}
+
 TEST(SimScenario, RefusesMissingKeys) {
   expectRefused(replaced(kMinimum, "v_max: 5.0, ", ""), "robot.v_max");
   expectRefused(replaced(kMinimum, "k_d: 3, ", ""), "controller.k_d");
