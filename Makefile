@@ -67,15 +67,10 @@ test: deps build ## build and run every test, ending with `N passed, N failed` (
 	@# JUnit case) runs beside the tests at the lowest priority: the tests wait on emulated
 	@# devices much of the time, and the fuzzers take only the CPU they leave idle (after the
 	@# tests, on its own, it took 53 s). The scenario loader's (it compiles all of core and sim
-	@# under ASan: minutes on a fresh clone) runs in `make fuzz` only. Its JUnit files go to
-	@# their own folder first: catkin's run_tests empties RESULTS when it starts.
-	rm -rf $(FUZZ_RESULTS) $(WS)/build/fuzz.rc
-	$(call timed,run_tests,( start=$$(date +%s); nice -n 19 $(ROOT)/scripts/test/run_fuzz.sh --test-runs $(FUZZ_RESULTS) \
-	  $(FUZZ_IN_TEST); echo $$? > $(WS)/build/fuzz.rc; echo "make: fuzz (beside the tests) took $$(( $$(date +%s) - start )) s" ) \
-	  > $(WS)/build/fuzz.log 2>&1 & $(CATKIN_NO_JOBS) -j$(RUN_JOBS) run_tests -k; echo $$? > $(WS)/build/run_tests.rc; \
-	  echo "make: run_tests done; waiting for the fuzz pass"; wait; cat $(WS)/build/fuzz.log; \
-	  mkdir -p $(RESULTS)/amigobot_tracking; cp $(FUZZ_RESULTS)/amigobot_tracking/*.xml $(RESULTS)/amigobot_tracking/ \
-	  || echo "make: the fuzz pass wrote no JUnit file (its log: $(WS)/build/fuzz.log)")
+	@# under ASan: minutes on a fresh clone) runs in `make fuzz` only. A fuzz failure is its
+	@# JUnit case's failure; the runner's exit code is counted once (run_tests.rc).
+	$(call timed,run_tests,$(ROOT)/scripts/test/run_tests_beside_fuzz.sh $(WS)/build $(RESULTS) $(FUZZ_RESULTS) \
+	  $(FUZZ_IN_TEST) -- $(CATKIN_NO_JOBS) -j$(RUN_JOBS) run_tests -k)
 	@# The two-Odroid experiment across two network namespaces (~1 min), its own JUnit cases.
 	-$(call timed,two machines,$(TWO_MACHINES))
 	@$(ROOT)/scripts/test/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
