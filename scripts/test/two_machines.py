@@ -102,14 +102,14 @@ class Run:
         return self.m.start(machine, name, cmd, self.env(machine), self.logs)
 
     def ros(self, machine, *cmd, timeout=20):
-        """True when `cmd` succeeded on `machine`; self.last_output keeps what it printed."""
+        """(whether `cmd` succeeded on `machine`, its exit code and last three lines)."""
         r = subprocess.run(["ip", "netns", "exec", self.m.ns[machine], *cmd], env=self.env(machine),
                            capture_output=True, text=True, timeout=timeout)
-        self.last_output = "exit %d: %s" % (r.returncode, " | ".join((r.stdout + r.stderr).strip().splitlines()[-3:]))
-        return r.returncode == 0 and "success: False" not in r.stdout
+        output = "exit %d: %s" % (r.returncode, " | ".join((r.stdout + r.stderr).strip().splitlines()[-3:]))
+        return r.returncode == 0 and "success: False" not in r.stdout, output
 
     def service(self, machine, name, timeout=40):
-        wait_for("rosservice call " + name, lambda: self.ros(machine, "rosservice", "call", name), timeout, 0.5)
+        wait_for("rosservice call " + name, lambda: self.ros(machine, "rosservice", "call", name)[0], timeout, 0.5)
 
     def target_enabled_again(self):
         if self.truth_now("target").motors:
@@ -219,9 +219,10 @@ class Run:
         rec = probe.PairRecorder(probe.StatusSocket(self.m.ns["target"], STATUS_PORT),
                                  probe.StatusSocket(self.m.ns["tracker"], STATUS_PORT))
         t_set = time.monotonic()
-        if not self.ros("target", "rosrun", "dynamic_reconfigure", "dynparam", "set", "/target/amigobot_driver",
-                        "stamp_offset", str(-CLOCK_BEHIND)):
-            raise RuntimeError("dynparam set /target/amigobot_driver stamp_offset refused (%s)" % self.last_output)
+        ok, output = self.ros("target", "rosrun", "dynamic_reconfigure", "dynparam", "set", "/target/amigobot_driver",
+                              "stamp_offset", str(-CLOCK_BEHIND))
+        if not ok:
+            raise RuntimeError("dynparam set /target/amigobot_driver stamp_offset refused (%s)" % output)
         t_applied = time.monotonic()
         time.sleep(max(0.0, t_applied + CLOCK_WATCH - time.monotonic()))
         rec.stop()
