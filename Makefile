@@ -34,17 +34,20 @@ FUZZ_RESULTS := $(WS)/build/fuzz_results
 # $(call timed,PHASE,COMMAND): runs COMMAND and prints how long PHASE took (its exit code kept).
 timed = @start=$$(date +%s); $(2); rc=$$?; echo "make: $(1) took $$(( $$(date +%s) - start )) s"; exit $$rc
 
-PHONY := deps deps-workstation deps-robot build test two-machines soak demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
+PHONY := deps deps-workstation deps-build deps-robot build test two-machines soak demo map bench fuzz clean sim reproduce clutter where help check-gcc11 udev
 PHONY += test-under-load pedestrians docs
 .PHONY: $(PHONY)
 # `make` alone installs the missing Debian packages, as it always did.
 .DEFAULT_GOAL := deps
 
-deps: ## install the missing Debian packages of the robot, the workstation and the tests (all three lists)
+deps: ## install the missing Debian packages of the robot, the workstation, the desktop and the tests (every list)
 	$(call timed,deps,$(ROOT)/scripts/setup/install_deps.sh)
 
 deps-workstation: ## install what building, `make demo` and rviz need (no fuzzer / check-gcc11 compilers)
 	$(call timed,deps,$(ROOT)/scripts/setup/install_deps.sh --workstation)
+
+deps-build: ## install what compiling the package and its tests needs (no rviz, Xvfb, plots)
+	$(call timed,deps,$(ROOT)/scripts/setup/install_deps.sh --build)
 
 deps-robot: ## install only what the robot's computer needs (no rviz, Xvfb, clang, matplotlib)
 	@$(ROOT)/scripts/setup/install_deps.sh --robot
@@ -109,8 +112,9 @@ soak: build ## soak: SOAK_MINUTES (15) of tracking on sim.launch, RSS growth MB/
 # law alone; DEMO_ARGS="--tolerance 0.05 --recovery-time 10": the tracking verdict's margins.
 # The demo builds what it runs and nothing more: the amigobot_demo target (cmake/ros_report.cmake
 # lists it). `make build` adds the offline simulator, the tools, tele-operation and the standalone nodes.
-demo: deps-workstation $(WS)/src/amigobot_tracking ## the whole stack on the emulated robot, headless, scored report in report/demo
-	$(call timed,build of the demo,$(CATKIN) amigobot_demo)
+# rviz, Xvfb and the plots (debian_packages_desktop.txt) install while the demo compiles.
+demo: deps-build $(WS)/src/amigobot_tracking ## the whole stack on the emulated robot, headless, scored report in report/demo
+	$(call timed,build of the demo,$(ROOT)/scripts/setup/install_beside.sh --desktop $(WS)/deps_desktop.log -- $(CATKIN) amigobot_demo)
 	$(ROOT)/scripts/reports/run_demo.py --ws $(WS) --out $(ROOT)/report/demo $(DEMO_ARGS)
 
 # A world's map built by SLAM (the pose graph) on the emulated robot (scripts/reports/make_map.py): the

@@ -41,6 +41,9 @@ if(CATKIN_ENABLE_TESTING)
   # install_deps.sh waits for another package manager's lock, naming it and its holder.
   amigobot_add_check(install_deps_lock_wait ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_install_deps.py
                      ${PROJECT_SOURCE_DIR}/scripts/setup/install_deps.sh)
+  # make demo's desktop packages install while it compiles: both at once, each failure kept.
+  amigobot_add_check(install_beside_build ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/test/scripts/test_install_beside.py
+                     ${PROJECT_SOURCE_DIR}/scripts/setup/install_beside.sh)
   # Every Makefile target has its one-line `make help` entry (help fails naming one without).
   # The parameter descriptions written from the field tables (`make docs`) are fresh: YAML
   # comments, the docs' parameter tables, the .cfg files (scripts/tools/param_docs.py).

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages of the given lists that are not yet installed.
-#   install_deps.sh               all three lists: robot + workstation + test (make deps, make test)
-#   install_deps.sh --workstation robot + workstation: build, demo, rviz (make build, make demo)
+#   install_deps.sh               every list: robot + workstation + desktop + test (make deps, make test)
+#   install_deps.sh --workstation robot + workstation + desktop: build, demo, rviz (make build)
+#   install_deps.sh --build       robot + workstation: what compiling the package and its tests needs
+#   install_deps.sh --desktop     desktop: rviz, plots, the demo's screen (make demo, beside its build)
 #   install_deps.sh --robot       only what the robot's computer needs (make deps-robot)
+# --check after the list's option: install nothing; print the missing packages and exit 1 if any.
 # Idempotent: does nothing (and needs no network) when every package is present.
 # Sourced (`source install_deps.sh`), it only defines its functions (test/scripts/test_install_deps.py).
 set -euo pipefail
@@ -52,11 +55,18 @@ wait_for_apt_locks() {
 main() {
   local dir lists
   dir="$(dirname "$0")"
+  local robot=$dir/debian_packages_robot.txt build=$dir/debian_packages.txt desktop=$dir/debian_packages_desktop.txt
+  local check=false
+  [ "${1:-}" = --check ] && { check=true; shift; }
+  [ "${2:-}" = --check ] && check=true
   case "${1:-}" in
-    "") lists=("$dir/debian_packages_robot.txt" "$dir/debian_packages.txt" "$dir/debian_packages_test.txt") ;;
-    --workstation) lists=("$dir/debian_packages_robot.txt" "$dir/debian_packages.txt") ;;
-    --robot) lists=("$dir/debian_packages_robot.txt") ;;
-    *) echo "install_deps.sh: unknown argument '$1' (expected nothing, --workstation or --robot)" >&2; exit 2 ;;
+    "") lists=("$robot" "$build" "$desktop" "$dir/debian_packages_test.txt") ;;
+    --workstation) lists=("$robot" "$build" "$desktop") ;;
+    --build) lists=("$robot" "$build") ;;
+    --desktop) lists=("$desktop") ;;
+    --robot) lists=("$robot") ;;
+    *) echo "install_deps.sh: unknown argument '$1' (expected nothing, --workstation, --build, --desktop or --robot, then --check)" >&2
+       exit 2 ;;
   esac
   mapfile -t wanted < <(sed -e 's/#.*//' -e 's/[[:space:]]//g' "${lists[@]}" | grep . | sort -u)
   missing=()
@@ -68,6 +78,10 @@ main() {
   if [ ${#missing[@]} -eq 0 ]; then
     echo "deps: all ${#wanted[@]} Debian packages present (${lists[*]##*/})"
     exit 0
+  fi
+  if $check; then
+    echo "deps: ${#missing[@]} of ${#wanted[@]} missing (${lists[*]##*/}): ${missing[*]}"
+    exit 1
   fi
   echo "deps: installing ${#missing[@]} missing packages: ${missing[*]}"
   SUDO=""
