@@ -17,6 +17,8 @@
 
 #include "emulator_process.h"
 
+namespace driver_one_way_link_test {
+
 using namespace amigobot_test;
 
 namespace {
@@ -117,6 +119,8 @@ TEST(DriverOneWayLink, NamedWithinTheBoundAndNoFalseAlarm) {
       << locked([&] { return diag.message; });
   loader.unload("/driver");
 }
+
+}  // namespace driver_one_way_link_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

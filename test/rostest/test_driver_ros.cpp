@@ -30,6 +30,8 @@
 
 #include "emulator_process.h"
 
+namespace driver_ros_test {
+
 using namespace amigobot_test;
 
 namespace {
@@ -249,6 +251,8 @@ TEST(DriverRos, BadParameterKeepsTheManagerAliveAndSaysWhich) {
   EXPECT_FALSE(ros::service::exists("/enable_motors", false));
   EXPECT_TRUE(loader.unload("/bad_driver"));
 }
+
+}  // namespace driver_ros_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

@@ -18,6 +18,8 @@
 #include "node_process.h"
 #include "nan_watcher.h"
 
+namespace joystick_teleop_test {
+
 using amigobot_test::CmdVelLog;
 using amigobot_test::NodeProcess;
 
@@ -138,6 +140,8 @@ TEST_F(JoystickTeleopNode, DeviceClosedSendsZeroLogsItAndReconnects) {
   }
   EXPECT_FALSE(std::isnan(waitFor(0.2, 0.0, back, 1.0))) << "drives again after the reconnection\n" << node_.output();
 }
+
+}  // namespace joystick_teleop_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

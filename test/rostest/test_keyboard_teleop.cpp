@@ -15,6 +15,8 @@
 #include "node_process.h"
 #include "nan_watcher.h"
 
+namespace keyboard_teleop_test {
+
 using amigobot_test::CmdVelLog;
 using amigobot_test::NodeProcess;
 
@@ -172,6 +174,8 @@ TEST(KeyboardTeleopNode, RefusesWithoutTerminalOrWithBadParameterAndPublishesNot
   ros::WallDuration(0.5).sleep();
   EXPECT_TRUE(log.since(t).empty());
 }
+
+}  // namespace keyboard_teleop_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

@@ -22,6 +22,8 @@
 #include "rosout_log.h"
 #include "nan_watcher.h"
 
+namespace laser_ros_test {
+
 using namespace amigobot_tracking;
 using namespace amigobot_tracking::sensors;
 
@@ -249,6 +251,8 @@ TEST(LaserRos, AClosedTcpPortIsAnErrorNamingIt) {
   const std::string port = "127.0.0.1:" + std::to_string(amigobot_test::freePort());
   expectLoudFailure("sick_tim5xx", port, "Connection refused");
 }
+
+}  // namespace laser_ros_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

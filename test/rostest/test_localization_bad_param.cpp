@@ -22,6 +22,8 @@
 #include "synthetic_robot.h"
 #include "nan_watcher.h"
 
+namespace localization_bad_param_test {
+
 namespace {
 
 // The FATAL lines on /rosout, subscribed (this process publishes /rosout) before a load.
@@ -111,6 +113,8 @@ TEST(LocalizationBadParam, AMapFolderThatCannotBeCreatedIsRefusedAtStartUp) {
   EXPECT_TRUE(loader.unload("/mapping_refused"));
   std::filesystem::remove(file);
 }
+
+}  // namespace localization_bad_param_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

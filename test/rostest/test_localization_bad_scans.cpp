@@ -21,6 +21,8 @@
 #include "synthetic_robot.h"
 #include "nan_watcher.h"
 
+namespace localization_bad_scans_test {
+
 using namespace amigobot_test;
 
 namespace {
@@ -86,6 +88,8 @@ TEST(LocalizationBadScans, RefusedByNameAndThePoseStaysFinite) {
   EXPECT_EQ(not_finite.load(), 0) << "a map -> odom that is not finite";
   EXPECT_TRUE(loader.unload("/localization"));
 }
+
+}  // namespace localization_bad_scans_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

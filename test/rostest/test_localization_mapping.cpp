@@ -22,6 +22,8 @@
 #include "synthetic_robot.h"
 #include "nan_watcher.h"
 
+namespace localization_mapping_test {
+
 using namespace amigobot_test;
 
 TEST(LocalizationNodelet, MapsTheRoomAndSavesTheMap) {
@@ -101,6 +103,8 @@ TEST(LocalizationNodelet, MapsTheRoomAndSavesTheMap) {
   EXPECT_TRUE(loader.unload("/mapping"));
   std::filesystem::remove_all(folder);
 }
+
+}  // namespace localization_mapping_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

@@ -30,6 +30,8 @@
 #include "synthetic_robot.h"
 #include "nan_watcher.h"
 
+namespace localization_tracking_test {
+
 using namespace amigobot_test;
 
 namespace {
@@ -319,6 +321,8 @@ TEST(LocalizationNodelet, LocalisesOnTheMapOfTheMapTopic) {
   EXPECT_TRUE(f.near(kTruth, 0.03, 0.02, 10.0)) << "on the map of /map";
   EXPECT_TRUE(loader.unload("/localization_on_topic"));
 }
+
+}  // namespace localization_tracking_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

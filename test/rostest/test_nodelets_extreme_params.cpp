@@ -11,6 +11,8 @@
 #include <nodelet/NodeletList.h>
 #include <ros/ros.h>
 
+namespace nodelets_extreme_params_test {
+
 namespace {
 
 bool listNodelets(std::vector<std::string>* names) {
@@ -45,6 +47,8 @@ TEST(NodeletsExtremeParams, OneManagerSurvivesThemAll) {
   ASSERT_TRUE(listNodelets(&names)) << "the manager died";
   for (const std::string& n : all) EXPECT_TRUE(contains(names, n)) << n << " gone at the end";
 }
+
+}  // namespace nodelets_extreme_params_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

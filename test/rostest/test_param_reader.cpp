@@ -19,6 +19,8 @@
 #include "amigobot_tracking/ros/param_reader.h"
 #include "amigobot_tracking/ros/tracking_params.h"
 
+namespace param_reader_test {
+
 using namespace amigobot_tracking;
 
 namespace {
@@ -277,6 +279,8 @@ TEST(LabConfigs, OurOwnNameWinsOverAnAliasAndTheAliasIsWarned) {
     EXPECT_NE(std::string(e.what()).find("baud: rplidar runs at 115200 or 256000, got 9600"), std::string::npos) << e.what();
   }
 }
+
+}  // namespace param_reader_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

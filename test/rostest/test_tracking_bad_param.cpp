@@ -12,6 +12,8 @@
 #include "amigobot_tracking/TrackingState.h"
 #include "nan_watcher.h"
 
+namespace tracking_bad_param_test {
+
 namespace {
 
 geometry_msgs::TransformStamped transform(const std::string& child, double x) {
@@ -45,6 +47,8 @@ TEST(TrackingBadParam, NothingStartsAndNothingMoves) {
   EXPECT_EQ(commands.load(), 0);
   EXPECT_EQ(states.load(), 0);
 }
+
+}  // namespace tracking_bad_param_test
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

@@ -22,6 +22,8 @@
 #include "tracking_world.h"
 #include "nan_watcher.h"
 
+namespace tracking_nodelet_test {
+
 using namespace amigobot_tracking;
 using namespace tracking_world;
 
@@ -296,16 +298,18 @@ TEST(TrackingNodelet, MarkersAndDiagnostics) {
   }
 }
 
+}  // namespace tracking_nodelet_test
+
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_tracking_nodelet");
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  World w;
-  world = &w;
+  tracking_world::World w;
+  tracking_world::world = &w;
   const int result = e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-  world = nullptr;
+  tracking_world::world = nullptr;
   spinner.stop();
   return result;
 }

@@ -15,6 +15,8 @@
 
 #include "amigobot_tracking/ros/tracking_params.h"
 
+namespace tracking_param_loading_test {
+
 using namespace amigobot_tracking;
 
 // The loaders refuse bad parameters with a message naming them (run here: they need a master).
@@ -156,3 +158,5 @@ TEST(TrackingParams, TheRobotFilesDiamondIsTrackingsDefaultAndCeiling) {
   for (const char* key : {"robot_params", "v_max", "robot_v_max"}) pnh.deleteParam(key);
   std::remove(file.c_str());
 }
+
+}  // namespace tracking_param_loading_test
