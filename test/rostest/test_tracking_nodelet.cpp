@@ -27,9 +27,19 @@ namespace tracking_nodelet_test {
 using namespace amigobot_tracking;
 using namespace tracking_world;
 
-// The tests share one nodelet and run in this order.
+// The cases share one nodelet and run in this order, in the scripted world, which exists only
+// while they run.
+class TrackingNodelet : public testing::Test {
+ protected:
+  static void SetUpTestSuite() { world = new World; }
+  static void TearDownTestSuite() {
+    delete world;
+    world = nullptr;
+  }
+  static inline World* world = nullptr;
+};
 
-TEST(TrackingNodelet, StartsDisabledAndCommandsNothing) {
+TEST_F(TrackingNodelet, StartsDisabledAndCommandsNothing) {
   ASSERT_TRUE(ros::service::waitForService("tracking/enable", ros::Duration(kTimeout)));
   const ros::Time since = ros::Time::now();
   // Several control periods with fresh inputs: the state says disabled, cmd_vel stays silent.
@@ -41,7 +51,7 @@ TEST(TrackingNodelet, StartsDisabledAndCommandsNothing) {
   for (const auto& c : world->commandsSince(ros::WallTime(0))) EXPECT_TRUE(isZero(c.twist));
 }
 
-TEST(TrackingNodelet, EnabledCommandsStayInsideTheDiamond) {
+TEST_F(TrackingNodelet, EnabledCommandsStayInsideTheDiamond) {
   ASSERT_TRUE(trigger("tracking/enable"));
   const ros::WallTime since = ros::WallTime::now();
   ASSERT_TRUE(waitFor([&] { return world->commandsSince(since).size() >= 60; }));
@@ -89,7 +99,7 @@ double entry(const dynamic_reconfigure::Config& config, const std::string& name)
 
 // The case: v_max 2, w_max 10 against the robot file's 0.3 m/s. Before, v_max was
 // capped to robot_v_max without a word, w_max taken, and the call answered success.
-TEST(TrackingNodelet, ReconfigureBeyondTheRobotLimitIsRefusedAndFails) {
+TEST_F(TrackingNodelet, ReconfigureBeyondTheRobotLimitIsRefusedAndFails) {
   ASSERT_TRUE(ros::service::waitForService("tracking/set_parameters", ros::Duration(kTimeout)));
   const double v_max = param("tracking/v_max"), w_max = param("tracking/w_max");
   EXPECT_FALSE(reconfigureTracking({{"v_max", 2.0}, {"w_max", 10.0}})) << "a refused set must fail the call";
@@ -116,7 +126,7 @@ TEST(TrackingNodelet, ReconfigureBeyondTheRobotLimitIsRefusedAndFails) {
   ASSERT_TRUE(reconfigureTracking({{"v_max", v_max}}));  // back to the launch value for the following tests
 }
 
-TEST(TrackingNodelet, DisableSendsOneZeroThenNothingMoves) {
+TEST_F(TrackingNodelet, DisableSendsOneZeroThenNothingMoves) {
   ASSERT_TRUE(trigger("tracking/disable"));
   const ros::WallTime after = ros::WallTime::now();
   ros::WallDuration(1.5).sleep();
@@ -131,7 +141,7 @@ TEST(TrackingNodelet, DisableSendsOneZeroThenNothingMoves) {
   EXPECT_FALSE(states.back().enabled);
 }
 
-TEST(TrackingNodelet, ZeroAfterTheTargetTfStopsAndGentleRestart) {
+TEST_F(TrackingNodelet, ZeroAfterTheTargetTfStopsAndGentleRestart) {
   ASSERT_TRUE(trigger("tracking/enable"));
   ASSERT_TRUE(waitFor([&] {
     const auto s = world->statesSince(ros::Time::now() - ros::Duration(0.5));
@@ -179,7 +189,7 @@ TEST(TrackingNodelet, ZeroAfterTheTargetTfStopsAndGentleRestart) {
   ASSERT_TRUE(trigger("tracking/disable"));
 }
 
-TEST(TrackingNodelet, UnusableScansCountAsNoScan) {
+TEST_F(TrackingNodelet, UnusableScansCountAsNoScan) {
   ASSERT_TRUE(trigger("tracking/enable"));
   auto status_has = [&](const std::string& word) {
     const auto s = world->statesSince(ros::Time::now() - ros::Duration(0.5));
@@ -196,7 +206,7 @@ TEST(TrackingNodelet, UnusableScansCountAsNoScan) {
   ASSERT_TRUE(trigger("tracking/disable"));
 }
 
-TEST(TrackingNodelet, VirtualObstaclesFromYamlTopicAndServices) {
+TEST_F(TrackingNodelet, VirtualObstaclesFromYamlTopicAndServices) {
   ASSERT_TRUE(waitFor([&] { return world->virtualObstacles().obstacles.size() == 1; }));
   EXPECT_EQ(world->virtualObstacles().obstacles[0].id, "start_box");
   VirtualObstacle o;
@@ -261,7 +271,7 @@ TEST(TrackingNodelet, VirtualObstaclesFromYamlTopicAndServices) {
   ASSERT_TRUE(waitFor([&] { return world->virtualObstacles().obstacles.empty(); }));
 }
 
-TEST(TrackingNodelet, MarkersAndDiagnostics) {
+TEST_F(TrackingNodelet, MarkersAndDiagnostics) {
   ros::NodeHandle nh;
   std::mutex mutex;
   visualization_msgs::MarkerArray markers;
@@ -306,10 +316,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  tracking_world::World w;
-  tracking_world::world = &w;
   const int result = e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-  tracking_world::world = nullptr;
   spinner.stop();
   return result;
 }

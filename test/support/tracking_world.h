@@ -152,8 +152,6 @@ class World {
   VirtualObstacleArray virtual_;
 };
 
-inline World* world = nullptr;  // set by main() for the whole run
-
 // Calls an idempotent Trigger service. A call can fail in transport on a loaded machine
 // even though the server ran it (seen once in 3 runs under 2 busy loops): retry twice.
 inline bool trigger(const std::string& service) {
