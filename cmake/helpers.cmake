@@ -100,15 +100,6 @@ function(amigobot_link_unit_tests)
   endforeach()
 endfunction()
 
-# A gtest rostest: FILE.test runs the executable NAME built from the sources.
-function(amigobot_add_rostest_gtest name file)
-  add_rostest_gtest(${name} ${file} ${ARGN})
-  target_compile_options(${name} PRIVATE ${AMIGOBOT_TEST_OPTIONS})
-  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test/support ${PROJECT_SOURCE_DIR}/test/e2e/include)
-  target_link_libraries(${name} ${catkin_LIBRARIES} ${GTEST_LIBRARIES})
-  add_dependencies(${name} ${PROJECT_NAME}_generate_messages_cpp)  # nan_watcher.h judges TrackingState
-endfunction()
-
 # A command run as one JUnit test case (scripts/test/junit_check.py writes the XML the
 # counter reads). catkin's runner takes the command as one string.
 function(amigobot_add_check name)

@@ -13,11 +13,7 @@ target_link_libraries(laser_node amigobot_tracking_ros_laser)
 if(CATKIN_ENABLE_TESTING)
   amigobot_add_unit_test(test_laser_scan test/unit/test_laser_scan.cpp)
   target_link_libraries(test_laser_scan amigobot_tracking_ros_laser)
-  # The nodelet (pluginlib lookup through package.xml) against the laser emulator executable.
-  amigobot_add_rostest_gtest(test_laser_ros test/rostest/laser.test test/rostest/test_laser_ros.cpp)
-  target_link_libraries(test_laser_ros amigobot_tracking_sensors)
-  target_compile_definitions(test_laser_ros PRIVATE AMIGOBOT_LASER_EMULATOR="$<TARGET_FILE:laser_emulator>")
-  add_dependencies(test_laser_ros laser_emulator amigobot_tracking_ros_laser)
+  # Its rostest (laser.test): cmake/rostests.cmake.
 endif()
 
 # `make bench`: driver CPU per scan and emulator -> LaserScan latency, in one process.

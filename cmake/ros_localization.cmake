@@ -15,15 +15,5 @@ target_link_libraries(localization_node amigobot_tracking_ros_localization)
 if(CATKIN_ENABLE_TESTING)
   amigobot_add_unit_test(test_stamp_gate test/unit/test_stamp_gate.cpp)
   target_link_libraries(test_stamp_gate ${catkin_LIBRARIES})
-  # The nodelet (pluginlib lookup through package.xml) against a synthetic room: the test
-  # publishes the scans and odom -> base_footprint itself.
-  foreach(behaviour tracking mapping bad_param bad_scans)
-    amigobot_add_rostest_gtest(test_localization_${behaviour} test/rostest/localization_${behaviour}.test
-                               test/rostest/test_localization_${behaviour}.cpp)
-    target_link_libraries(test_localization_${behaviour} amigobot_tracking_localization amigobot_tracking_world)
-    add_dependencies(test_localization_${behaviour} amigobot_tracking_ros_localization)
-  endforeach()
-  # The standalone node run with a missing map, 20 times.
-  target_compile_definitions(test_localization_bad_param PRIVATE AMIGOBOT_LOCALIZATION_NODE="$<TARGET_FILE:localization_node>")
-  add_dependencies(test_localization_bad_param localization_node)
+  # Its rostests (localization_*.test): cmake/rostests.cmake.
 endif()

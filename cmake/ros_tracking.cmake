@@ -32,28 +32,11 @@ if(CATKIN_ENABLE_TESTING)
     amigobot_add_unit_test(test_${unit} test/unit/test_${unit}.cpp)
     target_link_libraries(test_${unit} amigobot_tracking_ros)
   endforeach()
-  # The tracking nodelet in a real nodelet manager with a scripted world.
-  amigobot_add_rostest_gtest(test_tracking_nodelet test/rostest/tracking_nodelet.test test/rostest/test_tracking_nodelet.cpp
-                             test/rostest/test_tracking_param_loading.cpp)
-  target_link_libraries(test_tracking_nodelet amigobot_tracking_ros)
-  add_dependencies(test_tracking_nodelet amigobot_tracking_ros)
-  amigobot_add_rostest_gtest(test_tracking_bad_param test/rostest/tracking_bad_param.test test/rostest/test_tracking_bad_param.cpp)
-  add_dependencies(test_tracking_bad_param ${PROJECT_NAME}_generate_messages_cpp)
-  # The reader: types checked, ints for reals, errors naming the parameter.
-  amigobot_add_rostest_gtest(test_param_reader test/rostest/param_reader.test test/rostest/test_param_reader.cpp)
-  target_link_libraries(test_param_reader amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser
-                        amigobot_tracking_ros_localization)
+  # The rostests of the nodelet and the parameter reader (tracking_nodelet.test,
+  # tracking_bad_param.test, param_reader.test, nodelets_extreme_params.test): cmake/rostests.cmake.
   # Every table field in config/*.yaml (with its comment), the README's tables and cfg/*.cfg.
   amigobot_add_unit_test(test_param_coverage test/unit/test_param_coverage.cpp)
   target_link_libraries(test_param_coverage amigobot_tracking_ros amigobot_tracking_ros_driver amigobot_tracking_ros_laser amigobot_tracking_localization)
   # (and config/teleop.yaml: cmake/teleop.cmake links the teleop tables in)
   target_compile_definitions(test_param_coverage PRIVATE AMIGOBOT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-endif()
-
-if(CATKIN_ENABLE_TESTING)
-  # Every nodelet with extreme in-bounds parameters in one manager that must survive (issue 25).
-  amigobot_add_rostest_gtest(test_nodelets_extreme_params test/rostest/nodelets_extreme_params.test
-                             test/rostest/test_nodelets_extreme_params.cpp)
-  add_dependencies(test_nodelets_extreme_params amigobot_tracking_ros amigobot_tracking_ros_driver
-                   amigobot_tracking_ros_laser amigobot_tracking_ros_localization)
 endif()

@@ -58,8 +58,6 @@ TEST(DriverOneWayLink, NamedWithinTheBoundAndNoFalseAlarm) {
         }
       });
   ros::Publisher cmd_pub = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
   nodelet::Loader loader(false);
   ASSERT_TRUE(loader.load("/driver", "amigobot_tracking/Driver", {}, {}));
   auto locked = [&](auto f) {
@@ -121,9 +119,3 @@ TEST(DriverOneWayLink, NamedWithinTheBoundAndNoFalseAlarm) {
 }
 
 }  // namespace driver_one_way_link_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_driver_one_way_link");
-  return RUN_ALL_TESTS();
-}

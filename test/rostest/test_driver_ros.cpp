@@ -149,8 +149,6 @@ TEST(DriverRos, NodeletDrivesTheEmulatorAndReportsEverything) {
   ros::Publisher cmd_pub = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
   tf2_ros::Buffer tf_buffer;
   tf2_ros::TransformListener tf_listener(tf_buffer);
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
 
   nodelet::Loader loader(false);
   ASSERT_TRUE(loader.load("/driver", "amigobot_tracking/Driver", {}, {}));
@@ -253,9 +251,3 @@ TEST(DriverRos, BadParameterKeepsTheManagerAliveAndSaysWhich) {
 }
 
 }  // namespace driver_ros_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_driver_ros");
-  return RUN_ALL_TESTS();
-}

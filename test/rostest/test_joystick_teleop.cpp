@@ -16,7 +16,6 @@
 
 #include "cmd_vel_log.h"
 #include "node_process.h"
-#include "nan_watcher.h"
 
 namespace joystick_teleop_test {
 
@@ -142,12 +141,3 @@ TEST_F(JoystickTeleopNode, DeviceClosedSendsZeroLogsItAndReconnects) {
 }
 
 }  // namespace joystick_teleop_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_joystick_teleop");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
-  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-}

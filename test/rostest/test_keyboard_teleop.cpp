@@ -13,7 +13,6 @@
 
 #include "cmd_vel_log.h"
 #include "node_process.h"
-#include "nan_watcher.h"
 
 namespace keyboard_teleop_test {
 
@@ -176,12 +175,3 @@ TEST(KeyboardTeleopNode, RefusesWithoutTerminalOrWithBadParameterAndPublishesNot
 }
 
 }  // namespace keyboard_teleop_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_keyboard_teleop");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
-  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-}

@@ -20,7 +20,6 @@
 #include "amigobot_tracking/sensors/scan_source.h"
 #include "child_process.h"
 #include "rosout_log.h"
-#include "nan_watcher.h"
 
 namespace laser_ros_test {
 
@@ -253,11 +252,3 @@ TEST(LaserRos, AClosedTcpPortIsAnErrorNamingIt) {
 }
 
 }  // namespace laser_ros_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_laser_ros");
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-}

@@ -20,7 +20,6 @@
 
 #include "child_process.h"
 #include "synthetic_robot.h"
-#include "nan_watcher.h"
 
 namespace localization_bad_param_test {
 
@@ -115,12 +114,3 @@ TEST(LocalizationBadParam, AMapFolderThatCannotBeCreatedIsRefusedAtStartUp) {
 }
 
 }  // namespace localization_bad_param_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_localization_bad_param");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
-  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-}

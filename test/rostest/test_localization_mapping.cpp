@@ -20,13 +20,12 @@
 
 #include "amigobot_tracking/localization/distance_field.h"
 #include "synthetic_robot.h"
-#include "nan_watcher.h"
 
 namespace localization_mapping_test {
 
 using namespace amigobot_test;
 
-TEST(LocalizationNodelet, MapsTheRoomAndSavesTheMap) {
+TEST(LocalizationMapping, MapsTheRoomAndSavesTheMap) {
   // A folder that does not exist yet, as ~/maps on a fresh account.
   const std::string folder = "/tmp/amigobot_mapping_rostest_" + std::to_string(::getpid());
   const std::string map_file = folder + "/maps/lab.yaml";
@@ -105,12 +104,3 @@ TEST(LocalizationNodelet, MapsTheRoomAndSavesTheMap) {
 }
 
 }  // namespace localization_mapping_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_localization_mapping");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-}

@@ -28,7 +28,6 @@
 
 #include "amigobot_tracking/localization/occupancy_map.h"
 #include "synthetic_robot.h"
-#include "nan_watcher.h"
 
 namespace localization_tracking_test {
 
@@ -323,12 +322,3 @@ TEST(LocalizationNodelet, LocalisesOnTheMapOfTheMapTopic) {
 }
 
 }  // namespace localization_tracking_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_localization_tracking");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-}

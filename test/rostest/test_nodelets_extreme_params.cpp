@@ -49,10 +49,3 @@ TEST(NodeletsExtremeParams, OneManagerSurvivesThemAll) {
 }
 
 }  // namespace nodelets_extreme_params_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_nodelets_extreme_params");
-  ros::NodeHandle nh;
-  return RUN_ALL_TESTS();
-}

@@ -281,12 +281,3 @@ TEST(LabConfigs, OurOwnNameWinsOverAnAliasAndTheAliasIsWarned) {
 }
 
 }  // namespace param_reader_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_param_reader");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(1);  // the unknown-parameter check's timer and the /rosout subscriber
-  spinner.start();
-  return RUN_ALL_TESTS();
-}

@@ -10,7 +10,6 @@
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "amigobot_tracking/TrackingState.h"
-#include "nan_watcher.h"
 
 namespace tracking_bad_param_test {
 
@@ -49,12 +48,3 @@ TEST(TrackingBadParam, NothingStartsAndNothingMoves) {
 }
 
 }  // namespace tracking_bad_param_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_tracking_bad_param");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
-  return e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-}

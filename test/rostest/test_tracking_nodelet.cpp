@@ -2,7 +2,7 @@
 // scripted world of tracking_world.h. Checks: zero while disabled, inside the diamond when
 // enabled, one zero on disable, zero when the target tf stops and a gentle restart when it
 // comes back, virtual obstacle topic/services, reconfigure refusals, markers, diagnostics.
-// The parameter loaders' refusals: test_tracking_param_loading.cpp (same executable).
+// The parameter loaders' refusals: test_tracking_param_loading.cpp (the same .test runs both).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,7 +20,6 @@
 #include "amigobot_tracking/RemoveVirtualObstacle.h"
 #include "child_process.h"
 #include "tracking_world.h"
-#include "nan_watcher.h"
 
 namespace tracking_nodelet_test {
 
@@ -28,7 +27,7 @@ using namespace amigobot_tracking;
 using namespace tracking_world;
 
 // The cases share one nodelet and run in this order, in the scripted world, which exists only
-// while they run.
+// while they run (the executable is every gtest rostest's: cmake/rostests.cmake).
 class TrackingNodelet : public testing::Test {
  protected:
   static void SetUpTestSuite() { world = new World; }
@@ -309,14 +308,3 @@ TEST_F(TrackingNodelet, MarkersAndDiagnostics) {
 }
 
 }  // namespace tracking_nodelet_test
-
-int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "test_tracking_nodelet");
-  ros::NodeHandle nh;
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  const int result = e2e::runAllTestsWatchingNaN();  // every case fails on a NaN published in its run
-  spinner.stop();
-  return result;
-}

@@ -1,4 +1,4 @@
-// rostest (tracking_nodelet.test, same executable as test_tracking_nodelet.cpp): the
+// rostest (tracking_nodelet.test, beside test_tracking_nodelet.cpp's cases): the
 // tracking parameter loaders against a real master: refusals naming the bad parameter, and
 // the shipped config files loading to what they say.
 #include <gtest/gtest.h>
