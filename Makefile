@@ -64,9 +64,7 @@ build: deps-workstation $(WS)/src/amigobot_tracking ## build the package in the 
 
 test: deps build ## build and run every test, ending with `N passed, N failed` (~14 min on 2 cores after make demo)
 	rm -rf $(RESULTS)
-	@# The tests' executables compile while the tests that need none of them (or theirs, built)
-	@# already run: catkin's run_tests_PACKAGE makes each test wait only for what it runs, where
-	@# run_tests first builds every test. RUN_JOBS slots for both.
+	$(call timed,build of the tests,$(CATKIN) tests)
 	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.
 	@# A short pass of each parser's fuzzer (ASan + UBSan, a fixed number of inputs each, its own
 	@# JUnit case) runs beside the tests at the lowest priority: the tests wait on emulated
@@ -74,8 +72,8 @@ test: deps build ## build and run every test, ending with `N passed, N failed` (
 	@# tests, on its own, it took 53 s). The scenario loader's (it compiles all of core and sim
 	@# under ASan: minutes on a fresh clone) runs in `make fuzz` only. A fuzz failure is its
 	@# JUnit case's failure; the runner's exit code is counted once (run_tests.rc).
-	$(call timed,build and run of the tests,$(ROOT)/scripts/test/run_tests_beside_fuzz.sh $(WS)/build $(RESULTS) \
-	  $(FUZZ_RESULTS) $(FUZZ_IN_TEST) -- $(CATKIN_NO_JOBS) -j$(RUN_JOBS) run_tests_amigobot_tracking -k)
+	$(call timed,run_tests,$(ROOT)/scripts/test/run_tests_beside_fuzz.sh $(WS)/build $(RESULTS) $(FUZZ_RESULTS) \
+	  $(FUZZ_IN_TEST) -- $(CATKIN_NO_JOBS) -j$(RUN_JOBS) run_tests -k)
 	@# The two-Odroid experiment across two network namespaces (~1 min), its own JUnit cases.
 	-$(call timed,two machines,$(TWO_MACHINES))
 	@$(ROOT)/scripts/test/count_test_results.py $(RESULTS) --runner-exit $$(cat $(WS)/build/run_tests.rc)
