@@ -43,6 +43,10 @@ function(amigobot_add_e2e_test file)
                           DEPENDENCIES ${AMIGOBOT_E2E_NODES})
 endfunction()
 
+# Every case of test_e2e is run by some .test file, and every .test's filter selects a case.
+amigobot_add_check(e2e_filters_cover_cases ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_gtest_filters.py
+                   ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/test_e2e ${PROJECT_SOURCE_DIR}/test/e2e)
+
 # Longest first (make starts the run_tests targets in the order they are declared): the
 # 2-minute avoidance lap last left one core idle for the last minute of the run.
 amigobot_add_e2e_test(test/e2e/avoidance.test tcp_port status_port laser_port)

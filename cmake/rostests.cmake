@@ -85,3 +85,7 @@ foreach(file
     keyboard_teleop_refusals)     # 5
   add_rostest(test/rostest/${file}.test DEPENDENCIES test_rostest)
 endforeach()
+# Every case of test_rostest is selected by some .test file's filter, and every filter selects a
+# case: a case in a new suite that no filter names would otherwise never run, silently.
+amigobot_add_check(rostest_filters_cover_cases ${PYTHON_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/test/check_gtest_filters.py
+                   ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/test_rostest ${PROJECT_SOURCE_DIR}/test/rostest)

@@ -12,11 +12,15 @@
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
+  // --gtest_list_tests needs no master (scripts/test/check_gtest_filters.py lists the cases).
+  if (testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
   ros::init(argc, argv, "test_rostest");
   ros::NodeHandle nh;  // the node lives for the whole run, not only while a case holds a handle
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  const int result = e2e::runAllTestsWatchingNaN();
+  int result = e2e::runAllTestsWatchingNaN();
+  // A .test file whose --gtest_filter matches no case must not pass silently.
+  if (testing::UnitTest::GetInstance()->test_to_run_count() == 0) result = 1;
   spinner.stop();
   return result;
 }
