@@ -37,7 +37,9 @@ if kill -0 "$install" 2>/dev/null; then
 fi
 wait "$install"
 install_rc=$?
-echo "deps: the packages beside the build: $(tail -n 1 "$LOG" | cut -c1-160) ($(( $(date +%s) - start )) s, exit $install_rc)"
+# apt's count line ("N newly installed") says what happened; else (a failure) the log's last line.
+summary=$(grep -m1 "newly installed" "$LOG" || tail -n 1 "$LOG")
+echo "deps: the packages beside the build: ${summary:0:160} (done within $(( $(date +%s) - start )) s, exit $install_rc)"
 [ "$rc" -ne 0 ] && exit "$rc"
 if [ "$install_rc" -ne 0 ]; then
   echo "deps: installing the packages beside the build failed (exit $install_rc); its log: $LOG" >&2
