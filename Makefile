@@ -64,7 +64,7 @@ $(WS)/src/amigobot_tracking:
 build: deps-workstation $(WS)/src/amigobot_tracking ## build the package in the workspace `make where` prints (catkin_make, Release; TARGETS=...)
 	$(call timed,build,$(CATKIN) $(TARGETS))
 
-test: deps build ## build and run every test, ending with `N passed, N failed` (~12.5 min on 2 cores after make demo)
+test: deps build ## build and run every test, ending with `N passed, N failed` (10-12.5 min on 2 cores after make demo)
 	rm -rf $(RESULTS)
 	$(call timed,build of the tests,$(CATKIN) tests)
 	@# -k: one broken runner must not hide the others; its exit code is counted as a failure.
