@@ -94,7 +94,7 @@ two-machines: build ## the two-Odroid experiment on two network namespaces: trac
 # `under load: P of N passes clean`. ONLY="diamond tracking" runs those tests alone.
 PASSES ?= 1
 BUSY ?= 2
-test-under-load: build ## the end-to-end rostests with two busy loops on the cores (PASSES=5 BUSY=2 ONLY="diamond"), ~16 min a pass of the whole tier
+test-under-load: build ## the end-to-end rostests with two busy loops on the cores (PASSES=5 BUSY=2 ONLY="diamond"), ~12-16 min a pass of the whole tier
 	$(CATKIN) amigobot_e2e_nodes
 	$(call timed,e2e under load,$(ROOT)/scripts/test/under_load.py --ws $(WS) --passes $(PASSES) --busy $(BUSY) \
 	  --jobs $(JOBS) $(if $(ONLY),--only $(ONLY)))
