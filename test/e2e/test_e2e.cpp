@@ -147,16 +147,9 @@ TEST(E2E, CommandWatchdogStopsTheRobot) {
 }
 
 int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  // --gtest_list_tests needs no master (scripts/test/check_gtest_filters.py lists the cases).
-  if (testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
-  ros::init(argc, argv, "test_e2e");
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
   // Every case fails when the run published a NaN where none is allowed (nan_watcher.h).
-  int result = e2e::runAllTestsWatchingNaN();
-  // A .test file whose --gtest_filter matches no case must not pass silently.
-  if (testing::UnitTest::GetInstance()->test_to_run_count() == 0) result = 1;
+  const int result = e2e::runSharedRosTests(argc, argv, "test_e2e");
+  if (!ros::isInitialized()) return result;  // --gtest_list_tests
   std::string command_log;  // the emulator's journal is a per-run /tmp file: remove it
   if (ros::param::get("~command_log", command_log)) std::remove(command_log.c_str());
   return result;

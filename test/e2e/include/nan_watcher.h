@@ -118,4 +118,24 @@ inline int runAllTestsWatchingNaN() {
   return result;
 }
 
+// The main of a gtest executable that several .test files share, each choosing its cases with
+// --gtest_filter (test_rostest, test_e2e): gtest's flags out of argv, then ROS as NODE (rostest
+// renames it after the .test's test-name), a node handle held for the whole run, a 2-thread
+// spinner for the cases' subscriptions and timers, and runAllTestsWatchingNaN(). Fails a run
+// whose filter selects no case (a renamed suite must not pass silently). --gtest_list_tests
+// needs no master (scripts/test/check_gtest_filters.py lists the cases). ROS is still up on
+// return, for the caller's own clean-up.
+inline int runSharedRosTests(int argc, char** argv, const char* node) {
+  testing::InitGoogleTest(&argc, argv);
+  if (testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
+  ros::init(argc, argv, node);
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  int result = runAllTestsWatchingNaN();
+  if (testing::UnitTest::GetInstance()->test_to_run_count() == 0) result = 1;
+  spinner.stop();
+  return result;
+}
+
 }  // namespace e2e
