@@ -208,6 +208,36 @@ TEST(SafetyFilter, APersonWalkingAtTheOffsetPointDoesNotTurnTheRobotInPlace) {
       << "a still disk keeps p_r's disk";
 }
 
+// A person walking at 1 m/s across the robot's way, their path 0.4 m clear of the body, 1.5 m
+// off and closing at 0.87 m/s along the line of centres (the ramped AmigoBot, braking planned):
+// a row from their centre made the stopped robot back at the diamond's edge from a path it
+// stood clear of. The row from the stretch they walk while the base stops (personSpan) lets it
+// stand; one walking straight at the body still makes it back away.
+TEST(SafetyFilter, APersonCrossingBesideTheBodyDoesNotMakeItBackButOneWalkingAtItDoes) {
+  SafetyFilterInput in;
+  in.robot_radius = 0.18;
+  in.body_rows = true;
+  in.obstacle_velocities = true;
+  in.braking = true;
+  in.hold = 0.05;
+  in.gamma = 5.0;
+  in.nominal = {0.0, 0.0};
+  const DiamondSet diamond(0.3, 0.8);
+  EXPECT_NEAR(personSpan(in, diamond), 0.3 / in.limits.trans_decel + kDelayedBrakingFactor * (in.limits.latency + in.limits.cycle) + 0.05, 1e-12);
+  const Disk crossing{Eigen::Vector2d(0.81, -1.3), 0.25, Eigen::Vector2d(0.0, 1.0)};
+  const SafetyFilterResult beside = safetyFilter(in, diamond, {crossing});
+  ASSERT_TRUE(beside.solved);
+  EXPECT_GT(beside.u.v, -0.01) << "backed from a person whose path passes 0.38 m clear of the body";
+  const Disk at_it{Eigen::Vector2d(0.0, -1.3), 0.25, Eigen::Vector2d(0.0, 1.0)};
+  const Eigen::Vector2d near = nearestOnWalk(at_it, in.pose.position(), personSpan(in, diamond));
+  EXPECT_NEAR(near.y(), -1.3 + personSpan(in, diamond), 1e-12) << "the nearest point is where they will be";
+  const SafetyFilterResult head_on = safetyFilter(in, diamond, {at_it});
+  ASSERT_TRUE(head_on.solved);
+  EXPECT_GT(std::abs(head_on.u.v) + std::abs(head_on.u.omega), 0.1) << "stood still while a person walked at the body";
+  const Disk still{Eigen::Vector2d(0.81, -1.3), 0.25, Eigen::Vector2d::Zero()};
+  EXPECT_EQ(nearestOnWalk(still, in.pose.position(), 1.0), still.center) << "a still disk is its centre";
+}
+
 // The braking curve: delay s + s^2 / (2 a) = room at the returned s, 0 without room, room /
 // delay without a deceleration limit.
 TEST(SafetyFilter, BrakingSpeedStopsWithinTheRoom) {

@@ -37,21 +37,24 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   // near a pillar's zone into 0.12 m/s command changes per 2 mm (2.4x the law without it).
   const double drive = std::max(pull, std::min(config.k_d / config.rho_inf * error_norm, 2.0 * config.v_max));
 
-  // A moving disk is held off by more: up to the full R + r of (10) for a disk closing on p_r as
-  // fast as the robot, which the body, steering only along its heading, cannot outrun sideways;
-  // it needs the room to turn away. Only the speed at which the disk closes on p_r counts, not
-  // its speed: a person crossing ahead of the target or walking beside it is no faster at p_r
-  // for walking fast, and their whole speed held p_r 0.3 m farther off, so the robot backed
-  // from a person crossing 0.4 m ahead of the target (true ASE crossing_ahead 0.048 -> 0.029,
-  // every pedestrian class lower, docs/pedestrians.md). Continuous wherever p_r is off the disk's
-  // centre; a static disk is not widened, as before.
+  // Without body_safe, a moving disk is held off p_r by more: up to the full R + r of (10) for a
+  // disk closing on p_r as fast as the robot, which the body, steering only along its heading,
+  // cannot outrun sideways; only the speed at which it closes on p_r counts (a person crossing
+  // ahead of the target is no faster at p_r for walking fast). With body_safe the body's row
+  // holds a person off the stretch they walk while the base stops (safety_filter.h, personSpan),
+  // which is where that room is needed, and the field sees their path (below): the widening on
+  // top held the robot 0.3 m farther back and made it back from people crossing ahead of the
+  // target (pedestrian benchmark, every class's mean true ASE lower without it: crossing_ahead
+  // 0.0239 -> 0.0189, crowd 0.170 -> 0.119, 0 contacts; docs/pedestrians.md). A static disk is
+  // never widened.
   std::vector<Disk> held = obstacles;
-  for (Disk& o : held) {
-    const Eigen::Vector2d to_p_r = in.p_r - o.center;
-    const double distance = to_p_r.norm();
-    const double closing = distance > 1e-9 ? std::max(0.0, o.velocity.dot(to_p_r) / distance) : o.velocity.norm();
-    o.radius += config.offset * std::min(1.0, closing / config.v_max);
-  }
+  if (!config.body_safe)
+    for (Disk& o : held) {
+      const Eigen::Vector2d to_p_r = in.p_r - o.center;
+      const double distance = to_p_r.norm();
+      const double closing = distance > 1e-9 ? std::max(0.0, o.velocity.dot(to_p_r) / distance) : o.velocity.norm();
+      o.radius += config.offset * std::min(1.0, closing / config.v_max);
+    }
   // The field routes round where a moving disk will be, not only where it is: its path over
   // obstacle_lookahead (withPredictedPaths), so the robot passes behind a person crossing its way
   // and steps out of the way of one coming from behind instead of fleeing ahead of them.

@@ -62,6 +62,19 @@ bool equalityMinimiser(const SmallQp& qp, const int* rows, int count, Eigen::Vec
 
 }  // namespace
 
+double personSpan(const SafetyFilterInput& in, const DiamondSet& diamond) {
+  if (!in.obstacle_velocities) return 0.0;
+  const double braking = std::isfinite(in.limits.trans_decel) && in.limits.trans_decel > 0.0 ? diamond.vMax() / in.limits.trans_decel : 0.0;
+  return braking + kDelayedBrakingFactor * (in.limits.latency + in.limits.cycle) + in.hold;
+}
+
+Eigen::Vector2d nearestOnWalk(const Disk& o, const Eigen::Vector2d& point, double span) {
+  const Eigen::Vector2d walk = span * o.velocity;
+  const double length2 = walk.squaredNorm();
+  if (!(length2 > 0.0) || !std::isfinite(length2)) return o.center;
+  return o.center + std::clamp((point - o.center).dot(walk) / length2, 0.0, 1.0) * walk;
+}
+
 double brakingSpeed(double room, double decel, double delay) {
   if (!(room > 0.0)) return 0.0;
   if (!std::isfinite(decel)) return delay > 0.0 ? room / delay : std::numeric_limits<double>::infinity();
@@ -149,8 +162,9 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
     ++result.rows;
   }
   if (in.body_rows) {
+    const double walked = personSpan(in, diamond);
     for (const Disk& o : obstacles) {
-      const Eigen::Vector2d away = in.pose.position() - o.center;
+      const Eigen::Vector2d away = in.pose.position() - nearestOnWalk(o, in.pose.position(), walked);
       const double distance = std::max(away.norm(), 1e-9);
       const Eigen::Vector2d n = away.norm() < 1e-9 ? Eigen::Vector2d(-heading) : Eigen::Vector2d(away / distance);
       const double facing = n.dot(heading);  // 1: heading away from the disk, -1: at it
