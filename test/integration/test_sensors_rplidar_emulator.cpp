@@ -4,8 +4,10 @@
 // deg and 1/4 mm quantisation), the fixed REP 117 grid, and the faults survived.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "amigobot_tracking/world/raycast.h"
 #include "laser_emulator_fixture.h"
@@ -25,7 +27,11 @@ void expectRevolutionTruth(const LaserScanData& scan) {
   ASSERT_EQ(scan.ranges.size(), 360u);
   EXPECT_NEAR(scan.angle_min, -M_PI, 1e-9);
   EXPECT_NEAR(scan.angle_increment, M_PI / 180.0, 1e-9);
-  EXPECT_NEAR(scan.scan_time, 1.0 / 5.5, 0.05);
+  // The measured revolution period: one revolution read late on a loaded machine measured
+  // 0.25 s (CI, 2 cores, three test executables at once), so a scan's is only bounded here and
+  // the period is judged on the median of several (the first test).
+  EXPECT_GT(scan.scan_time, 0.0);
+  EXPECT_LT(scan.scan_time, 3.0 / 5.5);
   EXPECT_EQ(scan.time_increment, 0.0);
   ScanSourceOptions options;
   options.mount = amigobot_test::kMount;
@@ -62,10 +68,14 @@ TEST(RplidarDriver, OverAPseudoTerminalGivesTheRayCastTruthOnTheFixedGrid) {
   LaserEmulator emulator("rplidar", {"--pty", link, "--tcp-port", "-1"});
   LaserDriver driver(driverConfig("rplidar", link));
   LaserScanData scan;
-  for (int i = 0; i < 4; ++i) {
+  std::vector<double> periods;
+  for (int i = 0; i < 5; ++i) {
     scan = scans(driver, 1, 10.0);
     expectRevolutionTruth(scan);
+    periods.push_back(scan.scan_time);
   }
+  std::nth_element(periods.begin(), periods.begin() + 2, periods.end());
+  EXPECT_NEAR(periods[2], 1.0 / 5.5, 0.05) << "the median revolution period";
   EXPECT_NEAR(scan.stamp, systemSeconds(), 1.0);
   const std::string id = driver.identity();
   EXPECT_NE(id.find("RPLIDAR model 24, firmware 1.29, hardware 7"), std::string::npos) << id;
