@@ -193,6 +193,25 @@ def summarize(runs):
     return s
 
 
+def untouched_rows(raw, classes, laws):
+    """Per class: the variants where MRPT's navigator touched no one, and each law's mean true ASE
+    on them: the laws compared where MRPT kept clear too, not against runs it won by walking into
+    a person."""
+    rows = []
+    for name in classes:
+        peer = raw.get((name, "mrpt_reactive"))
+        if peer is None:
+            continue
+        clean = [i for i, m in enumerate(peer) if "failed" not in m and m["body_collisions"] == 0]
+        means = {}
+        for law in laws:
+            runs = raw.get((name, law), [])
+            ase = [runs[i]["true_ase"] for i in clean if i < len(runs) and "failed" not in runs[i]]
+            means[law] = sum(ase) / len(ase) if ase and len(ase) == len(clean) else None
+        rows.append((name, len(clean), len(peer), means))
+    return rows
+
+
 def cells(summary):
     """The table cells of one class and law (after class and law)."""
     row = []
@@ -202,7 +221,7 @@ def cells(summary):
     return row
 
 
-def write_page(path, results, runs, seconds, quick, sets):
+def write_page(path, results, runs, seconds, quick, sets, untouched=()):
     page = markdown.Page()
     page("# Pedestrian benchmark")
     page("")
@@ -227,6 +246,17 @@ def write_page(path, results, runs, seconds, quick, sets):
          "those rules changed on these variants: docs/recommended_law.md.")
     page("")
     markdown.benchmark_table(page, HEADINGS, results, cells, CLASSES)
+    if untouched:
+        laws = list(untouched[0][3])
+        page("")
+        page("Mean true ASE [m²] on the variants where MRPT's navigator touched no one (the same variants "
+             "for every law; a class where it touched someone in every variant has none):")
+        page("")
+        page("| class | variants | " + " | ".join(laws) + " |")
+        page("|---|---|" + "---|" * len(laws))
+        for name, clean, total, means in untouched:
+            page(f"| {name} | {clean} of {total} | "
+                 + " | ".join("—" if means[law] is None else markdown.number(means[law], 3) for law in laws) + " |")
     failures = [(name, law, reason) for name, law, s in results for reason in s.get("reasons", [])]
     if failures:
         page("")
@@ -242,6 +272,7 @@ def main(sim, out_root, docs, runs=50, jobs=None, classes=None, quick=False, law
     laws = laws or list(LAWS)
     start = time.monotonic()
     results = []
+    raw = {}
     with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
         for name in classes or list(CLASSES):
             base = scenario_yaml.load(os.path.join(SCENES, name + ".yaml"))
@@ -255,9 +286,11 @@ def main(sim, out_root, docs, runs=50, jobs=None, classes=None, quick=False, law
                 print(f"pedestrians: {name} / {law} ({runs} variants)", file=sys.stderr, flush=True)
                 futures = [pool.submit(run_one, sim, f, law, os.path.join(out_root, name, law, f"{i:03d}"), sets)
                            for i, f in enumerate(files)]
-                results.append((name, law, summarize([f.result() for f in futures])))
+                raw[(name, law)] = [f.result() for f in futures]
+                results.append((name, law, summarize(raw[(name, law)])))
     os.makedirs(docs, exist_ok=True)
-    write_page(os.path.join(docs, "pedestrians.md"), results, runs, time.monotonic() - start, quick, sets)
+    write_page(os.path.join(docs, "pedestrians.md"), results, runs, time.monotonic() - start, quick, sets,
+               untouched_rows(raw, classes or list(CLASSES), laws))
     with open(os.path.join(out_root, "pedestrians.json"), "w") as f:
         json.dump([{"class": n, "law": law, **s} for n, law, s in results], f, indent=1)
     return results
