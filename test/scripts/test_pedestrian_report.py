@@ -27,7 +27,10 @@ class QuickPedestrianReport(unittest.TestCase):
         cls.results = pedestrians.main(SIM, os.path.join(cls.tmp.name, "out"), cls.tmp.name,
                                        runs=pedestrians.QUICK_RUNS, jobs=2, classes=CLASSES, quick=True)
         with open(os.path.join(cls.tmp.name, "pedestrians.md")) as f:
-            cls.rows = pedestrians.markdown.table_rows(f.read())
+            tables = f.read().split("\n\n")
+        # The page's tables in order: the benchmark's, then the one on MRPT's contact-free variants.
+        found = [pedestrians.markdown.table_rows(t) for t in tables if t.startswith("|")]
+        cls.rows, cls.untouched = found[0], found[1]
 
     def test_every_column_and_a_row_per_class_and_law(self):
         self.assertEqual(self.rows[0], pedestrians.HEADINGS)
@@ -36,6 +39,15 @@ class QuickPedestrianReport(unittest.TestCase):
         for row in body:
             self.assertEqual(len(row), len(pedestrians.HEADINGS), row)
             self.assertNotIn("—", row)
+
+    def test_a_row_per_class_on_the_variants_where_mrpt_touched_no_one(self):
+        self.assertEqual(self.untouched[0], ["class", "variants"] + list(pedestrians.LAWS))
+        self.assertEqual([row[0] for row in self.untouched[1:]], CLASSES)
+        for row in self.untouched[1:]:
+            clean, total = row[1].split(" of ")
+            self.assertEqual(int(total), pedestrians.QUICK_RUNS, row)
+            # a class with clean variants has every law's mean; one without has none
+            self.assertEqual(all(c == "—" for c in row[2:]), int(clean) == 0, row)
 
     def test_every_run_completes_without_nan_or_diamond_violation(self):
         for name, law, s in self.results:
