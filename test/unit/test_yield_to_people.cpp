@@ -44,6 +44,24 @@ double leastClearance(const std::vector<std::string>& sets, int* yielded, const 
   return least;
 }
 
+// The crossing_ahead scene with one variant's start, person and walk (the benchmark's variant
+// file, target noise left out): the least body clearance; `retreat` as above.
+double crossingAhead(const core::Pose2& start, const Eigen::Vector2d& center, double start_time, double walk_time,
+                     double speed, double* retreat) {
+  int yielded = 0;
+  return leastClearance(
+      {}, &yielded, kScenes + "crossing_ahead.yaml",
+      [&](sim::Scenario* s) {
+        s->setup.initial_pose = start;
+        core::ObstacleMotion& walk = s->setup.obstacle_motions.at(0);
+        s->setup.obstacles.at(0).center = center;
+        walk.start = center;
+        walk.start_time = start_time;
+        walk.legs = {{walk_time, {0.0, speed}}};
+      },
+      retreat);
+}
+
 }  // namespace
 
 TEST(YieldToPeople, StepsAsideForAPersonOvertakingFromBehind) {
@@ -71,28 +89,6 @@ TEST(YieldToPeople, PassesBehindAPersonWhoStoppedNotInFrontOfThem) {
   });
   EXPECT_GE(least, 0.03) << "the person who walked on reached the robot (the issue's least body clearance: 3 cm)";
 }
-
-namespace {
-
-// The crossing_ahead scene with one variant's start, person and walk (the benchmark's variant
-// file, target noise left out): the least body clearance; `retreat` as above.
-double crossingAhead(const core::Pose2& start, const Eigen::Vector2d& center, double start_time, double walk_time,
-                     double speed, double* retreat) {
-  int yielded = 0;
-  return leastClearance(
-      {}, &yielded, kScenes + "crossing_ahead.yaml",
-      [&](sim::Scenario* s) {
-        s->setup.initial_pose = start;
-        core::ObstacleMotion& walk = s->setup.obstacle_motions.at(0);
-        s->setup.obstacles.at(0).center = center;
-        walk.start = center;
-        walk.start_time = start_time;
-        walk.legs = {{walk_time, {0.0, speed}}};
-      },
-      retreat);
-}
-
-}  // namespace
 
 // The benchmark's variant 025 of `crossing_ahead`: a person at 0.47 m/s crosses the target's line
 // 0.4 m ahead of the target. The moving disk was widened by r times its whole pace over v_bar,

@@ -60,12 +60,19 @@ bool equalityMinimiser(const SmallQp& qp, const int* rows, int count, Eigen::Vec
   return true;
 }
 
+// [s] the braking curve's reaction time: the firmware's delay counts e times
+// (kDelayedBrakingFactor): a base that follows the curve's command that late otherwise
+// overshoots it into the disk; then the command is held for `hold`.
+double reactionTime(const SafetyFilterInput& in) {
+  return kDelayedBrakingFactor * (in.limits.latency + in.limits.cycle) + in.hold;
+}
+
 }  // namespace
 
 double personSpan(const SafetyFilterInput& in, const DiamondSet& diamond) {
   if (!in.obstacle_velocities) return 0.0;
   const double braking = std::isfinite(in.limits.trans_decel) && in.limits.trans_decel > 0.0 ? diamond.vMax() / in.limits.trans_decel : 0.0;
-  return braking + kDelayedBrakingFactor * (in.limits.latency + in.limits.cycle) + in.hold;
+  return braking + reactionTime(in);
 }
 
 Eigen::Vector2d nearestOnWalk(const Disk& o, const Eigen::Vector2d& point, double span) {
@@ -133,10 +140,8 @@ SafetyFilterResult safetyFilter(const SafetyFilterInput& in, const DiamondSet& d
   // |G u| inside the diamond is at most max(v_bar, r w_bar) (|G u|^2 = v^2 + r^2 w^2, convex,
   // largest at a vertex).
   const double reach = std::max(diamond.vMax(), r * diamond.wMax());
-  // gamma (h - m), bounded by the braking curve when the base ramps (safety_filter.h). The
-  // firmware's delay counts e times (kDelayedBrakingFactor): a base that follows the curve's
-  // command that late otherwise overshoots it into the disk.
-  const double delay = kDelayedBrakingFactor * (in.limits.latency + in.limits.cycle) + in.hold;
+  // gamma (h - m), bounded by the braking curve when the base ramps (safety_filter.h).
+  const double delay = reactionTime(in);
   auto allowedApproach = [&](double h, double decel) {
     const double room = h - in.min_margin;
     const double rate = in.gamma * room;
