@@ -105,7 +105,9 @@ TEST(E2E, AKidnappedRobotStopsUntilGlobalLocalisation) {
   EXPECT_LT(r.end.loc_error, 0.1) << "not localised again after global localisation";
   // Carried inside the circle and turned, the robot may still be backing or turning towards the
   // target 4 s later (a run saw v = -0.05 m/s): moving at all is the claim, not forward.
-  EXPECT_GT(std::abs(r.end.truth.v) + std::abs(r.end.truth.w), 0.05) << "not tracking at the end";
+  // Tracking at the end: the robot drove over the settle window (one sample's speed was 0.023 m/s
+  // in a CI run while it tracked: a moment of the turn, not a stop).
+  EXPECT_GT(r.settle_path, 0.2) << "not tracking at the end: " << r.settle_path << " m driven in the last 4 s";
   RecordProperty("verdict_ms", static_cast<int>(1e3 * (verdict_at - asked_wall)));
   RecordProperty("zero_setpoint_ms", static_cast<int>(1e3 * (r.zero_at - before.t)));
   RecordProperty("standstill_ms", static_cast<int>(1e3 * (r.stopped.t - before.t)));

@@ -61,7 +61,9 @@ TEST(E2E, AWrongInitialPoseStopsUntilGlobalLocalisation) {
   EXPECT_EQ(r.moved_lost, 0) << r.moved_lost << " of " << r.lost << " samples moved on a pose off by > " << kLostError << " m";
   EXPECT_GT(r.lost_until, r.stopped.t);
   EXPECT_LT(r.end.loc_error, 0.1) << "not localised again after global localisation";
-  EXPECT_GT(r.end.truth.v, 0.05) << "not tracking at the end";
+  // Tracking at the end: the robot drove over the settle window (one sample's speed was 0.023 m/s
+  // in a CI run while it tracked: a moment of the turn, not a stop).
+  EXPECT_GT(r.settle_path, 0.2) << "not tracking at the end: " << r.settle_path << " m driven in the last 4 s";
   RecordProperty("zero_setpoint_ms", static_cast<int>(1e3 * (r.zero_at - before.t)));
   RecordProperty("standstill_ms", static_cast<int>(1e3 * (r.stopped.t - before.t)));
   RecordProperty("resume_after_global_ms", static_cast<int>(1e3 * (r.resumed.t - r.asked.t)));

@@ -106,6 +106,7 @@ struct Relocalised {
   EmulatorStatus asked;     // when global_localization was called
   EmulatorStatus resumed;   // the first true speed above 0.1 m/s after it
   PoseSample end;           // `settle` s later
+  double settle_path = 0.0; // [m] the true path driven over those `settle` s
   double zero_at = -1.0;    // the first zero setpoint on the wire since the fault
   int lost = 0;             // samples from the standstill on with the believed pose > lost_error off
   int moved_lost = 0;       // of those, samples that moved
@@ -133,8 +134,13 @@ inline ::testing::AssertionResult relocalised(GroundTruth& truth, PoseSampler& s
   }
   ros::Duration(settle).sleep();
   out->end = sampler.last();
+  const std::vector<PoseSample> samples = sampler.samples();
+  for (std::size_t i = 1; i < samples.size(); ++i)
+    if (samples[i - 1].truth.t >= out->end.truth.t - settle)
+      out->settle_path += std::hypot(samples[i].truth.pose.x - samples[i - 1].truth.pose.x,
+                                     samples[i].truth.pose.y - samples[i - 1].truth.pose.y);
   out->zero_at = firstZeroSetpoint(readCommandLog(command_log), fault_t);
-  out->moved_lost = movedWhileLost(sampler.samples(), out->stopped.t, lost_error, &out->lost);
+  out->moved_lost = movedWhileLost(samples, out->stopped.t, lost_error, &out->lost);
   return ::testing::AssertionSuccess();
 }
 
