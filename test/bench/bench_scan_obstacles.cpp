@@ -57,6 +57,24 @@ void BM_ScanToObstacles(benchmark::State& state) {
 }
 BENCHMARK(BM_ScanToObstacles)->Arg(360)->Arg(720)->Arg(1440)->Unit(benchmark::kMicrosecond);
 
+// As the tracking node calls it: with the clusters and how they end, for the obstacle tracker.
+void BM_ScanToObstaclesWithClusterEnds(benchmark::State& state) {
+  ScanGeometry geometry;
+  const std::vector<float> ranges = roomScan(static_cast<int>(state.range(0)), &geometry);
+  const Eigen::Affine2d pose = Eigen::Translation2d(1.0, 2.0) * Eigen::Rotation2Dd(0.3);
+  const ScanObstacleConfig config;
+  std::vector<Disk> disks;
+  disks.reserve(ranges.size());
+  std::vector<ScanCluster> clusters;
+  clusters.reserve(ranges.size());
+  for (auto _ : state) {
+    scanToObstacles(geometry, ranges, pose, config, &disks, nullptr, &clusters);
+    benchmark::DoNotOptimize(clusters.data());
+  }
+  state.counters["clusters"] = static_cast<double>(clusters.size());
+}
+BENCHMARK(BM_ScanToObstaclesWithClusterEnds)->Arg(360)->Arg(720)->Arg(1440)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -134,3 +134,49 @@ TEST(ObstacleTracker, ValidateNamesTheBadField) {
   c.min_hits = 0;
   EXPECT_EQ(c.validate().rfind("min_hits", 0), 0u);
 }
+
+// With the scan's clusters: an object whose outline ends hidden (behind something nearer, at
+// the scan's edge) is static however it moves, since what moves may be the view's edge; two
+// clusters beside each other (adjacent returns at one range) are one object, so two pieces of a
+// grazing wall 0.7 m apart are one wall, not two small things.
+TEST(ObstacleTracker, HiddenEndsAreStaticAndCloseNeighboursInTheScanAreOneObject) {
+  const auto cluster = [](std::size_t first, std::size_t end, ClusterEnd start, ClusterEnd stop) {
+    ScanCluster c;
+    c.first_disk = first;
+    c.end_disk = end;
+    c.start = start;
+    c.end = stop;
+    return c;
+  };
+  ObstacleTracker tracker;
+  const Eigen::Vector2d v(0.5, 0.0);
+  for (int k = 0; k < 20; ++k) {
+    const double t = 0.1 * k;
+    const std::vector<Disk> seen = {{Eigen::Vector2d(0.0, 1.0) + v * t, 0.1},   // open: walks
+                                    {Eigen::Vector2d(0.0, 3.0) + v * t, 0.1},   // hidden on one side
+                                    {Eigen::Vector2d(0.0, 5.0) + v * t, 0.1},   // beside the next:
+                                    {Eigen::Vector2d(0.0, 5.9) + v * t, 0.1}};  // together 1.1 m long
+    const std::vector<ScanCluster> clusters = {cluster(0, 1, ClusterEnd::kOpen, ClusterEnd::kOpen),
+                                               cluster(1, 2, ClusterEnd::kOpen, ClusterEnd::kHidden),
+                                               cluster(2, 3, ClusterEnd::kOpen, ClusterEnd::kBeside),
+                                               cluster(3, 4, ClusterEnd::kBeside, ClusterEnd::kOpen)};
+    tracker.update(t, seen, &clusters);
+  }
+  const std::vector<Disk> out = tracker.obstaclesAt(1.9);
+  ASSERT_EQ(out.size(), 4u);
+  for (const Disk& d : out) {
+    if (d.center.y() < 2.0) {
+      EXPECT_LT((d.velocity - v).norm(), 0.01);
+    } else {
+      EXPECT_EQ(d.velocity, Eigen::Vector2d::Zero()) << "at y " << d.center.y();
+    }
+  }
+  // Without the clusters the same disks are three walking things.
+  ObstacleTracker blind;
+  for (int k = 0; k < 20; ++k) {
+    const double t = 0.1 * k;
+    blind.update(t, {{Eigen::Vector2d(0.0, 3.0) + v * t, 0.1}, {Eigen::Vector2d(0.0, 5.0) + v * t, 0.1},
+                     {Eigen::Vector2d(0.0, 5.9) + v * t, 0.1}});
+  }
+  for (const Disk& d : blind.obstaclesAt(1.9)) EXPECT_GT(d.velocity.norm(), 0.4);
+}

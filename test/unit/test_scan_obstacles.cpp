@@ -294,3 +294,81 @@ TEST(ScanObstacles, DisksOnTheFollowedRobotAreDropped) {
   ASSERT_EQ(disks.size(), 1u);
   EXPECT_EQ(disks[0].center, Eigen::Vector2d(2.0, 1.0));
 }
+
+// How each cluster ends: a pole in front of a wall ends against the farther wall on both sides
+// (open); the wall's pieces beside its shadow end against the nearer pole (hidden), and at the
+// edges of a 120-degree scan (hidden: the wall goes on out of view).
+TEST(ScanObstacles, ClusterEndsSayWhetherTheObjectEndsOrTheViewDoes) {
+  const Eigen::Vector2d pole(1.0, 0.0);
+  const Scan scan = makeScan(720, -M_PI / 3, M_PI / 3, [&](double a) {
+    return std::min(rayToLineX(a, 2.0), rayToCircle(a, pole, 0.15));
+  });
+  std::vector<Disk> disks;
+  std::vector<ScanCluster> clusters;
+  ASSERT_TRUE(scanToObstacles(scan.geometry, scan.ranges, Eigen::Affine2d::Identity(), {}, &disks, nullptr, &clusters));
+  ASSERT_EQ(clusters.size(), 3u);  // wall, pole, wall
+  EXPECT_EQ(clusters[0].start, ClusterEnd::kHidden);
+  EXPECT_EQ(clusters[0].end, ClusterEnd::kHidden);
+  EXPECT_EQ(clusters[1].start, ClusterEnd::kOpen);
+  EXPECT_EQ(clusters[1].end, ClusterEnd::kOpen);
+  EXPECT_EQ(clusters[2].start, ClusterEnd::kHidden);
+  EXPECT_EQ(clusters[2].end, ClusterEnd::kHidden);
+  EXPECT_EQ(clusters[1].first_disk, clusters[0].end_disk);
+  EXPECT_EQ(clusters[2].end_disk, disks.size());
+  for (std::size_t i = clusters[1].first_disk; i < clusters[1].end_disk; ++i)
+    EXPECT_LT((disks[i].center - pole).norm(), 0.16);
+}
+
+// A wall seen at a grazing angle falls apart into pieces (gaps above cluster_tolerance): each
+// piece's near end is hidden by the piece before it. Beams too close to measure hide; beams
+// with nothing in range open; NaN beams are looked past.
+TEST(ScanObstacles, GrazingWallPiecesAndUnusableBeamsEndAsTheyShould) {
+  // Wall y = 0.3 beside the sensor, seen from 60 to 2 degrees: points 0.1 m apart beyond ~5 m.
+  const Scan grazing = makeScan(100, 2.0 * M_PI / 180.0, M_PI / 3.0, [](double a) { return 0.3 / std::sin(a); }, 20.0);
+  std::vector<Disk> disks;
+  std::vector<ScanCluster> clusters;
+  ASSERT_TRUE(scanToObstacles(grazing.geometry, grazing.ranges, Eigen::Affine2d::Identity(), {}, &disks, nullptr,
+                              &clusters));
+  ASSERT_GT(clusters.size(), 3u);
+  std::size_t hidden = 0;
+  for (std::size_t k = 0; k + 1 < clusters.size(); ++k) {  // scan order: from far to near
+    EXPECT_NE(clusters[k].end, ClusterEnd::kOpen) << "piece " << k;  // beside: joined to the next
+    hidden += clusters[k].end == ClusterEnd::kHidden;
+  }
+  EXPECT_GE(hidden, clusters.size() / 2);
+  ScanGeometry g{0.0, 0.01, 0.05, 10.0};
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const std::vector<float> ranges = {-inf, nan, 1.0f, 1.0f, nan, inf, 2.0f, 2.0f, 2.0f, nan, 1.95f, 1.95f, 0.01f};
+  ASSERT_TRUE(scanToObstacles(g, ranges, Eigen::Affine2d::Identity(), {}, &disks, nullptr, &clusters));
+  ASSERT_EQ(clusters.size(), 2u);  // 1 m at beams 2-3; 2 m at beams 6-8 and 10-11 (0.05 m apart: one)
+  EXPECT_EQ(clusters[0].start, ClusterEnd::kHidden);  // -inf, past a NaN
+  EXPECT_EQ(clusters[0].end, ClusterEnd::kOpen);      // +inf, past a NaN
+  EXPECT_EQ(clusters[1].start, ClusterEnd::kOpen);
+  EXPECT_EQ(clusters[1].end, ClusterEnd::kHidden);    // 0.01 m: below range_min
+}
+
+// A 360-degree scan wraps: a wall in front ends open on both sides (nothing in range beyond it);
+// a wall behind, across the first and last beams, is cut by the seam into two clusters that end
+// beside each other there.
+TEST(ScanObstacles, AWholeTurnWrapsAtItsSeam) {
+  const int beams = 360;
+  Scan scan = makeScan(beams, -M_PI, M_PI - 2.0 * M_PI / beams, [](double a) {
+    return std::cos(a) > 0.7 ? 1.0 / std::cos(a) : std::numeric_limits<double>::infinity();
+  });
+  std::vector<Disk> disks;
+  std::vector<ScanCluster> clusters;
+  ASSERT_TRUE(scanToObstacles(scan.geometry, scan.ranges, Eigen::Affine2d::Identity(), {}, &disks, nullptr, &clusters));
+  ASSERT_EQ(clusters.size(), 1u);  // a wall x = 1 within 45 degrees: the middle of the scan
+  EXPECT_EQ(clusters[0].start, ClusterEnd::kOpen);
+  EXPECT_EQ(clusters[0].end, ClusterEnd::kOpen);
+  // Behind the sensor: a wall x = -1 across the seam (beam 0 at -180 degrees).
+  scan = makeScan(beams, -M_PI, M_PI - 2.0 * M_PI / beams, [](double a) {
+    return std::cos(a) < -0.5 ? -1.0 / std::cos(a) : std::numeric_limits<double>::infinity();
+  });
+  ASSERT_TRUE(scanToObstacles(scan.geometry, scan.ranges, Eigen::Affine2d::Identity(), {}, &disks, nullptr, &clusters));
+  ASSERT_EQ(clusters.size(), 2u);  // split by the seam
+  EXPECT_EQ(clusters[0].start, ClusterEnd::kBeside);
+  EXPECT_EQ(clusters[1].end, ClusterEnd::kBeside);
+  EXPECT_EQ(clusters[0].end, ClusterEnd::kOpen);
+  EXPECT_EQ(clusters[1].start, ClusterEnd::kOpen);
+}

@@ -60,15 +60,29 @@ struct SeenObject {
   Eigen::Vector2d center;
   double extent;           // the farthest disk edge from it
   std::vector<Disk> parts;
+  bool hidden = false;     // one of its clusters ends out of sight
 };
 
-std::vector<SeenObject> groupIntoObjects(const std::vector<Disk>& detections, double gap) {
+// The scan's clusters that describe `detections` (each within it, in order); empty otherwise.
+bool clustersFit(const std::vector<ScanCluster>* clusters, size_t detections) {
+  if (!clusters) return false;
+  size_t next = 0;
+  for (const ScanCluster& c : *clusters) {
+    if (c.first_disk < next || c.end_disk < c.first_disk || c.end_disk > detections) return false;
+    next = c.end_disk;
+  }
+  return true;
+}
+
+std::vector<SeenObject> groupIntoObjects(const std::vector<Disk>& detections, double gap,
+                                         const std::vector<ScanCluster>* clusters) {
   std::vector<size_t> root(detections.size());
   for (size_t i = 0; i < root.size(); ++i) root[i] = i;
   auto find = [&root](size_t i) {
     while (root[i] != i) i = root[i] = root[root[i]];
     return i;
   };
+  auto join = [&](size_t i, size_t j) { root[find(j)] = find(i); };
   std::vector<bool> usable(detections.size());
   for (size_t i = 0; i < detections.size(); ++i)
     usable[i] = detections[i].center.allFinite() && std::isfinite(detections[i].radius);
@@ -77,7 +91,22 @@ std::vector<SeenObject> groupIntoObjects(const std::vector<Disk>& detections, do
     for (size_t j = i + 1; j < detections.size(); ++j) {
       if (usable[j] && (detections[i].center - detections[j].center).norm() <=
                            detections[i].radius + detections[j].radius + gap)
-        root[find(j)] = find(i);
+        join(i, j);
+    }
+  }
+  // A cluster's disks are one object, and so are clusters beside each other in the scan.
+  std::vector<bool> hidden(detections.size(), false);
+  const bool fit = clustersFit(clusters, detections.size());
+  if (fit) {
+    const std::vector<ScanCluster>& c = *clusters;
+    for (size_t k = 0; k < c.size(); ++k) {
+      if (c[k].first_disk == c[k].end_disk) continue;
+      for (size_t i = c[k].first_disk + 1; i < c[k].end_disk; ++i) join(c[k].first_disk, i);
+      const ScanCluster& next = c[(k + 1) % c.size()];
+      if (c[k].end == ClusterEnd::kBeside && next.start == ClusterEnd::kBeside && next.first_disk < next.end_disk)
+        join(c[k].first_disk, next.first_disk);
+      if (c[k].start == ClusterEnd::kHidden || c[k].end == ClusterEnd::kHidden)
+        for (size_t i = c[k].first_disk; i < c[k].end_disk; ++i) hidden[i] = true;
     }
   }
   std::vector<SeenObject> objects;
@@ -90,6 +119,7 @@ std::vector<SeenObject> groupIntoObjects(const std::vector<Disk>& detections, do
       objects.push_back({Eigen::Vector2d::Zero(), 0.0, {}});
     }
     objects[index[r]].parts.push_back(detections[i]);
+    objects[index[r]].hidden = objects[index[r]].hidden || hidden[i];
   }
   for (SeenObject& o : objects) {
     Eigen::Vector2d low = o.parts[0].center, high = low;
@@ -105,7 +135,7 @@ std::vector<SeenObject> groupIntoObjects(const std::vector<Disk>& detections, do
 
 }  // namespace
 
-void ObstacleTracker::update(double stamp, const std::vector<Disk>& seen) {
+void ObstacleTracker::update(double stamp, const std::vector<Disk>& seen, const std::vector<ScanCluster>* clusters) {
   if (!std::isfinite(stamp)) return;
   if (started_ && !(stamp > last_stamp_)) clear();
   started_ = true;
@@ -113,8 +143,8 @@ void ObstacleTracker::update(double stamp, const std::vector<Disk>& seen) {
 
   std::vector<SeenObject> detections;
   static_.clear();
-  for (SeenObject& o : groupIntoObjects(seen, group_gap_)) {
-    if (o.extent > config_.max_object_radius) {
+  for (SeenObject& o : groupIntoObjects(seen, group_gap_, clusters)) {
+    if (o.extent > config_.max_object_radius || o.hidden) {
       static_.insert(static_.end(), o.parts.begin(), o.parts.end());
     } else {
       detections.push_back(std::move(o));

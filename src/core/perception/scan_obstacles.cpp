@@ -27,6 +27,45 @@ struct Box {
   double halfDiagonal() const { return 0.5 * std::hypot(max_x - min_x, max_y - min_y); }
 };
 
+// How a cluster whose end point is at range `r` ends where the next beam reads `beam`; false
+// for a NaN beam, which says nothing (look further).
+bool beamEnds(double beam, double r, double range_min, double far, double tolerance, ClusterEnd* end) {
+  if (std::isnan(beam)) return false;
+  if (beam < range_min) {  // -inf, negative: something too close to measure
+    *end = ClusterEnd::kHidden;
+  } else if (beam > far) {  // +inf: nothing within range; or ignored as too far
+    *end = ClusterEnd::kOpen;
+  } else if (beam < r - tolerance) {
+    *end = ClusterEnd::kHidden;
+  } else if (beam > r + tolerance) {
+    *end = ClusterEnd::kOpen;
+  } else {
+    *end = ClusterEnd::kBeside;
+  }
+  return true;
+}
+
+// How the cluster ending at beam `from` ends in direction `step` (+1, -1): the first beam past
+// it that is not NaN decides; past the scan's edge it is hidden, unless the scan is a whole
+// turn and wraps.
+ClusterEnd clusterEnd(const float* ranges, std::size_t count, std::size_t from, int step, bool wraps,
+                      double range_min, double far, double tolerance) {
+  const double r = ranges[from];
+  std::size_t j = from;
+  for (std::size_t seen = 1; seen < count; ++seen) {
+    if (step > 0) {
+      if (j + 1 == count && !wraps) break;
+      j = j + 1 == count ? 0 : j + 1;
+    } else {
+      if (j == 0 && !wraps) break;
+      j = j == 0 ? count - 1 : j - 1;
+    }
+    ClusterEnd end;
+    if (beamEnds(ranges[j], r, range_min, far, tolerance, &end)) return end;
+  }
+  return ClusterEnd::kHidden;
+}
+
 }  // namespace
 
 const FieldTable<ScanObstacleConfig>& scanObstacleFields() {
@@ -112,8 +151,9 @@ std::string scanBeamsProblem(const ScanGeometry& geometry, double angle_max, con
 
 bool scanToObstacles(const ScanGeometry& geometry, const float* ranges, std::size_t count,
                      const Eigen::Affine2d& sensor_to_global, const ScanObstacleConfig& config,
-                     std::vector<Disk>* out, ScanObstacleStats* stats) {
+                     std::vector<Disk>* out, ScanObstacleStats* stats, std::vector<ScanCluster>* clusters) {
   out->clear();
+  if (clusters) clusters->clear();
   ScanObstacleStats local;
   ScanObstacleStats& s = stats ? *stats : local;
   s = ScanObstacleStats();
@@ -125,7 +165,7 @@ bool scanToObstacles(const ScanGeometry& geometry, const float* ranges, std::siz
   double c = std::cos(geometry.angle_min), sn = std::sin(geometry.angle_min);
 
   bool in_cluster = false;
-  std::size_t cluster_points = 0, cluster_first_disk = 0;
+  std::size_t cluster_points = 0, cluster_first_disk = 0, cluster_first_beam = 0, previous_beam = 0;
   Eigen::Vector2d previous = Eigen::Vector2d::Zero();
   Box box(previous);
 
@@ -138,6 +178,14 @@ bool scanToObstacles(const ScanGeometry& geometry, const float* ranges, std::siz
       out->resize(cluster_first_disk);  // too small: noise
     } else {
       ++s.clusters;
+      if (clusters) {
+        ScanCluster cluster;
+        cluster.first_disk = cluster_first_disk;
+        cluster.end_disk = out->size();
+        cluster.first_beam = cluster_first_beam;
+        cluster.last_beam = previous_beam;
+        clusters->push_back(cluster);
+      }
     }
   };
 
@@ -163,12 +211,25 @@ bool scanToObstacles(const ScanGeometry& geometry, const float* ranges, std::siz
       in_cluster = true;
       cluster_points = 1;
       cluster_first_disk = out->size();
+      cluster_first_beam = i;
       box = Box(p);
     }
     previous = p;
+    previous_beam = i;
   }
   if (in_cluster) close_cluster();
   s.disks = out->size();
+  if (clusters) {
+    // A whole turn (within half a beam): the first beam is next to the last.
+    const bool wraps = std::abs(geometry.angle_increment) * static_cast<double>(count) >=
+                       2.0 * M_PI - 0.5 * std::abs(geometry.angle_increment);
+    for (ScanCluster& cluster : *clusters) {
+      cluster.start = clusterEnd(ranges, count, cluster.first_beam, -1, wraps, geometry.range_min, far,
+                                 config.cluster_tolerance);
+      cluster.end = clusterEnd(ranges, count, cluster.last_beam, +1, wraps, geometry.range_min, far,
+                               config.cluster_tolerance);
+    }
+  }
   return true;
 }
 

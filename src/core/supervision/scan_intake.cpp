@@ -22,10 +22,10 @@ std::string ScanIntake::refusal(const ScanGeometry& geometry, double angle_max, 
 
 void ScanIntake::take(const ScanGeometry& geometry, const float* ranges, std::size_t count,
                       const Eigen::Affine2d& sensor_to_global, double stamp, double arrival) {
-  if (!scanToObstacles(geometry, ranges, count, sensor_to_global, config_, &disks_next_)) return;
+  if (!scanToObstacles(geometry, ranges, count, sensor_to_global, config_, &disks_next_, nullptr, &clusters_)) return;
   disks_.swap(disks_next_);
   age_.arrived(stamp, arrival);
-  tracker_.update(stamp - epoch_, disks_);
+  tracker_.update(stamp - epoch_, disks_, &clusters_);
 }
 
 void ScanIntake::obstacles(bool moving, double now, std::vector<Disk>* out) const {

@@ -10,7 +10,10 @@
 // scan's stamp (constant velocity), greedily by increasing distance within a gate, so two
 // obstacles that cross keep their ids: a detection is never given to two tracks, and a track
 // that finds no detection (e.g. the two blobs merged for a scan) coasts on its velocity until
-// `forget_after`. Matched tracks update their centre (the middle of their disks' bounding
+// `forget_after`. With the scan's clusters (scan_obstacles.h), clusters that lie beside each
+// other (adjacent returns at about one range) are one object too, and an object with a cluster
+// end hidden (behind something nearer, or at the scan's edge) is static: where the view of it
+// ends moves with the robot, not with the object. Matched tracks update their centre (the middle of their disks' bounding
 // box) with an alpha-beta filter and carry the disks last seen. Velocities are reported only after
 // `min_hits` matches and below `still_speed` they are zero, so static clutter (pillars that
 // jitter between scans) stays static. A track that walked (at least `walking_speed`) and
@@ -22,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "amigobot_tracking/core/perception/scan_obstacles.h"
 #include "amigobot_tracking/core/support/field_table.h"
 #include "amigobot_tracking/core/support/types.h"
 
@@ -61,8 +65,9 @@ class ObstacleTracker {
   explicit ObstacleTracker(const ObstacleTrackerConfig& config = ObstacleTrackerConfig(), double group_gap = 0.1);
 
   // Feeds one scan's disks taken at `stamp` [s]; a stamp not after the last one resets the
-  // tracker (time jumped back, e.g. a bag restarted).
-  void update(double stamp, const std::vector<Disk>& detections);
+  // tracker (time jumped back, e.g. a bag restarted). `clusters`, when given, are the scan's
+  // clusters over `detections` as scanToObstacles made them (clusters out of range are ignored).
+  void update(double stamp, const std::vector<Disk>& detections, const std::vector<ScanCluster>* clusters = nullptr);
   // The disks of the live tracks (coasting ones included), moved to `stamp`, with their
   // track's velocity as reported (zero until trusted), and the latest scan's static disks.
   std::vector<Disk> obstaclesAt(double stamp) const;
@@ -75,7 +80,7 @@ class ObstacleTracker {
   ObstacleTrackerConfig config_;
   double group_gap_;
   std::vector<TrackedObstacle> tracks_;
-  std::vector<Disk> static_;  // the latest scan's disks of objects wider than max_object_radius
+  std::vector<Disk> static_;  // the latest scan's disks of objects wider than max_object_radius or hidden
   double last_stamp_ = 0.0;
   bool started_ = false;
   std::uint32_t next_id_ = 1;

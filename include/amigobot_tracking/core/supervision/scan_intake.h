@@ -49,6 +49,7 @@ class ScanIntake {
   ObstacleTracker tracker_;
   InputAgeTracker age_;
   std::vector<Disk> disks_, disks_next_;  // disks_next_: scratch for the next scan
+  std::vector<ScanCluster> clusters_;     // the last used scan's clusters over disks_, for the tracker
 };
 
 }  // namespace core
