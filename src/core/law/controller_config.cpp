@@ -147,10 +147,11 @@ FieldTable<ControllerConfig> makeTable() {
                               "beyond the paper: sine margin before the passing side may switch (0.2 flipped sides "
                               "on the saddle)",
                               interval(0.0, false, 1.0, true))),
-      field("moving_obstacles", &C::moving_obstacles, "-",
-            "beyond the paper: use obstacle velocities in (10) (feed-forward, band widened by obstacle_horizon); "
-            "on the robot the laser disks carry the velocities of obstacle_tracker (tracked across scans) only "
-            "when true"),
+      defaultText(field("moving_obstacles", &C::moving_obstacles, "-",
+                        "beyond the paper: use obstacle velocities in (10) (feed-forward, band widened by "
+                        "obstacle_horizon); on the robot the laser disks carry the velocities of obstacle_tracker "
+                        "(tracked across scans) only when true"),
+                  "false (tracking.yaml: true; paper_law.yaml: false)"),
       nested(&C::paper, field("obstacle_horizon", &P::obstacle_horizon, "s",
                               "beyond the paper, with moving_obstacles: the detection band of (10) grows by each "
                               "obstacle's approach speed times this",
