@@ -94,10 +94,10 @@ FieldTable<ControllerConfig> makeTable() {
       defaultText(nested(&C::recommended,
                          field("body_margin", &R::body_margin, "m",
                                "recommended law: the body and p_r's R-disk are held this much wider (field zones "
-                               "and safety filter), for laser noise and localisation error; the simulator's "
-                               "scenes keep 0",
+                               "and safety filter), for laser noise and localisation error; in the simulator it "
+                               "keeps the true body at least 3 cm off obstacles",
                                boundedRadiusOrOff())),
-                  "0 (tracking.yaml: 0.05)"),
+                  "0.035 (tracking.yaml: 0.05)"),
       nested(&C::recommended,
              field("field_margin", &R::field_margin, "m",
                    "recommended law: the navigation field bends around a disk's zone within this, and blends in "
@@ -120,6 +120,12 @@ FieldTable<ControllerConfig> makeTable() {
                    "recommended law: the barrier rows bound the approach speed by what the base can still brake "
                    "(the robot file's ramps, firmware cycle and latency); false: barrier_rate alone")),
       nested(&C::recommended,
+             field("nominal_speed_cap", &R::nominal_speed_cap, "-",
+                   "recommended law: the nominal offset-point velocity is shortened to at most this times v_max "
+                   "along its direction before the safety filter, which otherwise projects a long one onto the "
+                   "diamond's (v_max, 0) corner and drops the turn (0: no cap)",
+                   nonNegative())),
+      nested(&C::recommended,
              field("obstacle_lookahead", &R::obstacle_lookahead, "s",
                    "recommended law: the navigation field sees a moving obstacle along the path it walks over "
                    "this long, so the robot passes behind a person and steps out of one's way (0: where it is now)",
@@ -133,7 +139,7 @@ FieldTable<ControllerConfig> makeTable() {
       nested(&C::recommended,
              field("yield_clearance", &R::yield_clearance, "m",
                    "recommended law: the predicted body clearance from a moving obstacle that counts as enough "
-                   "(yield_horizon)",
+                   "(yield_horizon), beyond body_margin",
                    nonNegative())),
       // Beyond the paper: each default is the paper's law.
       nested(&C::paper, field("tangential_avoidance", &P::tangential_avoidance, "-",
@@ -147,11 +153,10 @@ FieldTable<ControllerConfig> makeTable() {
                               "beyond the paper: sine margin before the passing side may switch (0.2 flipped sides "
                               "on the saddle)",
                               interval(0.0, false, 1.0, true))),
-      defaultText(field("moving_obstacles", &C::moving_obstacles, "-",
-                        "beyond the paper: use obstacle velocities in (10) (feed-forward, band widened by "
-                        "obstacle_horizon); on the robot the laser disks carry the velocities of obstacle_tracker "
-                        "(tracked across scans) only when true"),
-                  "false (tracking.yaml: true; paper_law.yaml: false)"),
+      field("moving_obstacles", &C::moving_obstacles, "-",
+            "beyond the paper: use obstacle velocities in (10) (feed-forward, band widened by obstacle_horizon); "
+            "on the robot the laser disks carry the velocities of obstacle_tracker (tracked across scans) only "
+            "when true"),
       nested(&C::paper, field("obstacle_horizon", &P::obstacle_horizon, "s",
                               "beyond the paper, with moving_obstacles: the detection band of (10) grows by each "
                               "obstacle's approach speed times this",

@@ -88,6 +88,13 @@ RecommendedCommand recommendedCommand(const ControllerConfig& config, const Diam
   out.blend = nav.blend;
   const double feed_forward = std::clamp(nav.direction.dot(e_hat), 0.0, 1.0);
   out.u_nom = drive * nav.direction + (error_norm > 1e-12 ? feed_forward : 1.0) * in.v_hat;
+  // While the robot catches up the nominal is up to 2.6 v_bar long; the filter's nearest point of
+  // the diamond is then its (v_bar, 0) corner, whatever the nominal's direction: 3 s at v_bar with
+  // the heading 0.23 rad off the target's line (crossing_ahead). Shortened, its turn survives.
+  if (config.recommended.nominal_speed_cap > 0.0) {
+    const double cap = config.recommended.nominal_speed_cap * config.v_max, length = out.u_nom.norm();
+    if (length > cap) out.u_nom *= cap / length;
+  }
 
   const Eigen::Vector2d heading(std::cos(in.pose.theta), std::sin(in.pose.theta));
   out.u_nominal = offsetVelocityToTwist(out.u_nom, heading, config.offset);
