@@ -185,10 +185,10 @@ core::TrackingLoopInputs TrackingNode::loopInputsLocked(const ros::Time& now, co
   in.supervisor.scan_age = scan_age_;
   laser_disks_.clear();
   // The laser disks carry the obstacle tracker's velocities only with moving_obstacles. The
-  // recommended law uses any velocity it is given (virtual obstacles', the simulator's), but the
-  // tracker's estimates through the real laser chain made it linger behind a person's line for
-  // 8 s in e2e_person_crossing (|e| 1.59 m after the target stopped, against 0.001 m without):
-  // not on by default until that is understood.
+  // recommended law uses any velocity it is given (virtual obstacles', the simulator's); with the
+  // tracker's, e2e_avoidance stalled beside a static virtual obstacle in 2 of 8 runs (the yield
+  // manoeuvre, once any disk moves, also yields to static ones): not on by default until mended
+  // (docs/recommended_law.md).
   if (loop_.scanFresh(scan_age_)) laser_->obstacles(loop_.nextConfig().moving_obstacles, now, &laser_disks_);
   virtual_disks_.clear();
   virtual_obstacles_->appendDisks(&virtual_disks_);
